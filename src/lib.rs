@@ -1,0 +1,2 @@
+//! routh: the nonholonomic Routh sphere.
+#![warn(missing_docs)]
