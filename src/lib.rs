@@ -1,2 +1,19 @@
 //! routh: the nonholonomic Routh sphere.
+//!
+//! An unbalanced, dynamically symmetric ball (I1 = I2) rolling without slipping on a
+//! horizontal plane, after Bizyaev and Tsiganov, "On the Routh sphere problem". Equation
+//! labels in the documentation, such as (m-eq) or (p-br), are the labels of that paper.
 #![warn(missing_docs)]
+
+pub mod body;
+pub mod differential;
+pub mod error;
+pub mod field;
+pub mod integrals;
+pub mod sampling;
+pub mod scalar;
+pub mod state;
+
+pub use body::Body;
+pub use error::{Result, RouthError};
+pub use state::State;

@@ -1,0 +1,86 @@
+//! Errors of the library: each variant carries the data that explains it.
+//!
+//! Normal endings of a computation (end time reached, event found) are not errors; they are
+//! returned as values by the modules that produce them.
+
+use std::path::PathBuf;
+
+/// Everything that can go wrong in `routh`.
+#[derive(Debug, thiserror::Error)]
+pub enum RouthError {
+    /// A body parameter breaks a rule (non-finite, non-positive, |a| >= R, ...).
+    #[error("invalid body parameter {name} = {value}: {rule}")]
+    Parameter {
+        /// The parameter's name as in the paper (m, R, a, I1, I2, I3, G).
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks.
+        rule: &'static str,
+    },
+    /// The principal moments of inertia violate a triangle inequality.
+    #[error("principal moments of inertia violate the triangle inequality {rule}: I1 = {i1}, I2 = {i2}, I3 = {i3}")]
+    Triangle {
+        /// The inequality that fails, e.g. "I1 + I2 >= I3".
+        rule: &'static str,
+        /// I1.
+        i1: f64,
+        /// I2.
+        i2: f64,
+        /// I3.
+        i3: f64,
+    },
+    /// A computation that needs the dynamically symmetric Routh sphere I1 = I2.
+    #[error("{what} needs a dynamically symmetric body I1 = I2, but I1 = {i1} and I2 = {i2}")]
+    NotSymmetric {
+        /// What needs the symmetry.
+        what: &'static str,
+        /// I1.
+        i1: f64,
+        /// I2.
+        i2: f64,
+    },
+    /// A state (gamma, M) that is not a point of the phase space.
+    #[error("invalid state: {0}")]
+    State(String),
+    /// An invalid option value (NaN or negative t_end, tolerance, sample count, ...).
+    #[error("invalid option {name} = {value}: {rule}")]
+    Option {
+        /// The option's name as on the command line or in the case file.
+        name: &'static str,
+        /// The offending value, as text.
+        value: String,
+        /// The rule it breaks.
+        rule: &'static str,
+    },
+    /// A case file that cannot be read or does not follow the schema.
+    #[error("case file {file}: {message}")]
+    Case {
+        /// The file (or `<built-in default>`).
+        file: String,
+        /// What is wrong, naming the key.
+        message: String,
+    },
+    /// A formula evaluated at one of its singular points.
+    #[error("{formula} is singular here: {reason}")]
+    Singular {
+        /// The formula, with its equation label.
+        formula: &'static str,
+        /// Why, with the offending value.
+        reason: String,
+    },
+    /// The numerical integration failed.
+    #[error("integration failed: {0}")]
+    Integrate(String),
+    /// Reading or writing a file failed.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+}
+
+/// Shorthand for results of this crate.
+pub type Result<T> = std::result::Result<T, RouthError>;

@@ -1,0 +1,115 @@
+//! Points of the reduced phase space x = (gamma, M) of (m-eq).
+
+use crate::body::Body;
+use crate::error::{Result, RouthError};
+use serde::Serialize;
+
+/// How far from 1 the length of gamma may be before it is rejected (unless normalised).
+pub const UNIT_TOLERANCE: f64 = 1e-12;
+
+/// A state of the reduced system: the unit normal `gamma` (pointing into the plane, body
+/// frame) and the angular momentum `M` about the contact point (body frame).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct State {
+    /// The unit normal of the plane in the body frame.
+    pub gamma: [f64; 3],
+    /// The angular momentum about the contact point, (om-m).
+    #[serde(rename = "M")]
+    pub m: [f64; 3],
+}
+
+/// Whether to accept a gamma whose length is not 1 by rescaling it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Normalise {
+    /// Reject |gamma| - 1 beyond [`UNIT_TOLERANCE`].
+    #[default]
+    Reject,
+    /// Rescale gamma to unit length (gamma must still be finite and non-zero).
+    Rescale,
+}
+
+impl State {
+    /// A state from gamma and M, validated: all finite, |gamma| = 1 within [`UNIT_TOLERANCE`]
+    /// unless `normalise` asks to rescale.
+    pub fn new(gamma: [f64; 3], m: [f64; 3], normalise: Normalise) -> Result<Self> {
+        let gamma = checked_gamma(gamma, normalise)?;
+        check_finite("M", &m)?;
+        Ok(State { gamma, m })
+    }
+
+    /// A state from gamma and the angular velocity omega, via `M = I_Q omega` (om-m).
+    pub fn from_omega(
+        body: &Body,
+        gamma: [f64; 3],
+        omega: [f64; 3],
+        normalise: Normalise,
+    ) -> Result<Self> {
+        let gamma = checked_gamma(gamma, normalise)?;
+        check_finite("omega", &omega)?;
+        Ok(State {
+            gamma,
+            m: body.angular_momentum(&gamma, &omega),
+        })
+    }
+
+    /// The phase-space point as `[gamma1, gamma2, gamma3, M1, M2, M3]`.
+    pub fn to_array(&self) -> [f64; 6] {
+        [
+            self.gamma[0],
+            self.gamma[1],
+            self.gamma[2],
+            self.m[0],
+            self.m[1],
+            self.m[2],
+        ]
+    }
+
+    /// The state of a phase-space array (no validation: integrator output).
+    pub fn from_array(x: &[f64; 6]) -> Self {
+        State {
+            gamma: [x[0], x[1], x[2]],
+            m: [x[3], x[4], x[5]],
+        }
+    }
+
+    /// The angular velocity `omega = I_Q^{-1} M`.
+    pub fn omega(&self, body: &Body) -> [f64; 3] {
+        body.angular_velocity(&self.gamma, &self.m)
+    }
+
+    /// The time-reversed state (gamma, -M): the field (mg-eq) is reversible under
+    /// `(gamma, M, t) -> (gamma, -M, -t)`.
+    pub fn reversed(&self) -> Self {
+        State {
+            gamma: self.gamma,
+            m: self.m.map(|v| -v),
+        }
+    }
+}
+
+fn check_finite(name: &str, v: &[f64; 3]) -> Result<()> {
+    if v.iter().all(|c| c.is_finite()) {
+        Ok(())
+    } else {
+        Err(RouthError::State(format!(
+            "{name} = {v:?} has a non-finite component"
+        )))
+    }
+}
+
+fn checked_gamma(gamma: [f64; 3], normalise: Normalise) -> Result<[f64; 3]> {
+    check_finite("gamma", &gamma)?;
+    let norm = gamma.iter().map(|c| c * c).sum::<f64>().sqrt();
+    match normalise {
+        Normalise::Reject if (norm - 1.0).abs() > UNIT_TOLERANCE => Err(RouthError::State(format!(
+            "gamma = {gamma:?} is not a unit vector: |gamma| - 1 = {:.3e} exceeds {UNIT_TOLERANCE:e} \
+             (pass --normalize to rescale it)",
+            norm - 1.0
+        ))),
+        Normalise::Reject => Ok(gamma),
+        Normalise::Rescale if norm == 0.0 => {
+            Err(RouthError::State("gamma = [0, 0, 0] cannot be normalised".into()))
+        }
+        Normalise::Rescale => Ok(gamma.map(|c| c / norm)),
+    }
+}
