@@ -10,6 +10,7 @@ pub mod differential;
 pub mod error;
 pub mod field;
 pub mod integrals;
+pub mod output;
 pub mod sampling;
 pub mod scalar;
 pub mod state;

@@ -1,1 +1,7 @@
-fn main() {}
+//! The `routh` command-line tool: see `routh --help`.
+
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

@@ -1,0 +1,35 @@
+//! Command-line interface: one module per command. Errors become a message on stderr and
+//! exit code 2; clap's own usage errors also exit 2.
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// The Routh sphere: simulation, exact quadrature, Poisson geometry.
+#[derive(Parser)]
+#[command(name = "routh", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+}
+
+/// Print `value` as pretty JSON on stdout.
+pub fn print_json<T: serde::Serialize>(value: &T) {
+    println!("{}", serde_json::to_string_pretty(value).expect("serialisable output"));
+}
+
+/// Parse the arguments, run the command, map errors to exit code 2.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result: routh::Result<()> = match cli.command {};
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
