@@ -6,6 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod body;
+pub mod case;
 pub mod differential;
 pub mod error;
 pub mod field;
