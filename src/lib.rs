@@ -12,8 +12,10 @@ pub mod error;
 pub mod field;
 pub mod integrals;
 pub mod output;
+pub mod projection;
 pub mod sampling;
 pub mod scalar;
+pub mod simulate;
 pub mod state;
 
 pub use body::Body;
