@@ -1,2 +1,4 @@
 //! routh: the nonholonomic Routh sphere.
 #![warn(missing_docs)]
+
+pub mod integrate;
