@@ -11,6 +11,7 @@ pub mod differential;
 pub mod error;
 pub mod field;
 pub mod integrals;
+pub mod integrate;
 pub mod output;
 pub mod projection;
 pub mod sampling;
