@@ -152,6 +152,13 @@ impl Case {
 
     /// Parse and validate case text; `source` names the file in error messages.
     pub fn parse(text: &str, source: &str) -> Result<Self> {
+        Self::parse_unlabelled(text, source).map_err(|e| match e {
+            RouthError::Case { .. } => e,
+            other => RouthError::Case { file: source.to_string(), message: other.to_string() },
+        })
+    }
+
+    fn parse_unlabelled(text: &str, source: &str) -> Result<Self> {
         let err = |message: String| RouthError::Case {
             file: source.to_string(),
             message,

@@ -8,6 +8,17 @@ use num_dual::{gradient as nd_gradient, jacobian as nd_jacobian, DualSVec64};
 /// A dual number carrying the six partial derivatives on the phase space.
 pub type Dual6 = DualSVec64<6>;
 
+/// The point `x` as dual numbers seeded with the unit directions: a function evaluated there
+/// carries its value in `.re` and its gradient in `.eps`.
+pub fn seeded(x: &[f64; 6]) -> [Dual6; 6] {
+    std::array::from_fn(|i| Dual6::from_re(x[i]).derivative(i))
+}
+
+/// The gradient part of a dual number computed at a [`seeded`] point.
+pub fn partials(v: &Dual6) -> [f64; 6] {
+    v.eps.unwrap_generic(nalgebra::Const::<6>, nalgebra::Const::<1>).into()
+}
+
 /// Gradient of a scalar function on the phase space, with its value.
 pub fn gradient(f: impl Fn(&[Dual6; 6]) -> Dual6, x: &[f64; 6]) -> (f64, [f64; 6]) {
     let (v, g) = nd_gradient(|v: SVector<Dual6, 6>| f(&v.into()), &SVector::from(*x));

@@ -11,10 +11,13 @@ pub mod differential;
 pub mod error;
 pub mod field;
 pub mod integrals;
+pub mod integrate;
 pub mod motion;
 pub mod output;
+pub mod projection;
 pub mod sampling;
 pub mod scalar;
+pub mod simulate;
 pub mod state;
 
 pub use body::Body;

@@ -1,6 +1,8 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
+mod simulate;
+
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -13,7 +15,10 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Integrate a case and report the drift of the integrals; optionally write samples.
+    Simulate(simulate::Args),
+}
 
 /// Print `value` as pretty JSON on stdout.
 pub fn print_json<T: serde::Serialize>(value: &T) {
@@ -26,7 +31,9 @@ pub fn print_json<T: serde::Serialize>(value: &T) {
 /// Parse the arguments, run the command, map errors to exit code 2.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result: routh::Result<()> = match cli.command {};
+    let result: routh::Result<()> = match cli.command {
+        Command::Simulate(args) => simulate::run_command(args),
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -1,0 +1,358 @@
+//! Generic ODE integrators for first-order systems `y' = f(t, y)` of fixed
+//! dimension `N` in plain `f64`.
+//!
+//! * [`Dop853`]: the adaptive explicit Runge–Kutta pair 8(5,3) of Dormand &
+//!   Prince with Hairer's error estimator, step-size controller and 7th-order
+//!   dense output, following `dop853.f` of Hairer & Wanner;
+//! * [`rk4`]: the classical fixed-step Runge–Kutta method of order 4;
+//! * [`solve`] and [`solve_dense`]: drivers with optional projection onto
+//!   invariant manifolds, event location and dense sampling;
+//! * [`brent`]: a bracketing scalar root finder.
+//!
+//! The integrators know nothing of the model: they only see an [`OdeSystem`].
+
+mod dop853;
+mod event;
+mod rk4;
+pub mod tableau;
+
+use std::fmt;
+use std::str::FromStr;
+
+pub use dop853::{fixed_step_solve, Dop853};
+pub use event::brent;
+pub use rk4::rk4;
+
+/// A first-order system `y' = f(t, y)` of fixed dimension `N`, in plain `f64`.
+pub trait OdeSystem<const N: usize> {
+    /// The right-hand side `f(t, y)`.
+    fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N];
+}
+
+impl<F, const N: usize> OdeSystem<N> for F
+where
+    F: Fn(f64, &[f64; N]) -> [f64; N],
+{
+    #[inline(always)]
+    fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N] {
+        self(t, y)
+    }
+}
+
+/// Number of steps used by `Method::Rk4` when parsed from the bare name `"rk4"`.
+pub const DEFAULT_RK4_STEPS: usize = 10_000;
+
+/// Choice of integration method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Adaptive DOP853 (see [`Dop853`]).
+    Dop853,
+    /// Classical Runge–Kutta of order 4 with a fixed number of equal steps.
+    Rk4 {
+        /// Number of equal steps over the whole interval.
+        steps: usize,
+    },
+}
+
+/// Error returned when a [`Method`] name cannot be parsed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown integration method {0:?}: expected \"dop853\", \"rk4\" or \"rk4:<steps>\" with steps > 0")]
+pub struct ParseMethodError(pub String);
+
+impl FromStr for Method {
+    type Err = ParseMethodError;
+
+    /// Parses `"dop853"`, `"rk4"` (with [`DEFAULT_RK4_STEPS`] steps) or
+    /// `"rk4:<steps>"`, ignoring ASCII case.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let lower = s.trim().to_ascii_lowercase();
+        match lower.as_str() {
+            "dop853" => Ok(Method::Dop853),
+            "rk4" => Ok(Method::Rk4 {
+                steps: DEFAULT_RK4_STEPS,
+            }),
+            other => other
+                .strip_prefix("rk4:")
+                .and_then(|n| n.parse::<usize>().ok())
+                .filter(|&steps| steps > 0)
+                .map(|steps| Method::Rk4 { steps })
+                .ok_or_else(|| ParseMethodError(s.to_string())),
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    /// Writes `"dop853"` or `"rk4:<steps>"`, which [`FromStr`] parses back.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Method::Dop853 => write!(f, "dop853"),
+            Method::Rk4 { steps } => write!(f, "rk4:{steps}"),
+        }
+    }
+}
+
+/// Options of the adaptive integrator.
+///
+/// The local error of component `i` is kept below roughly
+/// `atol + rtol * |y_i|` (scalar tolerances, Hairer's `ITOL = 0`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Relative tolerance (finite, > 0).
+    pub rtol: f64,
+    /// Absolute tolerance (finite, > 0).
+    pub atol: f64,
+    /// Initial step size (its sign is ignored); `None` selects it by Hairer's `HINIT`.
+    pub h_init: Option<f64>,
+    /// Maximal step size; `None` means `|t_end - t0|`.
+    pub h_max: Option<f64>,
+    /// Maximal number of attempted steps (accepted and rejected).
+    pub max_steps: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            rtol: 1e-10,
+            atol: 1e-10,
+            h_init: None,
+            h_max: None,
+            max_steps: 10_000_000,
+        }
+    }
+}
+
+impl Options {
+    /// Checks the options: `rtol` and `atol` finite and > 0, `h_init` finite and
+    /// nonzero, `h_max` finite and > 0, `max_steps` > 0.
+    pub fn validate(&self) -> Result<(), IntegrateError> {
+        let positive = |name: &'static str, value: f64| {
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(IntegrateError::InvalidOption {
+                    name,
+                    value,
+                    rule: "must be finite and > 0",
+                })
+            }
+        };
+        positive("rtol", self.rtol)?;
+        positive("atol", self.atol)?;
+        if let Some(h) = self.h_init {
+            positive("h_init (absolute value)", h.abs())?;
+        }
+        if let Some(h) = self.h_max {
+            positive("h_max", h)?;
+        }
+        if self.max_steps == 0 {
+            return Err(IntegrateError::InvalidOption {
+                name: "max_steps",
+                value: 0.0,
+                rule: "must be > 0",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Work counters of an integration.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps (all of them, including rejections of the first step).
+    pub rejected: usize,
+    /// Calls of the right-hand side, every one counted.
+    pub rhs_evals: usize,
+}
+
+/// Failures of an integration.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum IntegrateError {
+    /// An option or argument violates its rule.
+    #[error("invalid option {name} = {value}: {rule}")]
+    InvalidOption {
+        /// Name of the option or argument.
+        name: &'static str,
+        /// Its offending value.
+        value: f64,
+        /// The rule it violates.
+        rule: &'static str,
+    },
+    /// The step size fell below the round-off level of `t`.
+    #[error("step size too small at t = {t}: h = {h}")]
+    StepSizeTooSmall {
+        /// Time reached.
+        t: f64,
+        /// The step size that was too small.
+        h: f64,
+    },
+    /// More than `max_steps` steps would be needed.
+    #[error("more than max_steps = {max_steps} steps needed; stopped at t = {t}")]
+    TooManySteps {
+        /// Time reached.
+        t: f64,
+        /// The limit that was hit.
+        max_steps: usize,
+    },
+    /// The state, its derivative or the step size became NaN or infinite.
+    #[error("non-finite state, derivative or step size at t = {t}")]
+    NonFinite {
+        /// Time at which it was detected.
+        t: f64,
+    },
+}
+
+/// How a successful integration ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Stop<const N: usize> {
+    /// `t_end` was reached.
+    Reached,
+    /// The event function vanished at `t` with state `y`.
+    Event {
+        /// Time of the event.
+        t: f64,
+        /// State at the event (after projection, if any).
+        y: [f64; N],
+    },
+}
+
+/// A projection of the state onto invariant manifolds, applied in place.
+pub type Projection<'p, const N: usize> = &'p dyn Fn(&mut [f64; N]);
+
+/// An event function `g(t, y)`; an event is a sign change of `g`.
+pub type EventFn<'e, const N: usize> = &'e dyn Fn(f64, &[f64; N]) -> f64;
+
+/// Projects the current state of `solver` with `project`, if given.
+fn apply_projection<S: OdeSystem<N>, const N: usize>(
+    solver: &mut Dop853<'_, S, N>,
+    project: Option<Projection<'_, N>>,
+) {
+    if let Some(p) = project {
+        let mut y = *solver.y();
+        p(&mut y);
+        solver.set_state(y);
+    }
+}
+
+/// Integrates from `t0` to `t_end` with DOP853.
+///
+/// After every accepted step, `project(&mut y)` (if given) replaces the state
+/// through [`Dop853::set_state`], and `observer(t, &y)` is called with the
+/// (projected) state at the end of the step; it is not called at `t0`.
+///
+/// If `event` is given, the first sign change of `event(t, y)` after `t0` is
+/// located on the dense output of the step where it occurs (Brent's method to
+/// about 2 ulp of `t`); the integration stops there, the event state is
+/// projected, passed to `observer` and returned in [`Stop::Event`]. A zero of
+/// `event` exactly at `t0` is not an event.
+///
+/// Returns how it ended, the final state, the final time and the work counters.
+#[allow(clippy::too_many_arguments)] // the argument list is the agreed API
+pub fn solve<S: OdeSystem<N>, const N: usize>(
+    sys: &S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    opts: &Options,
+    project: Option<Projection<'_, N>>,
+    event: Option<EventFn<'_, N>>,
+    observer: &mut dyn FnMut(f64, &[f64; N]),
+) -> Result<(Stop<N>, [f64; N], f64, Stats), IntegrateError> {
+    let mut solver = Dop853::new(sys, t0, y0, t_end, opts)?;
+    let mut g_prev = event.map(|g| g(t0, &y0));
+    loop {
+        let done = solver.step()?;
+        if let (Some(g), Some(g0)) = (event, g_prev) {
+            let (ta, tb) = (solver.t_prev(), solver.t());
+            let g1 = g(tb, solver.y());
+            if (g0 < 0.0 && g1 >= 0.0) || (g0 > 0.0 && g1 <= 0.0) {
+                let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
+                let tol = 2.0 * f64::EPSILON * scale;
+                let te = if g1 == 0.0 {
+                    tb
+                } else {
+                    brent(|s| g(s, &solver.dense(s)), ta, tb, tol, 200)
+                        .ok_or(IntegrateError::NonFinite { t: tb })?
+                };
+                let mut ye = if te == tb {
+                    *solver.y()
+                } else {
+                    solver.dense(te)
+                };
+                if let Some(p) = project {
+                    p(&mut ye);
+                }
+                observer(te, &ye);
+                return Ok((Stop::Event { t: te, y: ye }, ye, te, solver.stats()));
+            }
+        }
+        apply_projection(&mut solver, project);
+        if let Some(g) = event {
+            g_prev = Some(g(solver.t(), solver.y()));
+        }
+        observer(solver.t(), solver.y());
+        if done {
+            return Ok((Stop::Reached, *solver.y(), solver.t(), solver.stats()));
+        }
+    }
+}
+
+/// Integrates from `t0` to `t_end` with DOP853 and reports the solution at the
+/// prescribed `samples` through `on_sample(t, &y)`, using the dense output
+/// (a sample falling on a step end gets the projected step-end state).
+///
+/// `samples` must be strictly monotone in the direction of integration and lie
+/// in the closed interval between `t0` and `t_end`; otherwise an
+/// [`IntegrateError::InvalidOption`] naming the first offending sample is
+/// returned before any integration. `project` is applied after each accepted
+/// step as in [`solve`]; the dense output on a step interpolates the
+/// unprojected step, starting from the projected state of the previous step.
+///
+/// Returns the final state (at `t_end`) and the work counters.
+#[allow(clippy::too_many_arguments)] // the argument list is the agreed API
+pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
+    sys: &S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    opts: &Options,
+    project: Option<Projection<'_, N>>,
+    samples: &[f64],
+    on_sample: &mut dyn FnMut(f64, &[f64; N]),
+) -> Result<([f64; N], Stats), IntegrateError> {
+    let dir = if t_end >= t0 { 1.0 } else { -1.0 };
+    let mut prev = None;
+    for &s in samples {
+        let inside = s.is_finite() && (s - t0) * dir >= 0.0 && (t_end - s) * dir >= 0.0;
+        let monotone = prev.is_none_or(|p: f64| (s - p) * dir > 0.0);
+        if !inside || !monotone {
+            return Err(IntegrateError::InvalidOption {
+                name: "samples",
+                value: s,
+                rule: "must be strictly monotone in the direction of integration and within [t0, t_end]",
+            });
+        }
+        prev = Some(s);
+    }
+    let mut solver = Dop853::new(sys, t0, y0, t_end, opts)?;
+    let mut next = 0;
+    while next < samples.len() && samples[next] == t0 {
+        on_sample(t0, &y0);
+        next += 1;
+    }
+    loop {
+        let done = solver.step()?;
+        apply_projection(&mut solver, project);
+        let t = solver.t();
+        while next < samples.len() && (samples[next] - t) * dir <= 0.0 {
+            let s = samples[next];
+            let y = if s == t { *solver.y() } else { solver.dense(s) };
+            on_sample(s, &y);
+            next += 1;
+        }
+        if done {
+            return Ok((*solver.y(), solver.stats()));
+        }
+    }
+}

@@ -1,0 +1,60 @@
+//! Projection of a state back onto the level set of the integrals, after each integration
+//! step (Hairer, Lubich, Wanner, *Geometric Numerical Integration*, section IV.4).
+//!
+//! The constraints are `H4 = (gamma, gamma)`, Jellett's `H3`, Routh's `K` (only for I1 = I2)
+//! and the energy `H1`, held at their values at the start. A simplified Newton iteration moves
+//! the state along the span of the constraint gradients (automatic differentiation of the
+//! functions of [`crate::integrals`]): `x <- x - J^T (J J^T)^{-1} (C(x) - c0)`.
+
+use crate::body::Body;
+use crate::differential::{partials, seeded, Dual6};
+use crate::integrals::{energy, geometric, jellett, routh_integral};
+use nalgebra::{DMatrix, DVector};
+
+/// Iterations of the simplified Newton method: the residual after one integration step is
+/// ~1e-14 relative, and each iteration squares it, so two reach round-off.
+const NEWTON_ITERATIONS: usize = 2;
+
+/// The level set `{C_i(x) = c_i}` of the integrals through a starting state.
+#[derive(Debug, Clone)]
+pub struct LevelSet {
+    body: Body,
+    targets: Vec<f64>,
+}
+
+impl LevelSet {
+    /// The level set through `x0`: H4, H3, K (when I1 = I2) and H1 at their values there.
+    pub fn through(body: &Body, x0: &[f64; 6]) -> Self {
+        let mut level = LevelSet { body: *body, targets: Vec::new() };
+        level.targets = level.constraints(&x0.map(Dual6::from)).iter().map(|c| c.re).collect();
+        level
+    }
+
+    fn constraints(&self, x: &[Dual6; 6]) -> Vec<Dual6> {
+        let body = &self.body;
+        let mut c = vec![geometric(x), jellett(body, x)];
+        if body.is_symmetric() {
+            c.push(routh_integral(body, x));
+        }
+        c.push(energy(body, x));
+        c
+    }
+
+    /// Move `x` onto the level set (in place).
+    pub fn project(&self, x: &mut [f64; 6]) {
+        let n = self.targets.len();
+        let at_start = self.constraints(&seeded(x));
+        let jac = DMatrix::from_fn(n, 6, |i, j| partials(&at_start[i])[j]);
+        let Some(gram) = (&jac * jac.transpose()).cholesky() else {
+            return;
+        };
+        for iteration in 0..NEWTON_ITERATIONS {
+            let values = if iteration == 0 { at_start.clone() } else { self.constraints(&x.map(Dual6::from)) };
+            let residual = DVector::from_fn(n, |i, _| values[i].re - self.targets[i]);
+            let step = jac.transpose() * gram.solve(&residual);
+            for (xi, si) in x.iter_mut().zip(step.iter()) {
+                *xi -= si;
+            }
+        }
+    }
+}

@@ -1,0 +1,120 @@
+//! The `routh simulate` command, run as a user would: default case, JSON keys, CSV columns,
+//! overrides, and bad input (exit code 2, a message, no panic, no output file).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn routh(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_routh")).args(args).output().expect("the binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("routh-cli-simulate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+fn assert_usage_error(out: &Output, expected: &str) {
+    let err = stderr(out);
+    assert_eq!(out.status.code(), Some(2), "expected exit 2 with `{expected}`, got {:?}: {err}", out.status);
+    assert!(err.contains(expected), "message `{err}` lacks `{expected}`");
+    assert!(!err.contains("panicked"), "panic: {err}");
+}
+
+#[test]
+fn default_case_prints_a_readable_summary() {
+    let out = routh(&["simulate", "--t-end", "5"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8(out.stdout).unwrap();
+    for needle in ["<built-in default>", "dop853", "H1", "max relative drift"] {
+        assert!(text.contains(needle), "summary lacks {needle}:\n{text}");
+    }
+}
+
+#[test]
+fn json_summary_has_the_promised_keys() {
+    let out = routh(&["simulate", "--t-end", "5", "--json"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in ["steps", "rhs_evals", "t_end", "final_state", "integrals"] {
+        assert!(v.get(key).is_some(), "JSON lacks {key}: {v}");
+    }
+    assert_eq!(v["t_end"], 5.0);
+    assert!(v["final_state"]["gamma"].as_array().unwrap().len() == 3);
+    assert!(v["final_state"]["M"].as_array().unwrap().len() == 3);
+    for name in ["H1", "H2", "H3", "H4", "K"] {
+        let d = &v["integrals"][name];
+        assert!(d["initial"].is_f64() && d["max_rel_drift"].is_f64(), "{name}: {d}");
+    }
+}
+
+#[test]
+fn csv_has_the_promised_columns_and_samples() {
+    let path = scratch("run.csv");
+    let out = routh(&["simulate", "--t-end", "1", "--samples", "11", "--out", path.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next().unwrap(), "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,H1,H2,H3,H4,K");
+    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 11);
+    assert_eq!(rows[0][0], 0.0);
+    assert_eq!(rows[10][0], 1.0);
+    assert!(rows.iter().all(|r| r.len() == 15));
+}
+
+#[test]
+fn rk4_and_projection_options_run() {
+    let out = routh(&["simulate", "--t-end", "1", "--method", "rk4:2000", "--project", "--json"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["method"], "rk4:2000");
+    assert_eq!(v["steps"], 2000);
+    assert!(v["integrals"]["H1"]["max_rel_drift"].as_f64().unwrap() < 1e-13);
+}
+
+#[test]
+fn bad_options_exit_2_with_a_message() {
+    assert_usage_error(&routh(&["simulate", "--t-end", "nan"]), "t_end");
+    assert_usage_error(&routh(&["simulate", "--t-end", "-1"]), "t_end");
+    assert_usage_error(&routh(&["simulate", "--rtol", "-1e-9"]), "rtol");
+    assert_usage_error(&routh(&["simulate", "--atol", "nan"]), "atol");
+    assert_usage_error(&routh(&["simulate", "--method", "euler"]), "unknown integration method");
+    assert_usage_error(&routh(&["simulate", "--case", "/nonexistent/case.toml"]), "/nonexistent/case.toml");
+}
+
+#[test]
+fn bad_case_files_exit_2_naming_the_key_and_file() {
+    let default = routh::case::DEFAULT_CASE;
+    for (old, new, expected) in [
+        ("G = 9.81", "G = 9.81\nspin = 1", "spin"),
+        ("a = 0.3", "a = 1.5", "|a| < R"),
+        ("I3 = 0.5", "I3 = 0.9", "I1 + I2 >= I3"),
+        ("m = 1.0", "m = -1.0", "m = -1"),
+        ("gamma = [0.29552020666133955, 0.0, 0.955336489125606]", "gamma = [1.0, 1.0, 0.0]", "not a unit vector"),
+        ("t_end = 100.0\n", "", "t_end"),
+        ("[body]", "[body", "malformed TOML"),
+    ] {
+        let path = scratch("bad.toml");
+        std::fs::write(&path, default.replacen(old, new, 1)).unwrap();
+        let out = routh(&["simulate", "--case", path.to_str().unwrap()]);
+        assert_usage_error(&out, expected);
+        assert!(stderr(&out).contains("bad.toml"), "file not named: {}", stderr(&out));
+    }
+}
+
+#[test]
+fn a_failed_run_leaves_no_output_file() {
+    let path = scratch("never.csv");
+    let _ = std::fs::remove_file(&path);
+    let out = routh(&["simulate", "--t-end", "nan", "--out", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!path.exists(), "a failed run wrote {}", path.display());
+    let dir = path.parent().unwrap();
+    let leftovers: Vec<_> = std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()).filter(|e| e.file_name().to_string_lossy().contains("never.csv")).collect();
+    assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
+}
