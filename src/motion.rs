@@ -30,6 +30,7 @@
 
 use crate::body::Body;
 use crate::field::vector_field;
+use crate::integrate::OdeSystem;
 use crate::scalar::cross;
 use crate::state::State;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
@@ -58,9 +59,9 @@ pub struct FullMotion<'a> {
     pub body: &'a Body,
 }
 
-impl FullMotion<'_> {
+impl OdeSystem<FULL_DIM> for FullMotion<'_> {
     /// The time derivative of the extended state `y = (gamma, M, q, x, y)`.
-    pub fn derivative(&self, y: &[f64; FULL_DIM]) -> [f64; FULL_DIM] {
+    fn rhs(&self, _t: f64, y: &[f64; FULL_DIM]) -> [f64; FULL_DIM] {
         let x: [f64; 6] = std::array::from_fn(|i| y[i]);
         let reduced = vector_field(self.body, &x);
         let state = State::from_array(&x);
