@@ -72,6 +72,22 @@ pub enum RouthError {
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(String),
+    /// A table of samples (a CSV file of `routh simulate`) that cannot be used.
+    #[error("{origin}: {message}")]
+    Table {
+        /// Where the table came from (a file, or `simulation`).
+        origin: String,
+        /// What is wrong, naming the line or the column.
+        message: String,
+    },
+    /// Drawing a figure failed.
+    #[error("cannot draw {figure}: {message}")]
+    Plot {
+        /// The figure's file name.
+        figure: String,
+        /// The drawing backend's message.
+        message: String,
+    },
     /// Reading or writing a file failed.
     #[error("{}: {source}", path.display())]
     Io {

@@ -5,6 +5,7 @@
 //! labels in the documentation, such as (m-eq) or (p-br), are the labels of that paper.
 #![warn(missing_docs)]
 
+pub mod animate;
 pub mod body;
 pub mod case;
 pub mod differential;
@@ -13,12 +14,14 @@ pub mod field;
 pub mod integrals;
 pub mod integrate;
 pub mod motion;
+pub mod plot;
 pub mod output;
 pub mod projection;
 pub mod sampling;
 pub mod scalar;
 pub mod simulate;
 pub mod state;
+pub mod table;
 
 pub use body::Body;
 pub use error::{Result, RouthError};

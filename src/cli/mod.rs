@@ -1,6 +1,8 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
+mod animate;
+mod plot;
 mod simulate;
 
 use clap::{Parser, Subcommand};
@@ -18,6 +20,11 @@ struct Cli {
 enum Command {
     /// Integrate a case and report the drift of the integrals; optionally write samples.
     Simulate(simulate::Args),
+    /// Draw the figures of a trajectory (PNG or SVG): theta(t), the paths on the plane, the
+    /// drift of the integrals, the trace of (gamma1, gamma2).
+    Plot(plot::Args),
+    /// Write an HTML page animating the rolling ball.
+    Animate(animate::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -33,6 +40,8 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
+        Command::Plot(args) => plot::run(args),
+        Command::Animate(args) => animate::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,129 @@
+//! `routh plot`: the standard figures of a trajectory (theta(t), the paths on the plane, the
+//! drift of the integrals, the trace of (gamma1, gamma2)), from a simulation of a case or from
+//! a CSV file written by `routh simulate`; optionally the difference against a second CSV.
+
+use routh::case::Case;
+use routh::plot::{difference_plot, standard_plots, Format};
+use routh::table::{simulate_full, Table};
+use routh::{Result, RouthError};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// Samples of the simulation behind the figures when `--samples` is not given.
+const DEFAULT_SAMPLES: usize = 2001;
+
+/// Where the samples come from: a simulation of a case, or a CSV file of `routh simulate`.
+#[derive(clap::Args, Debug)]
+pub struct Source {
+    /// Case file (TOML); the built-in default case when omitted.
+    #[arg(long, conflicts_with = "csv")]
+    pub case: Option<PathBuf>,
+    /// Draw from this CSV file of `routh simulate` (use `--full` for the paths) instead of
+    /// simulating.
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+    /// Final time of the simulation (default: the case's t_end).
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "csv")]
+    pub t_end: Option<f64>,
+    /// Number of equally spaced samples of the simulation (>= 2).
+    #[arg(long, default_value_t = DEFAULT_SAMPLES, conflicts_with = "csv")]
+    pub samples: usize,
+}
+
+impl Source {
+    /// The table of samples: read from `--csv`, or simulated with the full motion.
+    pub fn table(&self) -> Result<Table> {
+        if let Some(path) = &self.csv {
+            return Table::read_csv(path);
+        }
+        let case = Case::load(self.case.as_deref())?;
+        let t_end = self.t_end.unwrap_or(case.integration.t_end);
+        routh::case::check_option(
+            "t_end",
+            t_end,
+            t_end.is_finite() && t_end > 0.0,
+            "must be finite and > 0",
+        )?;
+        if self.samples < 2 {
+            return Err(RouthError::Option {
+                name: "samples",
+                value: self.samples.to_string(),
+                rule: "must be >= 2",
+            });
+        }
+        simulate_full(&case, t_end, self.samples)
+    }
+}
+
+/// Options of `routh plot`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Where the samples come from.
+    #[command(flatten)]
+    pub source: Source,
+    /// A second CSV sampled at the same times (for example the quadrature solution of
+    /// `routh exact`): also draw `difference.<ext>`, this file minus the first table.
+    #[arg(long)]
+    pub compare: Option<PathBuf>,
+    /// Directory for the figures (created if missing).
+    #[arg(long, default_value = "plots")]
+    pub out: PathBuf,
+    /// Image format: png or svg.
+    #[arg(long, default_value = "png")]
+    pub format: Format,
+    /// Print the list of files written as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// What `routh plot` reports.
+#[derive(Serialize)]
+pub struct Written {
+    /// The files written.
+    pub files: Vec<PathBuf>,
+    /// Figures left out, with the reason.
+    pub skipped: Vec<String>,
+}
+
+/// Create the output directory, naming it in the error.
+pub fn create_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir).map_err(|source| RouthError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })
+}
+
+/// Print the files written (and figures skipped), as JSON or as lines.
+pub fn report(written: &Written, json: bool) {
+    if json {
+        super::print_json(written);
+        return;
+    }
+    for file in &written.files {
+        println!("wrote {}", file.display());
+    }
+    for reason in &written.skipped {
+        println!("skipped {reason}");
+    }
+}
+
+/// Run the command.
+pub fn run(args: Args) -> Result<()> {
+    let table = args.source.table()?;
+    let (mut plots, skipped) = standard_plots(&table)?;
+    if let Some(path) = &args.compare {
+        let other = Table::read_csv(path)?;
+        plots.push(difference_plot(
+            &other,
+            &table,
+            (&other.origin, &table.origin),
+        )?);
+    }
+    create_dir(&args.out)?;
+    let files = plots
+        .iter()
+        .map(|plot| plot.render(&args.out, args.format))
+        .collect::<Result<_>>()?;
+    report(&Written { files, skipped }, args.json);
+    Ok(())
+}

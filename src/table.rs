@@ -1,0 +1,201 @@
+//! Tables of samples along a trajectory, column by column: built by simulating a case with
+//! the full motion, or read back from a CSV file written by `routh simulate` (a header row of
+//! column names, then rows of numbers; an empty cell, as written for H2 and K when I1 != I2,
+//! reads as NaN). The plots and the animation draw from a [`Table`].
+
+use crate::case::Case;
+use crate::error::{Result, RouthError};
+use crate::integrals::{Integrals, INTEGRAL_NAMES};
+use crate::integrate::Method;
+use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
+use crate::simulate::{run, Settings};
+use crate::state::State;
+use std::path::Path;
+
+/// Names of the reduced-state columns of `routh simulate`, after `t` and before the integrals.
+pub const STATE_COLUMN_NAMES: [&str; 9] = [
+    "gamma1", "gamma2", "gamma3", "M1", "M2", "M3", "omega1", "omega2", "omega3",
+];
+
+/// Named columns of equal length.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// Where the table came from, for error messages.
+    pub origin: String,
+    names: Vec<String>,
+    columns: Vec<Vec<f64>>,
+}
+
+impl Table {
+    /// An empty table with the given column names.
+    pub fn new(origin: &str, names: Vec<String>) -> Self {
+        let columns = vec![Vec::new(); names.len()];
+        Table {
+            origin: origin.to_string(),
+            names,
+            columns,
+        }
+    }
+
+    /// Append a row; it must have one value per column.
+    pub fn push_row(&mut self, row: &[f64]) -> Result<()> {
+        if row.len() != self.names.len() {
+            return Err(self.error(format!(
+                "a row of {} values for {} columns",
+                row.len(),
+                self.names.len()
+            )));
+        }
+        for (column, &value) in self.columns.iter_mut().zip(row) {
+            column.push(value);
+        }
+        Ok(())
+    }
+
+    /// The number of rows.
+    pub fn len(&self) -> usize {
+        self.columns.first().map_or(0, Vec::len)
+    }
+
+    /// Whether the table has no rows.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The column names, in order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// Whether a column of that name exists.
+    pub fn has(&self, name: &str) -> bool {
+        self.names.iter().any(|n| n == name)
+    }
+
+    /// The column `name`, or an error that names it.
+    pub fn column(&self, name: &str) -> Result<&[f64]> {
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| self.columns[i].as_slice())
+            .ok_or_else(|| self.error(format!("no column `{name}`")))
+    }
+
+    fn error(&self, message: String) -> RouthError {
+        RouthError::Table {
+            origin: self.origin.clone(),
+            message,
+        }
+    }
+
+    /// Parse CSV text: a header of names, then rows of numbers (empty cell: NaN). At least
+    /// one row and a `t` column are required.
+    pub fn parse_csv(text: &str, origin: &str) -> Result<Self> {
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty());
+        let (_, header) = lines.next().ok_or_else(|| RouthError::Table {
+            origin: origin.to_string(),
+            message: "empty file, expected a header row".into(),
+        })?;
+        let names: Vec<String> = header.split(',').map(|s| s.trim().to_string()).collect();
+        let mut table = Table::new(origin, names);
+        for (index, line) in lines {
+            let row = line
+                .split(',')
+                .map(|cell| match cell.trim() {
+                    "" => Ok(f64::NAN),
+                    value => value.parse::<f64>().map_err(|_| {
+                        table.error(format!("line {}: `{value}` is not a number", index + 1))
+                    }),
+                })
+                .collect::<Result<Vec<f64>>>()?;
+            table
+                .push_row(&row)
+                .map_err(|e| table.error(format!("line {}: {e}", index + 1)))?;
+        }
+        if table.is_empty() {
+            return Err(table.error("no rows of samples".into()));
+        }
+        table.column("t")?;
+        Ok(table)
+    }
+
+    /// Read a CSV file written by `routh simulate`.
+    pub fn read_csv(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|source| RouthError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::parse_csv(&text, &path.display().to_string())
+    }
+}
+
+/// Simulate `case` with the full motion (DOP853 at the case's tolerances) and tabulate
+/// `samples` equally spaced samples on [0, t_end]: t, the reduced state, omega, the integrals
+/// and the columns of [`full_columns`].
+pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
+    let settings = Settings {
+        method: Method::Dop853,
+        t_end,
+        rtol: case.integration.rtol,
+        atol: case.integration.atol,
+        project: false,
+        samples,
+    };
+    let names = std::iter::once("t")
+        .chain(STATE_COLUMN_NAMES)
+        .chain(INTEGRAL_NAMES)
+        .chain(FULL_COLUMN_NAMES)
+        .map(str::to_string)
+        .collect();
+    let mut table = Table::new(&case.source, names);
+    let body = &case.body;
+    run(
+        body,
+        &FullMotion { body },
+        initial_full(&case.initial),
+        &settings,
+        &mut |t, y| {
+            let x: [f64; 6] = std::array::from_fn(|i| y[i]);
+            let omega = State::from_array(&x).omega(body);
+            let integrals = Integrals::at(body, &x)
+                .values()
+                .map(|v| v.unwrap_or(f64::NAN));
+            let row: Vec<f64> = std::iter::once(t)
+                .chain(x)
+                .chain(omega)
+                .chain(integrals)
+                .chain(full_columns(body, y))
+                .collect();
+            table.push_row(&row)
+        },
+    )?;
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_round_trip_with_empty_cells() {
+        let table = Table::parse_csv("t,H2,x\n0,1.5,\n0.5,,2e-3\n", "test").unwrap();
+        assert_eq!(table.len(), 2);
+        assert_eq!(table.column("t").unwrap(), &[0.0, 0.5]);
+        assert!(table.column("H2").unwrap()[1].is_nan());
+        assert_eq!(table.column("x").unwrap()[1], 2e-3);
+        assert!(table.column("y").is_err());
+    }
+
+    #[test]
+    fn bad_csv_names_the_line() {
+        let err = Table::parse_csv("t,x\n0,1\n1,abc\n", "f.csv").unwrap_err();
+        assert!(err.to_string().contains("line 3"), "{err}");
+        let err = Table::parse_csv("t,x\n0,1,2\n", "f.csv").unwrap_err();
+        assert!(err.to_string().contains("line 2"), "{err}");
+        assert!(Table::parse_csv("x\n1\n", "f.csv").is_err());
+        assert!(Table::parse_csv("t,x\n", "f.csv").is_err());
+    }
+}

@@ -1,0 +1,237 @@
+//! `routh plot` and `routh animate`, run as a user would: the files exist, are not empty, have
+//! the promised dimensions; bad input exits with code 2 and a message.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// The figure size promised by `routh::plot::SIZE`.
+const WIDTH: u32 = 960;
+const HEIGHT: u32 = 640;
+const FIGURES: [&str; 4] = ["theta", "contact_path", "integral_drift", "gamma_trace"];
+
+fn routh(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_routh"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("routh-plot-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn ok(out: &Output) -> String {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "failed: {err}");
+    String::from_utf8(out.stdout.clone()).unwrap()
+}
+
+/// Width and height from the IHDR chunk, after checking the PNG signature.
+fn png_dimensions(bytes: &[u8]) -> (u32, u32) {
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "PNG signature");
+    assert_eq!(&bytes[12..16], b"IHDR");
+    let word = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    (word(16), word(20))
+}
+
+/// The JSON list of files written, checked against the expected names.
+fn written(stdout: &str, dir: &Path, names: &[&str], ext: &str) -> Vec<PathBuf> {
+    let v: serde_json::Value = serde_json::from_str(stdout).unwrap();
+    let files: Vec<PathBuf> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| PathBuf::from(f.as_str().unwrap()))
+        .collect();
+    let expected: Vec<PathBuf> = names
+        .iter()
+        .map(|n| dir.join(format!("{n}.{ext}")))
+        .collect();
+    assert_eq!(files, expected);
+    files
+}
+
+#[test]
+fn png_figures_have_the_promised_size() {
+    let dir = scratch("png");
+    let out = routh(&[
+        "plot",
+        "--out",
+        dir.to_str().unwrap(),
+        "--format",
+        "png",
+        "--t-end",
+        "3",
+        "--samples",
+        "301",
+        "--json",
+    ]);
+    for file in written(&ok(&out), &dir, &FIGURES, "png") {
+        let bytes = std::fs::read(&file).unwrap();
+        // A blank 960x640 RGB image compresses to a few kB; axes, labels and curves add more.
+        assert!(
+            bytes.len() > 20_000,
+            "{}: {} bytes",
+            file.display(),
+            bytes.len()
+        );
+        assert_eq!(
+            png_dimensions(&bytes),
+            (WIDTH, HEIGHT),
+            "{}",
+            file.display()
+        );
+    }
+}
+
+#[test]
+fn svg_figures_have_the_promised_size() {
+    let dir = scratch("svg");
+    let out = routh(&[
+        "plot",
+        "--out",
+        dir.to_str().unwrap(),
+        "--format",
+        "svg",
+        "--t-end",
+        "3",
+        "--samples",
+        "301",
+        "--json",
+    ]);
+    for file in written(&ok(&out), &dir, &FIGURES, "svg") {
+        let text = std::fs::read_to_string(&file).unwrap();
+        assert!(
+            text.len() > 5_000,
+            "{}: {} bytes",
+            file.display(),
+            text.len()
+        );
+        let head = &text[..text.find('>').unwrap()];
+        assert!(head.contains(&format!("width=\"{WIDTH}\"")), "{head}");
+        assert!(head.contains(&format!("height=\"{HEIGHT}\"")), "{head}");
+        assert!(text.contains("<text"), "labels are text elements");
+        assert!(text.contains("<polyline"), "curves are drawn");
+    }
+}
+
+#[test]
+fn plots_from_a_simulate_csv_and_compares_two() {
+    let dir = scratch("csv");
+    let (fine, coarse) = (dir.join("fine.csv"), dir.join("coarse.csv"));
+    for (file, tol) in [(&fine, "1e-12"), (&coarse, "1e-6")] {
+        ok(&routh(&[
+            "simulate",
+            "--t-end",
+            "2",
+            "--samples",
+            "101",
+            "--rtol",
+            tol,
+            "--atol",
+            tol,
+            "--out",
+            file.to_str().unwrap(),
+        ]));
+    }
+    let out = routh(&[
+        "plot",
+        "--csv",
+        fine.to_str().unwrap(),
+        "--compare",
+        coarse.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    let stdout = ok(&out);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let files: Vec<&str> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap())
+        .collect();
+    // The reduced CSV has no positions: the path figure is skipped, with the reason.
+    let has_full = files.iter().any(|f| f.ends_with("contact_path.png"));
+    let skipped = v["skipped"].as_array().unwrap();
+    assert!(
+        has_full || skipped[0].as_str().unwrap().contains("--full"),
+        "{stdout}"
+    );
+    let difference = dir.join("difference.png");
+    assert!(files.contains(&difference.to_str().unwrap()), "{stdout}");
+    let bytes = std::fs::read(&difference).unwrap();
+    assert_eq!(png_dimensions(&bytes), (WIDTH, HEIGHT));
+}
+
+#[test]
+fn animate_writes_a_self_contained_page() {
+    let dir = scratch("animate");
+    let out = routh(&[
+        "animate",
+        "--out",
+        dir.to_str().unwrap(),
+        "--t-end",
+        "2",
+        "--json",
+    ]);
+    let files = written(&ok(&out), &dir, &["animation"], "html");
+    let page = std::fs::read_to_string(&files[0]).unwrap();
+    assert!(page.len() > 10_000, "{} bytes", page.len());
+    for needle in ["<canvas", "\"q\":[[", "requestAnimationFrame"] {
+        assert!(page.contains(needle), "page lacks {needle}");
+    }
+    // The radius recovered from the samples is the default case's R = 1.
+    let after = page
+        .split("\"radius\":")
+        .nth(1)
+        .expect("the radius is embedded");
+    let radius: f64 = after.split(',').next().unwrap().parse().unwrap();
+    assert!((radius - 1.0).abs() < 1e-9, "R = {radius}");
+    assert!(
+        !page.contains("__DATA__") && !page.contains("http"),
+        "self-contained"
+    );
+}
+
+fn assert_exit_2(args: &[&str], expected: &str) {
+    let out = routh(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(
+        err.contains(expected),
+        "{args:?}: `{err}` lacks `{expected}`"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message() {
+    let dir = scratch("bad");
+    let out = dir.to_str().unwrap();
+    assert_exit_2(&["plot", "--out", out, "--format", "gif"], "gif");
+    assert_exit_2(
+        &["plot", "--out", out, "--csv", "/nonexistent.csv"],
+        "/nonexistent.csv",
+    );
+    assert_exit_2(&["plot", "--out", out, "--samples", "1"], "samples");
+    assert_exit_2(&["plot", "--out", out, "--t-end", "-1"], "t_end");
+    let garbage = dir.join("garbage.csv");
+    std::fs::write(&garbage, "t,gamma1\n0,abc\n").unwrap();
+    assert_exit_2(
+        &["plot", "--out", out, "--csv", garbage.to_str().unwrap()],
+        "line 2",
+    );
+    assert_exit_2(
+        &["animate", "--out", out, "--csv", garbage.to_str().unwrap()],
+        "line 2",
+    );
+    assert!(
+        std::fs::read_dir(&dir).unwrap().count() == 1,
+        "no figure written on error"
+    );
+}
