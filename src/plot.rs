@@ -4,9 +4,9 @@
 //! series, linear or logarithmic vertical axis, equal axis scales or not); one renderer draws
 //! every description. The figures:
 //!
-//! * [`theta_plot`]: the tilt theta(t), `cos theta = gamma3`, the angle between the upward
-//!   vertical and the line from the geometric centre to the centre of mass (theta = 0: the
-//!   centre of mass straight above the geometric centre);
+//! * [`theta_plot`]: the tilt theta(t), `cos theta = gamma3`, the angle between the downward
+//!   vertical and e3; for a > 0, the angle between the upward vertical and the line from the
+//!   geometric centre to the centre of mass (theta = 0: the centre of mass straight above);
 //! * [`path_plot`]: the paths of the contact point and of the centre of mass on the plane,
 //!   equal axis scales;
 //! * [`drift_plot`]: the relative drift `|H(t) - H(0)| / |H(0)|` of each integral, log scale;
@@ -345,10 +345,13 @@ pub fn plotting_area() -> (u32, u32) {
     )
 }
 
-/// A tick label: four decimals with trailing zeros removed, exponent notation for very large
-/// or small values, no `-0`.
-fn tick_label(v: f64) -> String {
-    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+/// A tick label on an axis spanning `span`: round-off zeros (|v| < 1e-9 span) as `0`, exponent
+/// notation on very long or short axes, else four decimals without trailing zeros, no `-0`.
+fn tick_label(v: f64, span: f64) -> String {
+    if v.abs() < 1e-9 * span {
+        return "0".to_string();
+    }
+    if !(1e-3..1e5).contains(&span) {
         return format!("{v:.2e}");
     }
     let text = format!("{v:.4}");
@@ -383,10 +386,11 @@ impl Plot {
         if self.log_y {
             let (xr, _) = chart_ranges(x, y, false, plotting_area());
             let (lo, hi) = if y.0 > 0.0 { y } else { (1e-16, 1.0) };
-            self.draw_chart(&body, xr, (lo / 2.0..hi * 2.0).log_scale())
+            self.draw_chart(&body, xr, (lo / 2.0..hi * 2.0).log_scale(), hi - lo)
         } else {
             let (xr, yr) = chart_ranges(x, y, self.equal_scale, plotting_area());
-            self.draw_chart(&body, xr, yr)
+            let span = yr.end - yr.start;
+            self.draw_chart(&body, xr, yr, span)
         }
     }
 
@@ -409,6 +413,7 @@ impl Plot {
         area: &DrawingArea<DB, Shift>,
         x: Range<f64>,
         y: Y,
+        y_span: f64,
     ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>>
     where
         Y: AsRangedCoord<Value = f64>,
@@ -418,9 +423,10 @@ impl Plot {
             if self.log_y {
                 format!("{v:.0e}")
             } else {
-                tick_label(*v)
+                tick_label(*v, y_span)
             }
         };
+        let x_span = x.end - x.start;
         let mut chart = ChartBuilder::on(area)
             .margin(MARGIN)
             .x_label_area_size(X_LABEL_AREA)
@@ -430,7 +436,7 @@ impl Plot {
             .configure_mesh()
             .x_desc(&self.x_label)
             .y_desc(&self.y_label)
-            .x_label_formatter(&|v| tick_label(*v))
+            .x_label_formatter(&|v| tick_label(*v, x_span))
             .y_label_formatter(&y_format)
             .label_style(("sans-serif", 16))
             .axis_desc_style(("sans-serif", 18))
@@ -486,6 +492,8 @@ impl Plot {
                     let mut encoder = png::Encoder::new(w, SIZE.0, SIZE.1);
                     encoder.set_color(png::ColorType::Rgb);
                     encoder.set_depth(png::BitDepth::Eight);
+                    encoder.set_compression(png::Compression::Best);
+                    encoder.set_filter(png::FilterType::Paeth);
                     let mut writer = encoder.write_header().map_err(|e| failed(&e))?;
                     writer.write_image_data(&pixels).map_err(|e| failed(&e))
                 })?;
@@ -512,6 +520,14 @@ mod tests {
         let ratio =
             (x.end - x.start) / f64::from(pixels.0) / ((y.end - y.start) / f64::from(pixels.1));
         assert!((ratio - 1.0).abs() > 0.5);
+    }
+
+    #[test]
+    fn tick_labels_are_short() {
+        assert_eq!(tick_label(-5.55e-17, 0.6), "0");
+        assert_eq!(tick_label(0.25, 0.6), "0.25");
+        assert_eq!(tick_label(-2.0, 10.0), "-2");
+        assert_eq!(tick_label(2e-5, 4e-5), "2.00e-5");
     }
 
     #[test]
