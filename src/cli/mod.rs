@@ -15,7 +15,10 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Integrate a case along (mg-eq) and report the drift of the integrals.
+    Simulate(simulate::Args),
+}
 
 /// Print `value` as pretty JSON on stdout.
 pub fn print_json<T: serde::Serialize>(value: &T) {

@@ -7,7 +7,6 @@ use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::{Result, RouthError};
-use std::io::Write;
 use std::path::PathBuf;
 
 /// Samples written to CSV when `--out` is given without `--samples`.
@@ -20,13 +19,13 @@ pub struct Args {
     #[arg(long)]
     pub case: Option<PathBuf>,
     /// Final time.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub t_end: Option<f64>,
     /// Relative tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Integrator: `dop853` (adaptive, 8th order) or `rk4` / `rk4:<steps>` (fixed step).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
