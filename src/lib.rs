@@ -12,6 +12,7 @@ pub mod error;
 pub mod field;
 pub mod integrals;
 pub mod integrate;
+pub mod motion;
 pub mod output;
 pub mod projection;
 pub mod sampling;
