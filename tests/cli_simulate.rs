@@ -211,3 +211,49 @@ fn a_failed_run_leaves_no_output_file() {
         .collect();
     assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
 }
+
+#[test]
+fn full_motion_adds_orientation_and_positions_to_the_csv() {
+    let path = scratch("full.csv");
+    let out = routh(&[
+        "simulate",
+        "--full",
+        "--t-end",
+        "1",
+        "--samples",
+        "6",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    assert_eq!(header.len(), 24);
+    assert_eq!(
+        &header[15..],
+        [
+            "qw",
+            "qx",
+            "qy",
+            "qz",
+            "x",
+            "y",
+            "z",
+            "contact_x",
+            "contact_y"
+        ]
+    );
+    for line in text.lines().skip(1) {
+        let v: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
+        // The quaternion is unit (1e-12: DOP853 at the default 1e-12 tolerance over t = 1)
+        // and the centre of mass is at the height (r, gamma) = R + a gamma3 of the default body.
+        let norm = (v[15] * v[15] + v[16] * v[16] + v[17] * v[17] + v[18] * v[18]).sqrt();
+        assert!((norm - 1.0).abs() < 1e-12, "|q| = {norm}");
+        assert!(
+            (v[21] - (1.0 + 0.3 * v[3])).abs() < 1e-14,
+            "height {} vs gamma3 {}",
+            v[21],
+            v[3]
+        );
+    }
+}
