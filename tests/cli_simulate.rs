@@ -246,7 +246,8 @@ fn full_motion_adds_orientation_and_positions_to_the_csv() {
     for line in text.lines().skip(1) {
         let v: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
         // The quaternion is unit (1e-12: DOP853 at the default 1e-12 tolerance over t = 1)
-        // and the centre of mass is at the height (r, gamma) = R + a gamma3 of the default body.
+        // and the centre of mass is at the height (r, gamma) = R (gamma, gamma) + a gamma3 of the
+        // default body (R = 1, a = 0.3), to round-off.
         let norm = (v[15] * v[15] + v[16] * v[16] + v[17] * v[17] + v[18] * v[18]).sqrt();
         assert!((norm - 1.0).abs() < 1e-12, "|q| = {norm}");
         assert!(
