@@ -250,11 +250,11 @@ fn full_motion_adds_orientation_and_positions_to_the_csv() {
         // default body (R = 1, a = 0.3), to round-off.
         let norm = (v[15] * v[15] + v[16] * v[16] + v[17] * v[17] + v[18] * v[18]).sqrt();
         assert!((norm - 1.0).abs() < 1e-12, "|q| = {norm}");
+        let height = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + 0.3 * v[3];
         assert!(
-            (v[21] - (1.0 + 0.3 * v[3])).abs() < 1e-14,
-            "height {} vs gamma3 {}",
-            v[21],
-            v[3]
+            (v[21] - height).abs() < 1e-14,
+            "height {} vs (r, gamma) = {height}",
+            v[21]
         );
     }
 }
