@@ -18,7 +18,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Integrate a case and report the drift of the integrals; optionally write samples.
+    /// Integrate a case along (mg-eq) and report the drift of the integrals.
     Simulate(simulate::Args),
     /// Draw the figures of a trajectory (PNG or SVG): theta(t), the paths on the plane, the
     /// drift of the integrals, the trace of (gamma1, gamma2).

@@ -3,11 +3,11 @@
 
 use routh::case::Case;
 use routh::integrals::{Integrals, INTEGRAL_NAMES};
-use routh::integrate::Method;
+use routh::integrate::{Method, OdeSystem};
+use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::{Result, RouthError};
-use std::io::Write;
 use std::path::PathBuf;
 
 /// Samples written to CSV when `--out` is given without `--samples`.
@@ -20,13 +20,13 @@ pub struct Args {
     #[arg(long)]
     pub case: Option<PathBuf>,
     /// Final time.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub t_end: Option<f64>,
     /// Relative tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Integrator: `dop853` (adaptive, 8th order) or `rk4` / `rk4:<steps>` (fixed step).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
@@ -40,13 +40,18 @@ pub struct Args {
     /// CSV file for the samples (written atomically).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Also rebuild the motion in space: add the orientation quaternion (qw, qx, qy, qz), the
+    /// centre of mass (x, y, z) and the contact point (contact_x, contact_y) to the CSV.
+    #[arg(long)]
+    pub full: bool,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
 }
 
 fn parse_method(s: &str) -> std::result::Result<Method, String> {
-    s.parse().map_err(|e: routh::integrate::ParseMethodError| e.to_string())
+    s.parse()
+        .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
 /// The settings of a case with the command-line overrides applied.
@@ -66,7 +71,9 @@ pub const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omeg
 
 /// One CSV row: t, gamma, M, omega and the integrals (empty where not an integral).
 pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
-    let omega = case.body.angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
+    let omega = case
+        .body
+        .angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
     let mut row = format!("{t}");
     for v in x.iter().chain(&omega) {
         row.push_str(&format!(",{v}"));
@@ -89,22 +96,30 @@ pub fn run_command(args: Args) -> Result<()> {
         (None, None) => 0,
     };
     let settings = settings(&case, &args, samples);
-    let system = ReducedSystem(&case.body);
-    let x0 = case.initial.to_array();
-    let summary = match &args.out {
-        None => run(&case.body, &system, x0, &settings, &mut |_, _| Ok(()))?,
-        Some(path) => {
-            let mut summary = None;
-            write_atomic(path, |w| {
-                let io = |source| RouthError::Io { path: path.clone(), source };
-                writeln!(w, "{CSV_HEADER}").map_err(io)?;
-                summary = Some(run(&case.body, &system, x0, &settings, &mut |t, x| {
-                    writeln!(w, "{}", csv_row(&case, t, x)).map_err(io)
-                })?);
-                Ok(())
-            })?;
-            summary.expect("run returned a summary")
-        }
+    let summary = if args.full {
+        let extra = |y: &[f64; 12]| full_columns(&case.body, y).to_vec();
+        let header = FULL_COLUMN_NAMES.join(",");
+        let system = FullMotion { body: &case.body };
+        execute(
+            &case,
+            &args,
+            &settings,
+            &system,
+            initial_full(&case.initial),
+            &header,
+            extra,
+        )?
+    } else {
+        let system = ReducedSystem(&case.body);
+        execute(
+            &case,
+            &args,
+            &settings,
+            &system,
+            case.initial.to_array(),
+            "",
+            |_| Vec::new(),
+        )?
     };
     if args.json {
         super::print_json(&summary);
@@ -114,6 +129,42 @@ pub fn run_command(args: Args) -> Result<()> {
     Ok(())
 }
 
+/// Run the simulation of `system` from `y0` (whose first six components are the reduced
+/// state), writing the CSV when `--out` is given: the reduced columns, then the columns of
+/// `extra_header` with the values of `extra`.
+fn execute<S: OdeSystem<N>, const N: usize>(
+    case: &Case,
+    args: &Args,
+    settings: &Settings,
+    system: &S,
+    y0: [f64; N],
+    extra_header: &str,
+    extra: impl Fn(&[f64; N]) -> Vec<f64>,
+) -> Result<Summary> {
+    let Some(path) = &args.out else {
+        return run(&case.body, system, y0, settings, &mut |_, _| Ok(()));
+    };
+    let mut summary = None;
+    write_atomic(path, |w| {
+        let io = |source| RouthError::Io {
+            path: path.clone(),
+            source,
+        };
+        let separator = if extra_header.is_empty() { "" } else { "," };
+        writeln!(w, "{CSV_HEADER}{separator}{extra_header}").map_err(io)?;
+        summary = Some(run(&case.body, system, y0, settings, &mut |t, y| {
+            let x: [f64; 6] = std::array::from_fn(|i| y[i]);
+            let mut row = csv_row(case, t, &x);
+            for v in extra(y) {
+                row.push_str(&format!(",{v}"));
+            }
+            writeln!(w, "{row}").map_err(io)
+        })?);
+        Ok(())
+    })?;
+    Ok(summary.expect("run returned a summary"))
+}
+
 fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
     println!("routh simulate: {}", case.source);
     let b = &case.body;
@@ -121,15 +172,35 @@ fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
         "  body     m = {}, R = {}, a = {}, I = ({}, {}, {}), G = {}",
         b.m, b.radius, b.a, b.i1, b.i2, b.i3, b.gravity
     );
-    println!("  method   {}{}", s.method, if s.projected { " with projection onto the integrals" } else { "" });
+    println!(
+        "  method   {}{}",
+        s.method,
+        if s.projected {
+            " with projection onto the integrals"
+        } else {
+            ""
+        }
+    );
     println!("  t_end    {}", s.t_end);
-    println!("  work     {} steps ({} rejected), {} field evaluations", s.steps, s.rejected, s.rhs_evals);
-    println!("  gamma(t_end) = [{:.15}, {:.15}, {:.15}]", s.final_state.gamma[0], s.final_state.gamma[1], s.final_state.gamma[2]);
-    println!("  M(t_end)     = [{:.15}, {:.15}, {:.15}]", s.final_state.m[0], s.final_state.m[1], s.final_state.m[2]);
+    println!(
+        "  work     {} steps ({} rejected), {} field evaluations",
+        s.steps, s.rejected, s.rhs_evals
+    );
+    println!(
+        "  gamma(t_end) = [{:.15}, {:.15}, {:.15}]",
+        s.final_state.gamma[0], s.final_state.gamma[1], s.final_state.gamma[2]
+    );
+    println!(
+        "  M(t_end)     = [{:.15}, {:.15}, {:.15}]",
+        s.final_state.m[0], s.final_state.m[1], s.final_state.m[2]
+    );
     println!("  integral        initial value   max relative drift");
     for name in INTEGRAL_NAMES {
         match s.integrals.get(name) {
-            Some(d) => println!("  {name:<4} {:>24.15e}   {:.3e}", d.initial, d.max_rel_drift),
+            Some(d) => println!(
+                "  {name:<4} {:>24.15e}   {:.3e}",
+                d.initial, d.max_rel_drift
+            ),
             None => println!("  {name:<4} {:>24}   (not an integral: I1 != I2)", "-"),
         }
     }
