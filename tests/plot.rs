@@ -1,6 +1,8 @@
 //! `routh plot` and `routh animate`, run as a user would: the files exist, are not empty, have
 //! the promised dimensions; bad input exits with code 2 and a message.
 
+use routh::case::Case;
+use routh::table::{simulate_full, Table};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -119,11 +121,11 @@ fn svg_figures_have_the_promised_size() {
 }
 
 #[test]
-fn plots_from_a_simulate_csv_and_compares_two() {
+fn plots_from_simulate_csv_files_and_compares_two() {
     let dir = scratch("csv");
-    let (fine, coarse) = (dir.join("fine.csv"), dir.join("coarse.csv"));
-    for (file, tol) in [(&fine, "1e-12"), (&coarse, "1e-6")] {
-        ok(&routh(&[
+    let (full, coarse) = (dir.join("full.csv"), dir.join("coarse.csv"));
+    let simulate = |file: &Path, tol: &str, extra: &[&str]| {
+        let mut args = vec![
             "simulate",
             "--t-end",
             "2",
@@ -135,37 +137,75 @@ fn plots_from_a_simulate_csv_and_compares_two() {
             tol,
             "--out",
             file.to_str().unwrap(),
-        ]));
-    }
+        ];
+        args.extend(extra);
+        ok(&routh(&args));
+    };
+    simulate(&full, "1e-12", &["--full"]);
+    simulate(&coarse, "1e-6", &[]);
+    let figures = dir.join("figures");
     let out = routh(&[
         "plot",
         "--csv",
-        fine.to_str().unwrap(),
+        full.to_str().unwrap(),
         "--compare",
         coarse.to_str().unwrap(),
         "--out",
-        dir.to_str().unwrap(),
+        figures.to_str().unwrap(),
         "--json",
     ]);
-    let stdout = ok(&out);
-    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
-    let files: Vec<&str> = v["files"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|f| f.as_str().unwrap())
-        .collect();
-    // The reduced CSV has no positions: the path figure is skipped, with the reason.
-    let has_full = files.iter().any(|f| f.ends_with("contact_path.png"));
-    let skipped = v["skipped"].as_array().unwrap();
-    assert!(
-        has_full || skipped[0].as_str().unwrap().contains("--full"),
-        "{stdout}"
-    );
-    let difference = dir.join("difference.png");
-    assert!(files.contains(&difference.to_str().unwrap()), "{stdout}");
-    let bytes = std::fs::read(&difference).unwrap();
-    assert_eq!(png_dimensions(&bytes), (WIDTH, HEIGHT));
+    let mut names = FIGURES.to_vec();
+    names.push("difference");
+    for file in written(&ok(&out), &figures, &names, "png") {
+        assert_eq!(
+            png_dimensions(&std::fs::read(&file).unwrap()),
+            (WIDTH, HEIGHT)
+        );
+    }
+    // A reduced CSV has no positions: the path figure is skipped, with the reason.
+    let out = routh(&[
+        "plot",
+        "--csv",
+        coarse.to_str().unwrap(),
+        "--out",
+        figures.to_str().unwrap(),
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&ok(&out)).unwrap();
+    assert_eq!(v["files"].as_array().unwrap().len(), 3);
+    assert!(v["skipped"][0].as_str().unwrap().contains("--full"), "{v}");
+}
+
+#[test]
+fn simulated_table_matches_the_simulate_full_csv() {
+    // `routh plot` without --csv simulates through routh::table::simulate_full; it must give
+    // the columns and values of `routh simulate --full` (the CSV prints shortest round-trip
+    // decimals, so equal values parse back exactly).
+    let dir = scratch("table");
+    let file = dir.join("full.csv");
+    ok(&routh(&[
+        "simulate",
+        "--full",
+        "--t-end",
+        "2",
+        "--samples",
+        "51",
+        "--out",
+        file.to_str().unwrap(),
+    ]));
+    let from_csv = Table::read_csv(&file).unwrap();
+    let case = Case::default_case().unwrap();
+    let simulated = simulate_full(&case, 2.0, 51).unwrap();
+    assert_eq!(from_csv.names(), simulated.names());
+    for name in simulated.names() {
+        let (a, b) = (
+            from_csv.column(name).unwrap(),
+            simulated.column(name).unwrap(),
+        );
+        for (x, y) in a.iter().zip(b) {
+            assert!(x == y || (x.is_nan() && y.is_nan()), "{name}: {x} vs {y}");
+        }
+    }
 }
 
 #[test]
