@@ -20,7 +20,7 @@
 use crate::error::{Result, RouthError};
 use crate::integrals::INTEGRAL_NAMES;
 use crate::output::write_atomic;
-use crate::table::{Table, STATE_COLUMN_NAMES};
+use crate::table::Table;
 use plotters::coord::combinators::IntoLogRange;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
@@ -229,10 +229,21 @@ pub fn gamma_plot(table: &Table) -> Result<Plot> {
     })
 }
 
-/// `|a - b|` over time for each state column (gamma, M, omega) present in both tables, which
-/// must be sampled at the same times; `labels` name a and b in the title (for example
-/// `("quadrature", "DOP853")`).
+/// The vectors compared by [`difference_plot`]: legend label and component columns.
+const COMPARED_VECTORS: [(&str, [&str; 3]); 3] = [
+    ("|Δγ| (dimensionless)", ["gamma1", "gamma2", "gamma3"]),
+    ("|ΔM| (kg m²/s)", ["M1", "M2", "M3"]),
+    ("|Δω| (rad/s)", ["omega1", "omega2", "omega3"]),
+];
+
+/// The Euclidean norm of the difference `a - b` over time of gamma, M and omega (each vector
+/// whose three columns are in both tables); the tables must be sampled at the same times.
+/// `labels` name a and b in the title (for example `("quadrature", "DOP853")`).
 pub fn difference_plot(a: &Table, b: &Table, labels: (&str, &str)) -> Result<Plot> {
+    let error = |message: &str| RouthError::Table {
+        origin: format!("{} and {}", a.origin, b.origin),
+        message: message.to_string(),
+    };
     let (ta, tb) = (a.column("t")?, b.column("t")?);
     let same_times = ta.len() == tb.len()
         && ta
@@ -240,41 +251,42 @@ pub fn difference_plot(a: &Table, b: &Table, labels: (&str, &str)) -> Result<Plo
             .zip(tb)
             .all(|(x, y)| (x - y).abs() <= 1e-9 * (1.0 + x.abs()));
     if !same_times {
-        return Err(RouthError::Table {
-            origin: format!("{} and {}", a.origin, b.origin),
-            message: "the two tables are not sampled at the same times".into(),
+        return Err(error("the two tables are not sampled at the same times"));
+    }
+    let mut series = Vec::new();
+    for (label, names) in COMPARED_VECTORS {
+        if !names.iter().all(|n| a.has(n) && b.has(n)) {
+            continue;
+        }
+        let mut squares = vec![0.0; ta.len()];
+        for name in names {
+            for ((sum, x), y) in squares.iter_mut().zip(a.column(name)?).zip(b.column(name)?) {
+                *sum += (x - y) * (x - y);
+            }
+        }
+        series.push(Series {
+            label: label.to_string(),
+            points: ta
+                .iter()
+                .zip(squares)
+                .map(|(&t, s)| (t, s.sqrt()))
+                .collect(),
         });
     }
-    let series = STATE_COLUMN_NAMES
-        .iter()
-        .filter(|name| a.has(name) && b.has(name))
-        .map(|name| {
-            let points = ta
-                .iter()
-                .zip(a.column(name)?.iter().zip(b.column(name)?))
-                .map(|(&t, (x, y))| (t, (x - y).abs()))
-                .collect();
-            Ok(Series {
-                label: name.to_string(),
-                points,
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
     if series.is_empty() {
-        return Err(RouthError::Table {
-            origin: format!("{} and {}", a.origin, b.origin),
-            message: "no common state columns to compare".into(),
-        });
+        return Err(error(
+            "no common columns gamma1..3, M1..3 or omega1..3 to compare",
+        ));
     }
     Ok(Plot {
         name: "difference",
         title: format!("Difference {} − {}", labels.0, labels.1),
         x_label: "time t (s)".into(),
-        y_label: "absolute difference (units of each column)".into(),
+        y_label: "norm of the difference".into(),
         series,
         log_y: true,
         equal_scale: false,
-        legend: SeriesLabelPosition::UpperLeft,
+        legend: SeriesLabelPosition::LowerRight,
     })
 }
 

@@ -107,17 +107,25 @@ pub fn report(written: &Written, json: bool) {
     }
 }
 
+/// The last component of a path, for titles.
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
 /// Run the command.
 pub fn run(args: Args) -> Result<()> {
     let table = args.source.table()?;
     let (mut plots, skipped) = standard_plots(&table)?;
     if let Some(path) = &args.compare {
         let other = Table::read_csv(path)?;
-        plots.push(difference_plot(
-            &other,
-            &table,
-            (&other.origin, &table.origin),
-        )?);
+        let this = match &args.source.csv {
+            Some(csv) => file_name(csv),
+            None => "DOP853".to_string(),
+        };
+        plots.push(difference_plot(&other, &table, (&file_name(path), &this))?);
     }
     create_dir(&args.out)?;
     let files = plots
