@@ -11,7 +11,7 @@
 //! squares over the samples), and the height of the centre of mass is `R + a gamma3`.
 
 use crate::error::{Result, RouthError};
-use crate::motion::rotate;
+use crate::motion::{rotate, FULL_COLUMN_NAMES};
 use crate::table::Table;
 use nalgebra::Quaternion;
 use serde::Serialize;
@@ -32,25 +32,12 @@ struct Frames {
     contact: Vec<[f64; 2]>,
 }
 
-/// The columns the animation reads, in the order of a frame.
-const COLUMNS: [&str; 11] = [
-    "t",
-    "gamma3",
-    "qw",
-    "qx",
-    "qy",
-    "qz",
-    "x",
-    "y",
-    "z",
-    "contact_x",
-    "contact_y",
-];
-
-/// The rows of `table` restricted to [`COLUMNS`], in that order.
+/// The rows of `table` restricted to the columns a frame needs: t, gamma3 and the columns of
+/// `routh simulate --full` ([`FULL_COLUMN_NAMES`]), in that order.
 fn frame_rows(table: &Table) -> Result<Vec<[f64; 11]>> {
-    let columns: Vec<&[f64]> = COLUMNS
-        .iter()
+    let columns: Vec<&[f64]> = ["t", "gamma3"]
+        .into_iter()
+        .chain(FULL_COLUMN_NAMES)
         .map(|n| table.column(n))
         .collect::<Result<_>>()?;
     Ok((0..table.len())
