@@ -182,6 +182,9 @@ mod tests {
             for (d, e) in down.iter().zip([0.0, 0.0, -1.0]) {
                 assert!((d - e).abs() < 1e-15, "{gamma:?} -> {down:?}");
             }
+            // The yaw rule psi = 0: the line of nodes is space x, so Q e3 has no x component.
+            let axis = rotate(&quaternion(&y), &[0.0, 0.0, 1.0]);
+            assert!(axis[0].abs() < 1e-15, "{gamma:?}: Q e3 = {axis:?}");
             let contact = full_columns(&body, &y);
             assert!((contact[6] - (body.radius + body.a * gamma[2])).abs() < 1e-15);
         }

@@ -85,8 +85,10 @@ fn stencil_times(n: usize, spacing: f64) -> Vec<f64> {
 /// is at the contact at each stencil centre: the fourth-order central difference of
 /// `X_com(t) + Q(t) r0`, r0 frozen at the centre.
 ///
-/// Error budget at H = 1e-3: truncation H^4 |p^(5)| / 30 ~ 1e-12 * 8^5 / 30 ~ 1e-9 for
-/// |omega| ~ 8; round-off 1e-16 * 10 / H ~ 1e-12; the dense output is smooth within a step.
+/// Error budget at H = 1e-3: truncation H^4 |p^(5)| / 30 ~ 1e-12 * 8^5 / 30 ~ 1e-9 at most
+/// for |omega| ~ 8; round-off 1e-16 * 10 / H ~ 1e-12. Measured: 3.5e-10, the same within 5%
+/// for H from 1e-4 to 1e-3, so it is the integrator's error (positions of ~10 m to rtol
+/// 1e-12, over steps of a few 1e-2), not the differencing.
 fn contact_velocity_residual(body: &Body, samples: &[Sample]) -> f64 {
     let mut worst: f64 = 0.0;
     for group in samples[1..].chunks(5) {
