@@ -18,3 +18,4 @@ pub mod state;
 pub use body::Body;
 pub use error::{Result, RouthError};
 pub use state::State;
+pub mod poisson;

@@ -13,12 +13,14 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {
-}
+enum Command {}
 
 /// Print `value` as pretty JSON on stdout.
 pub fn print_json<T: serde::Serialize>(value: &T) {
-    println!("{}", serde_json::to_string_pretty(value).expect("serialisable output"));
+    println!(
+        "{}",
+        serde_json::to_string_pretty(value).expect("serialisable output")
+    );
 }
 
 /// Parse the arguments, run the command, map errors to exit code 2.
