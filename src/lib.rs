@@ -19,3 +19,4 @@ pub use body::Body;
 pub use error::{Result, RouthError};
 pub use state::State;
 pub mod poisson;
+pub mod audit;

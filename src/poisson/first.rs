@@ -80,6 +80,10 @@ pub enum FirstForm {
     /// The matrix form (p-bv) with its blocks Gamma_alpha, Gamma_beta, M_alpha, M_beta as printed
     /// (the entry `--` of Gamma_beta read as a single minus sign).
     Matrix,
+    /// The matrix form (p-bv) corrected: in M_beta the printed `m sigma R (R gamma3 + a)/g^2`,
+    /// `m sigma gamma2 R^2/g^2`, `-m sigma gamma1 R^2/g^2` lose the factor `m R` (sigma already
+    /// contains it), as in the brackets (p-br).
+    MatrixCorrected,
 }
 
 /// The first Poisson bracket: (p-br) or (p-bv) with the functions alpha and beta.
@@ -106,12 +110,9 @@ impl FirstBracket {
         }
     }
 
-    /// The same functions alpha, beta in the matrix form (p-bv).
-    pub fn matrix_form(self) -> Self {
-        FirstBracket {
-            form: FirstForm::Matrix,
-            ..self
-        }
+    /// The same functions alpha, beta in another printed form.
+    pub fn with_form(self, form: FirstForm) -> Self {
+        FirstBracket { form, ..self }
     }
 
     /// The bivector P_f of the conformally Hamiltonian section: (p-bv) at `alpha = -R`,
@@ -190,7 +191,7 @@ impl Bivector for FirstBracket {
                     ],
                 )
             }
-            FirstForm::Matrix => {
+            FirstForm::Matrix | FirstForm::MatrixCorrected => {
                 let gamma_alpha = [
                     [g1 * g2 * q, g2 * g2 * q, -g2],
                     [-g1 * g1 * q, -g1 * g2 * q, g1],
@@ -202,7 +203,11 @@ impl Bivector for FirstBracket {
                     [g2, -g1, zero],
                 ];
                 let m_alpha = [u * q, -m[1], m[0]];
-                let msr = sigma * (b.m * b.radius) / (g * g);
+                let printed_factor = match self.form {
+                    FirstForm::Matrix => b.m * b.radius,
+                    _ => 1.0,
+                };
+                let msr = sigma * printed_factor / (g * g);
                 let m_beta = [
                     m[2] - t * u - msr * h,
                     msr * b.radius * g2,

@@ -80,12 +80,14 @@ pub fn spherical(y: &[f64; 6]) -> [f64; 4] {
     [phi, theta, -y[5], -phi.cos() * y[3] + phi.sin() * y[4]]
 }
 
-/// The functions `[A, B, C, V](theta)` of (int-sph2) as printed, for constant alpha and the
-/// beta of the bracket evaluated at `gamma3 = cos theta` on the unit sphere.
-pub fn abcv(bracket: &FirstBracket, theta: f64) -> [f64; 4] {
+/// The functions `[A, B, C, V](theta)` of (int-sph2) as printed, with alpha and beta of the
+/// bracket evaluated at the point `(phi, theta)` of the unit sphere (constant alpha and the
+/// beta of (cond) depend on theta only).
+pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4]) -> [f64; 4] {
     let body = &bracket.body;
+    let [phi, theta, _, _] = *sph;
     let (st, ct) = theta.sin_cos();
-    let gamma = [st, 0.0, ct];
+    let gamma = [phi.sin() * st, phi.cos() * st, ct];
     let (alpha, beta) = bracket.alpha_beta(&gamma);
     let (m, rr, a) = (body.m, body.radius, body.a);
     let h2 = a * a + 2.0 * a * rr * ct + rr * rr * ct * ct;
@@ -102,8 +104,8 @@ pub fn abcv(bracket: &FirstBracket, theta: f64) -> [f64; 4] {
 /// (int-sph2): `H1 = A p_phi^2 + B p_theta^2 + b C p_phi + b^2 V` at `(theta, p_phi, p_theta)`
 /// and the Jellett value b.
 pub fn energy_spherical(bracket: &FirstBracket, sph: &[f64; 4], b: f64) -> f64 {
-    let [_, theta, p_phi, p_theta] = *sph;
-    let [a, bb, c, v] = abcv(bracket, theta);
+    let [_, _, p_phi, p_theta] = *sph;
+    let [a, bb, c, v] = abcv(bracket, sph);
     a * p_phi * p_phi + bb * p_theta * p_theta + b * c * p_phi + b * b * v
 }
 
@@ -114,13 +116,13 @@ pub fn routh_spherical(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
 
 /// The rate `dtheta/dt = 2 B(theta) p_theta` of the theta quadrature.
 pub fn theta_rate(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
-    2.0 * abcv(bracket, sph[1])[1] * sph[3]
+    2.0 * abcv(bracket, sph)[1] * sph[3]
 }
 
 /// The square of the theta quadrature's right-hand side,
 /// `4 B (E - A c^2 - b c C - b^2 V)` with `E = H1`, `c = -H^2/(alpha I1)`.
-pub fn theta_rate_squared(bracket: &FirstBracket, theta: f64, e: f64, c: f64, b: f64) -> f64 {
-    let [a, bb, cc, v] = abcv(bracket, theta);
+pub fn theta_rate_squared(bracket: &FirstBracket, sph: &[f64; 4], e: f64, c: f64, b: f64) -> f64 {
+    let [a, bb, cc, v] = abcv(bracket, sph);
     4.0 * bb * (e - a * c * c - b * c * cc - b * b * v)
 }
 

@@ -1,0 +1,375 @@
+//! The claims of sections 2.1 to 4 about the Poisson brackets: (p-br), (p-bv), (cond),
+//! (cond2), (g-eq1), (g-eq2), (p-map), (int-sph), (int-sph2), P_f, (p-bv2), (g-eq3), P'',
+//! (eq-cf). See [`super::claims`] for the points, the residuals and the threshold.
+
+use super::checks::{self, Function, Term};
+use super::claims::{
+    body, free_body, generic_first, of, Claim, Outcome, Sample, CONSTANT_ALPHA, GENERIC_BETA,
+    h4, field_of,
+};
+use crate::differential::Dual6;
+use crate::integrals::{energy, jellett, quadratic_integral, quadratic_integral_free, routh_integral};
+use crate::poisson::first::{g_eq1_coefficients, g_eq2_coefficients, Alpha, Beta, FirstBracket, FirstForm};
+use crate::poisson::lie_poisson::LiePoisson;
+use crate::poisson::reduction::{
+    energy_spherical, integrals_in_l, pushforward, routh_spherical, spherical, theta_rate,
+    theta_rate_squared, PoissonMap,
+};
+use crate::poisson::second::{g_eq3_coefficients, SecondAlphas, SecondBracket};
+use crate::poisson::Bivector;
+
+/// The polar angle `theta = arccos(gamma3/|gamma|)` of (sph-coord).
+fn polar_angle<D: crate::scalar::Scalar>(x: &[D; 6]) -> D {
+    (x[2] / crate::integrals::geometric(x).sqrt()).acos()
+}
+
+/// gamma3 as a function.
+fn gamma3(x: &[Dual6; 6]) -> Dual6 {
+    x[2]
+}
+
+/// gamma1/gamma2 as a function.
+fn ratio(x: &[Dual6; 6]) -> Dual6 {
+    x[0] / x[1]
+}
+
+/// The first bracket under (cond) with the constant alpha.
+pub fn cond_bracket(body: crate::Body) -> FirstBracket {
+    FirstBracket::new(body, CONSTANT_ALPHA, Beta::Cond)
+}
+
+/// The first bracket under (cond2) with the constant alpha.
+pub fn cond2_bracket(body: crate::Body) -> FirstBracket {
+    FirstBracket::new(body, CONSTANT_ALPHA, Beta::Cond2)
+}
+
+/// The generic P' of (p-bv2).
+pub fn generic_second(body: crate::Body) -> SecondBracket {
+    SecondBracket { body, alphas: SecondAlphas::Generic([0.9, 0.6, -0.7]) }
+}
+
+/// The printed rank-4 solution P' of (p-bv2).
+pub fn printed_second(body: crate::Body) -> SecondBracket {
+    SecondBracket { body, alphas: SecondAlphas::Printed }
+}
+
+/// The third bracket P''.
+pub fn third(body: crate::Body) -> SecondBracket {
+    SecondBracket { body, alphas: SecondAlphas::Third([0.9, -0.7]) }
+}
+
+/// The (g-eq1) check: `X = g1 P dH1 + g2 P dH2` with the bracket `p`, the free field and
+/// coefficients `coef(x) -> [g1, g2]`.
+pub fn g_eq1_defect<P: Bivector>(p: &P, coef: &dyn Fn(&[f64; 6]) -> [f64; 2], points: &[[f64; 6]]) -> f64 {
+    let b = free_body();
+    let c1 = |x: &[f64; 6]| coef(x)[0];
+    let c2 = |x: &[f64; 6]| coef(x)[1];
+    let terms: [Term; 2] = [(&c1, &of(b, energy)), (&c2, &of(b, quadratic_integral_free))];
+    checks::decomposition(&field_of(b), p, &terms, points)
+}
+
+/// The claims about the brackets, in the order of the paper.
+pub fn claims() -> Vec<Claim> {
+    vec![
+        Claim {
+            id: "p-br.jacobi",
+            label: "p-br",
+            statement: "(p-br) is a Poisson bracket for any alpha(gamma1/gamma2), beta(gamma3): [P, P] = 0",
+            check: |s| {
+                let p = generic_first(body());
+                Outcome::checked(checks::jacobi(&p, &s.points(&p.body)), "max |[P,P]^{ijk}|/(2|P||dP|), alpha = 0.7 + 0.2t - 0.1t^2 (t = gamma1/gamma2), beta = 1.1 - 0.3 gamma3 + 0.4 gamma3^2")
+            },
+        },
+        Claim {
+            id: "p-bv.matrix",
+            label: "p-bv",
+            statement: "the matrix (p-bv) is the bivector of the brackets (p-br)",
+            check: |s| {
+                let p = generic_first(body());
+                Outcome::checked(checks::same_bivector(&p.with_form(FirstForm::Matrix), &p, &s.points(&p.body)), "max |P_(p-bv) - P_(p-br)|/|P| (Frobenius); Gamma_beta's `--` read as `-`; the Gamma blocks and M_alpha agree, M_beta's sigma terms carry an extra factor m R")
+            },
+        },
+        Claim {
+            id: "p-bv.matrix.corrected",
+            label: "p-bv",
+            statement: "the matrix (p-bv) with m sigma R -> sigma in M_beta is the bivector of (p-br)",
+            check: |s| {
+                let p = generic_first(body());
+                Outcome::checked(checks::same_bivector(&p.with_form(FirstForm::MatrixCorrected), &p, &s.points(&p.body)), "M_beta = (0, M3 - gamma3 u/s - sigma (R gamma3 + a)/g^2, sigma R gamma2/g^2; *, 0, -sigma R gamma1/g^2): the printed entries divided by m R; this bivector is (p-br), Poisson by p-br.jacobi")
+            },
+        },
+        Claim {
+            id: "p-br.casimirs",
+            label: "p-br",
+            statement: "H4 = (gamma, gamma) and H3 = (M, r) are Casimirs of (p-br)",
+            check: |s| {
+                let p = generic_first(body());
+                Outcome::checked(checks::casimirs(&p, &[&h4, &of(p.body, jellett)], &s.points(&p.body)), "max |P dC|/(|P||dC|)")
+            },
+        },
+        Claim {
+            id: "p-br.involution",
+            label: "p-br",
+            statement: "{H1, H2} = 0 for any alpha, beta",
+            check: |s| {
+                let b = free_body();
+                let p = generic_first(b);
+                Outcome::checked(checks::involution(&p, &of(b, energy), &of(b, quadratic_integral_free), &s.points(&b)), "max |{H1,H2}|/(|dH1||P||dH2|), H1, H2 of (int), G = 0")
+            },
+        },
+        Claim {
+            id: "p-br.rank",
+            label: "p-br",
+            statement: "in the generic case rank P = 4",
+            check: |s| {
+                let p = generic_first(body());
+                Outcome::checked(checks::rank(&p, 4, &s.points(&p.body)), "max s5/s1 of the singular values (1 if the rank is below 4)")
+            },
+        },
+        Claim {
+            id: "p-br.degenerate",
+            label: "p-br",
+            statement: "at alpha = 0 gamma3 is an extra Casimir, at beta = 0 gamma1/gamma2 is (the printed pairing)",
+            check: |s| {
+                let b = body();
+                let pts = s.points(&b);
+                let at_alpha0 = checks::casimirs(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), &[&gamma3], &pts);
+                let at_beta0 = checks::casimirs(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&ratio], &pts);
+                Outcome::checked(at_alpha0.max(at_beta0), format!("max |P dC|/(|P||dC|): alpha = 0, C = gamma3: {at_alpha0:.1e}; beta = 0, C = gamma1/gamma2: {at_beta0:.1e}"))
+            },
+        },
+        Claim {
+            id: "p-br.degenerate.corrected",
+            label: "p-br",
+            statement: "at alpha = 0 gamma1/gamma2 is an extra Casimir, at beta = 0 gamma3 is (the pairing swapped)",
+            check: |s| {
+                let b = body();
+                let pts = s.points(&b);
+                let at_alpha0 = checks::casimirs(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), &[&ratio, &h4, &of(b, jellett)], &pts);
+                let at_beta0 = checks::casimirs(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&gamma3, &h4, &of(b, jellett)], &pts);
+                let ranks = checks::rank(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), 2, &pts)
+                    .max(checks::rank(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), 2, &pts));
+                Outcome::checked(at_alpha0.max(at_beta0).max(ranks), format!("max |P dC|/(|P||dC|) with C = H4, H3 and the extra Casimir: alpha = 0, C = gamma1/gamma2: {at_alpha0:.1e}; beta = 0, C = gamma3: {at_beta0:.1e}; rank 2 in both cases (s3/s1 <= {ranks:.1e})"))
+            },
+        },
+        Claim {
+            id: "g-eq1",
+            label: "g-eq1",
+            statement: "under (cond) X = g1 P dH1 + g2 P dH2 with the printed g1, g2",
+            check: |s| {
+                let p = cond_bracket(free_body());
+                let alpha = CONSTANT_ALPHA.0[0];
+                let coef = |x: &[f64; 6]| g_eq1_coefficients(&p.body, alpha, &[x[0], x[1], x[2]]);
+                Outcome::checked(g_eq1_defect(&p, &coef, &s.points(&p.body)), "max |X - g1 P dH1 - g2 P dH2|/|X|, G = 0, alpha = 0.8")
+            },
+        },
+        Claim {
+            id: "cond2.compatible",
+            label: "cond2",
+            statement: "under (cond2) P is compatible with the Lie-Poisson P0 of e*(3): [P0, P] = 0",
+            check: |s| {
+                let p = cond2_bracket(body());
+                Outcome::checked(checks::compatibility(&LiePoisson, &p, &s.points(&p.body)), "max |[P0,P]^{ijk}|/(|P0||dP| + |P||dP0|), alpha = 0.8; (cond2) read as beta = alpha g (I1 R gamma3 - I3 (R gamma3 + a))/(R ((I1 - I3) gamma3 + a m (r, gamma)))")
+            },
+        },
+        Claim {
+            id: "g-eq2",
+            label: "g-eq2",
+            statement: "under (cond2) X = g^1 P dH1 + g^2 P dK (K = g omega3) with the printed g^1, g^2",
+            check: |s| {
+                let p = cond2_bracket(free_body());
+                let coef = |x: &[f64; 6]| g_eq2_coefficients(&p, x);
+                Outcome::checked(g_eq2_defect(&p, &coef, &s.points(&p.body)), "max |X - g^1 P dH1 - g^2 P dK|/|X|, G = 0, alpha = 0.8")
+            },
+        },
+        Claim {
+            id: "p-map.e3",
+            label: "p-map",
+            statement: "the change of momenta (p-map) takes (p-br) to the Lie-Poisson bracket (e3) of e*(3)",
+            check: |s| {
+                let map = PoissonMap { bracket: generic_first(body()), c: 0.0 };
+                Outcome::checked(p_map_defect(&map, &s.points(&map.bracket.body)), "max |J P J^T - P0(gamma, L)|/|P0| (J the Jacobian of (gamma, M) -> (gamma, L)), generic alpha, beta, c = 0; the unbalanced parenthesis read as gamma_i gamma3 (R u - b I1^{-1} (I1 + m h^2))")
+            },
+        },
+        Claim {
+            id: "int-sph",
+            label: "int-sph",
+            statement: "at c = (gamma, L) = 0 under (cond) H1 and H2 are the printed polynomials in L",
+            check: |s| {
+                let p = cond_bracket(free_body());
+                let map = PoissonMap { bracket: p, c: 0.0 };
+                Outcome::checked(int_sph_defect(&map, &integrals_in_l, &s.points(&p.body)), "max |H(x) - H_printed(L(x))|/|H| over H1, H2 of (int), G = 0, alpha = 0.8")
+            },
+        },
+        Claim {
+            id: "int-sph2",
+            label: "int-sph2",
+            statement: "in (sph-coord) H1 = A p_phi^2 + B p_theta^2 + b C p_phi + b^2 V and K = -alpha I1 p_phi",
+            check: |s| {
+                let p = cond_bracket(free_body());
+                let map = PoissonMap { bracket: p, c: 0.0 };
+                Outcome::checked(int_sph2_defect(&map, &energy_spherical, &s.points(&p.body)), "max relative |H - H_printed| over H1 and K, G = 0, alpha = 0.8, c = 0")
+            },
+        },
+        Claim {
+            id: "theta-quadrature",
+            label: "int-sph2",
+            statement: "along P dH1: dtheta/dt = 2 B p_theta = 2 sqrt(B (E - A c^2 - b c C - b^2 V)), c = -K/(alpha I1)",
+            check: |s| {
+                let p = cond_bracket(free_body());
+                let map = PoissonMap { bracket: p, c: 0.0 };
+                Outcome::checked(theta_defect(&map, &theta_rate, &s.points(&p.body)), "max of |{theta, H1} - 2 B p_theta|/|{theta, H1}| and the relative defect of the squared equation, G = 0")
+            },
+        },
+        Claim {
+            id: "P_f.conformal",
+            label: "cham-vp",
+            statement: "at b = 0, with alpha = -R, beta = -g (r, I r)/(gamma, I r): X = -1/(2 beta) P_f dH1",
+            check: |s| {
+                let p = FirstBracket::conformal(free_body());
+                let coef = |x: &[f64; 6]| -0.5 / p.alpha_beta(&[x[0], x[1], x[2]]).1;
+                let terms: [Term; 1] = [(&coef, &of(p.body, energy))];
+                Outcome::checked(checks::decomposition(&field_of(p.body), &p, &terms, &s.points_jellett_zero(&p.body)), "max |X + P_f dH1/(2 beta)|/|X| at (M, r) = 0, G = 0")
+            },
+        },
+        Claim {
+            id: "p-bv2.involution",
+            label: "p-bv2",
+            statement: "for any alpha_i(gamma) P' has the Casimirs H4, K = g omega3 and {H1, H3}' = 0",
+            check: |s| {
+                let p = generic_second(body());
+                let b = free_body();
+                let pts = s.points(&b);
+                let cas = checks::casimirs(&p, &[&h4, &of(b, routh_integral)], &pts);
+                let inv = checks::involution(&p, &of(b, energy), &of(b, jellett), &pts);
+                Outcome::checked(cas.max(inv), format!("Casimirs max |P'dC|/(|P'||dC|) = {cas:.1e}; max |{{H1,H3}}'|/(|dH1||P'||dH3|) = {inv:.1e}; alpha1 = 0.9 + gamma1 gamma3, alpha2 = 0.6 - gamma2^2, alpha3 = -0.7 + gamma1 gamma2, G = 0"))
+            },
+        },
+        Claim {
+            id: "p-bv2.jacobi",
+            label: "p-bv2",
+            statement: "with the printed alpha_1, alpha_2, alpha_3, [P', P'] = 0",
+            check: |s| {
+                let p = printed_second(body());
+                Outcome::checked(checks::jacobi(&p, &s.points(&p.body)), "max |[P',P']^{ijk}|/(2|P'||dP'|)")
+            },
+        },
+        Claim {
+            id: "P2.rank",
+            label: "p-bv2",
+            statement: "the printed solution P' has rank 4",
+            check: |s| {
+                let p = printed_second(body());
+                Outcome::checked(checks::rank(&p, 4, &s.points(&p.body)), "max s5/s1 (1 if the rank is below 4)")
+            },
+        },
+        Claim {
+            id: "g-eq3",
+            label: "g-eq3",
+            statement: "X = g'1 P' dH1 + g'2 P' d(H3^2) with the printed g'1, g'2",
+            check: |s| {
+                let p = printed_second(free_body());
+                let coef = |x: &[f64; 6]| g_eq3_coefficients(&p, &[x[0], x[1], x[2]]);
+                Outcome::checked(g_eq3_defect(&p, &coef, &s.points(&p.body)), "max |X - g'1 P'dH1 - g'2 P'd(H3^2)|/|X|, G = 0 (dH_3^2 read as d(H3^2))")
+            },
+        },
+        Claim {
+            id: "P3.rank",
+            label: "p-bv2",
+            statement: "P'' = P' at gamma1 alpha1 + gamma2 alpha2 = 0 has rank 3 and the Casimir H4",
+            check: |s| {
+                let p = third(body());
+                let pts = s.points(&p.body);
+                let rank = checks::rank(&p, 3, &pts);
+                let cas = checks::casimirs(&p, &[&h4], &pts);
+                Outcome::checked(rank.max(cas), format!("rank test: {rank:.1e} (max s4/s1, 1 if the rank is below 3); H4 Casimir: {cas:.1e}"))
+            },
+        },
+        Claim {
+            id: "eq-cf",
+            label: "eq-cf",
+            statement: "X = g P dF(H1, H2, H3, H4) has no solution with a linear-in-momenta Poisson P of (geom-eq)",
+            check: |_| Outcome {
+                residual: None,
+                note: "a non-existence statement over all linear-in-M bivectors and all functions F: it needs the symbolic solution of (eq-cf) with (geom-eq), not an evaluation at points".into(),
+            },
+        },
+    ]
+}
+
+/// The (g-eq2) check: `X = g^1 P dH1 + g^2 P dK` with the free field.
+pub fn g_eq2_defect<P: Bivector>(p: &P, coef: &dyn Fn(&[f64; 6]) -> [f64; 2], points: &[[f64; 6]]) -> f64 {
+    let b = free_body();
+    let c1 = |x: &[f64; 6]| coef(x)[0];
+    let c2 = |x: &[f64; 6]| coef(x)[1];
+    let terms: [Term; 2] = [(&c1, &of(b, energy)), (&c2, &of(b, routh_integral))];
+    checks::decomposition(&field_of(b), p, &terms, points)
+}
+
+/// The (g-eq3) check: `X = g'1 P' dH1 + g'2 P' d(H3^2)` with the free field.
+pub fn g_eq3_defect<P: Bivector>(p: &P, coef: &dyn Fn(&[f64; 6]) -> [f64; 2], points: &[[f64; 6]]) -> f64 {
+    let b = free_body();
+    let c1 = |x: &[f64; 6]| coef(x)[0];
+    let c2 = |x: &[f64; 6]| coef(x)[1];
+    let h3_squared = |x: &[Dual6; 6]| {
+        let h3 = jellett(&b, x);
+        h3 * h3
+    };
+    let terms: [Term; 2] = [(&c1, &of(b, energy)), (&c2, &h3_squared)];
+    checks::decomposition(&field_of(b), p, &terms, points)
+}
+
+/// The (p-map) check: `max |J P J^T - P0(gamma, L)| / |P0|`.
+pub fn p_map_defect(map: &PoissonMap, points: &[[f64; 6]]) -> f64 {
+    checks::worst(points, |x| {
+        let pushed = pushforward(&map.bracket, |y| map.image(y), x);
+        checks::matrix_distance(&pushed, &LiePoisson.entries(&map.image(x)))
+    })
+}
+
+/// Integrals in the variables `(gamma, L)` and the Jellett value b, as in (int-sph).
+pub type InL = dyn Fn(&FirstBracket, &[f64; 6], f64) -> [f64; 2];
+
+/// The (int-sph) check: `H1(x)`, `H2(x)` of (int) against `integrals(L(x), b)`.
+pub fn int_sph_defect(map: &PoissonMap, integrals: &InL, points: &[[f64; 6]]) -> f64 {
+    let b = map.bracket.body;
+    let printed = |k: usize| move |x: &[f64; 6]| integrals(&map.bracket, &map.image(x), jellett(&b, x))[k];
+    let h1 = |x: &[f64; 6]| energy(&b, x);
+    let h2 = |x: &[f64; 6]| quadratic_integral_free(&b, x);
+    checks::identity(&h1, &printed(0), points).max(checks::identity(&h2, &printed(1), points))
+}
+
+/// The energy in the spherical variables `(phi, theta, p_phi, p_theta)` and b, as in (int-sph2).
+pub type InSpherical = dyn Fn(&FirstBracket, &[f64; 4], f64) -> f64;
+
+/// The (int-sph2) check: `H1(x)` against `energy(sph(L(x)), b)` and `K(x)` against
+/// `-alpha I1 p_phi`.
+pub fn int_sph2_defect(map: &PoissonMap, energy_sph: &InSpherical, points: &[[f64; 6]]) -> f64 {
+    let b = map.bracket.body;
+    let sph = |x: &[f64; 6]| spherical(&map.image(x));
+    let h1 = |x: &[f64; 6]| energy(&b, x);
+    let h1_printed = |x: &[f64; 6]| energy_sph(&map.bracket, &sph(x), jellett(&b, x));
+    let k = |x: &[f64; 6]| routh_integral(&b, x);
+    let k_printed = |x: &[f64; 6]| routh_spherical(&map.bracket, &sph(x));
+    checks::identity(&h1, &h1_printed, points).max(checks::identity(&k, &k_printed, points))
+}
+
+/// A rate `dtheta/dt` as a function of the spherical variables, as in the theta quadrature.
+pub type ThetaRate = dyn Fn(&FirstBracket, &[f64; 4]) -> f64;
+
+/// The theta-quadrature check: `{theta, H1} = rate(sph)` along the Hamiltonian field P dH1,
+/// and `rate^2 = 4 B (E - A c^2 - b c C - b^2 V)` with `E = H1`, `c = -K/(alpha I1)`.
+pub fn theta_defect(map: &PoissonMap, rate: &ThetaRate, points: &[[f64; 6]]) -> f64 {
+    let b = map.bracket.body;
+    let alpha = map.bracket.alpha.0[0];
+    let along = |x: &[f64; 6]| {
+        crate::poisson::hamiltonian::bracket(&map.bracket, polar_angle::<Dual6>, of(b, energy), x).0
+    };
+    let printed = |x: &[f64; 6]| rate(&map.bracket, &spherical(&map.image(x)));
+    let squared = |x: &[f64; 6]| printed(x).powi(2);
+    let quadrature = |x: &[f64; 6]| {
+        let c = -routh_integral(&b, x) / (alpha * b.i1);
+        theta_rate_squared(&map.bracket, &spherical(&map.image(x)), energy(&b, x), c, jellett(&b, x))
+    };
+    checks::identity(&along, &printed, points).max(checks::identity(&squared, &quadrature, points))
+}

@@ -1,0 +1,140 @@
+//! The generic checks of the claims audit. Each takes the formula under test as a parameter
+//! (a bivector, a field, an integral, coefficients), evaluates it at the given points and
+//! returns the largest relative residual; the claims registry applies them to the printed
+//! formulas, and the negative controls of the tests apply the same functions to perturbed ones.
+//!
+//! Every residual is relative, so that round-off gives about 1e-16 whatever the units:
+//! the scale of each is stated with the function.
+
+use crate::differential::{gradient, Dual6};
+use crate::poisson::hamiltonian::{
+    bracket, casimir_defect, decomposition_defect, hamiltonian_field, singular_values,
+    RANK_TOLERANCE,
+};
+use crate::poisson::schouten::{compatibility_defect, jacobi_defect};
+use crate::poisson::{norm, Bivector, Matrix6};
+
+/// A function on the phase space, written for dual numbers (gradients by AD).
+pub type Function<'a> = &'a dyn Fn(&[Dual6; 6]) -> Dual6;
+
+/// The largest value of `f` over the points (0 for no points); a NaN counts as infinite, so
+/// that a formula evaluated at its singular set can never pass.
+pub fn worst(points: &[[f64; 6]], f: impl Fn(&[f64; 6]) -> f64) -> f64 {
+    points
+        .iter()
+        .map(|x| {
+            let v = f(x);
+            if v.is_nan() {
+                f64::INFINITY
+            } else {
+                v
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Conservation: `max |X(H)| / (|dH| |X|)` over the points and the integrals.
+pub fn conservation(
+    field: &dyn Fn(&[f64; 6]) -> [f64; 6],
+    integrals: &[Function],
+    points: &[[f64; 6]],
+) -> f64 {
+    worst(points, |x| {
+        let v = field(x);
+        integrals
+            .iter()
+            .map(|h| {
+                let dh = gradient(h, x).1;
+                let rate: f64 = dh.iter().zip(&v).map(|(a, b)| a * b).sum();
+                rate.abs() / (norm(&dh) * norm(&v)).max(f64::MIN_POSITIVE)
+            })
+            .fold(0.0, f64::max)
+    })
+}
+
+/// A pointwise identity `lhs = rhs`: `max |lhs - rhs| / max(|lhs|, |rhs|)`.
+pub fn identity(
+    lhs: &dyn Fn(&[f64; 6]) -> f64,
+    rhs: &dyn Fn(&[f64; 6]) -> f64,
+    points: &[[f64; 6]],
+) -> f64 {
+    worst(points, |x| {
+        let (l, r) = (lhs(x), rhs(x));
+        (l - r).abs() / l.abs().max(r.abs()).max(f64::MIN_POSITIVE)
+    })
+}
+
+/// Equality of two bivectors: `max |P - Q| / max(|P|, |Q|)` (Frobenius norms).
+pub fn same_bivector<P: Bivector, Q: Bivector>(p: &P, q: &Q, points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| matrix_distance(&p.entries(x), &q.entries(x)))
+}
+
+/// `|A - B| / max(|A|, |B|)` for two 6x6 matrices (Frobenius norms).
+pub fn matrix_distance(a: &Matrix6<f64>, b: &Matrix6<f64>) -> f64 {
+    let diff: Vec<f64> = a.iter().flatten().zip(b.iter().flatten()).map(|(u, v)| u - v).collect();
+    let scale = norm(a.iter().flatten()).max(norm(b.iter().flatten()));
+    norm(&diff) / scale.max(f64::MIN_POSITIVE)
+}
+
+/// The Jacobi identity `[P, P] = 0` of (geom-eq): the largest relative Schouten defect
+/// `max_ijk |[P, P]^{ijk}| / (2 |P| |dP|)`.
+pub fn jacobi<P: Bivector>(p: &P, points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| jacobi_defect(p, x))
+}
+
+/// Compatibility `[P, Q] = 0`: `max_ijk |[P, Q]^{ijk}| / (|P| |dQ| + |Q| |dP|)`.
+pub fn compatibility<P: Bivector, Q: Bivector>(p: &P, q: &Q, points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| compatibility_defect(p, q, x))
+}
+
+/// Casimirs `P dC = 0` of (geom-eq): `max |P dC| / (|P| |dC|)` over points and functions.
+pub fn casimirs<P: Bivector>(p: &P, functions: &[Function], points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| {
+        functions
+            .iter()
+            .map(|c| casimir_defect(p, c, x))
+            .fold(0.0, f64::max)
+    })
+}
+
+/// Involution `{F, G} = 0` of (geom-eq): `max |{F, G}| / (|dF| |P| |dG|)`.
+pub fn involution<P: Bivector>(p: &P, f: Function, g: Function, points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| {
+        let (value, scale) = bracket(p, f, g, x);
+        value.abs() / scale.max(f64::MIN_POSITIVE)
+    })
+}
+
+/// Rank `rank P = r`: the largest `s_{r+1} / s_1` (singular values, largest first) when the
+/// numerical rank (tolerance [`RANK_TOLERANCE`]) is r at every point; 1 when the rank is
+/// below r somewhere (`s_r / s_1 <= RANK_TOLERANCE`), which no round-off can produce.
+pub fn rank<P: Bivector>(p: &P, r: usize, points: &[[f64; 6]]) -> f64 {
+    worst(points, |x| {
+        let s = singular_values(p, x);
+        if r > 0 && s[r - 1] <= RANK_TOLERANCE * s[0] {
+            1.0
+        } else {
+            s.get(r).map_or(0.0, |v| v / s[0])
+        }
+    })
+}
+
+/// A term `c(x) P dH` of a decomposition (ob-vp): the coefficient and the function H.
+pub type Term<'a> = (&'a dyn Fn(&[f64; 6]) -> f64, Function<'a>);
+
+/// A decomposition `X = sum_a c_a P dH_a` with given coefficients (ob-vp), (g-eq1), (g-eq2),
+/// (g-eq3), (cham-vp): `max |X - sum_a c_a P dH_a| / |X|`.
+pub fn decomposition<P: Bivector>(
+    field: &dyn Fn(&[f64; 6]) -> [f64; 6],
+    p: &P,
+    terms: &[Term],
+    points: &[[f64; 6]],
+) -> f64 {
+    worst(points, |x| {
+        let fitted: Vec<(f64, [f64; 6])> = terms
+            .iter()
+            .map(|(c, h)| (c(x), hamiltonian_field(p, h, x)))
+            .collect();
+        decomposition_defect(&field(x), &fitted)
+    })
+}
