@@ -71,7 +71,12 @@ pub fn same_bivector<P: Bivector, Q: Bivector>(p: &P, q: &Q, points: &[[f64; 6]]
 
 /// `|A - B| / max(|A|, |B|)` for two 6x6 matrices (Frobenius norms).
 pub fn matrix_distance(a: &Matrix6<f64>, b: &Matrix6<f64>) -> f64 {
-    let diff: Vec<f64> = a.iter().flatten().zip(b.iter().flatten()).map(|(u, v)| u - v).collect();
+    let diff: Vec<f64> = a
+        .iter()
+        .flatten()
+        .zip(b.iter().flatten())
+        .map(|(u, v)| u - v)
+        .collect();
     let scale = norm(a.iter().flatten()).max(norm(b.iter().flatten()));
     norm(&diff) / scale.max(f64::MIN_POSITIVE)
 }
@@ -119,21 +124,23 @@ pub fn rank<P: Bivector>(p: &P, r: usize, points: &[[f64; 6]]) -> f64 {
     })
 }
 
-/// A term `c(x) P dH` of a decomposition (ob-vp): the coefficient and the function H.
-pub type Term<'a> = (&'a dyn Fn(&[f64; 6]) -> f64, Function<'a>);
+/// Coefficients `c_a(x)` of a decomposition, one per Hamiltonian.
+pub type Coefficients<'a> = &'a dyn Fn(&[f64; 6]) -> Vec<f64>;
 
 /// A decomposition `X = sum_a c_a P dH_a` with given coefficients (ob-vp), (g-eq1), (g-eq2),
 /// (g-eq3), (cham-vp): `max |X - sum_a c_a P dH_a| / |X|`.
 pub fn decomposition<P: Bivector>(
     field: &dyn Fn(&[f64; 6]) -> [f64; 6],
     p: &P,
-    terms: &[Term],
+    coefficients: Coefficients,
+    hamiltonians: &[Function],
     points: &[[f64; 6]],
 ) -> f64 {
     worst(points, |x| {
-        let fitted: Vec<(f64, [f64; 6])> = terms
-            .iter()
-            .map(|(c, h)| (c(x), hamiltonian_field(p, h, x)))
+        let fitted: Vec<(f64, [f64; 6])> = coefficients(x)
+            .into_iter()
+            .zip(hamiltonians)
+            .map(|(c, h)| (c, hamiltonian_field(p, h, x)))
             .collect();
         decomposition_defect(&field(x), &fitted)
     })

@@ -6,13 +6,24 @@ use std::fmt::Write;
 
 /// The residual as printed: scientific notation, or `-` when not checked.
 fn residual_text(v: &Verdict) -> String {
-    v.residual.map_or_else(|| "-".to_string(), |r| format!("{r:.2e}"))
+    v.residual
+        .map_or_else(|| "-".to_string(), |r| format!("{r:.2e}"))
 }
 
 /// A plain-text table: id, label, status, residual, note.
 pub fn table(verdicts: &[Verdict]) -> String {
-    let id_w = verdicts.iter().map(|v| v.id.len()).max().unwrap_or(2).max(2);
-    let label_w = verdicts.iter().map(|v| v.label.len()).max().unwrap_or(5).max(5);
+    let id_w = verdicts
+        .iter()
+        .map(|v| v.id.len())
+        .max()
+        .unwrap_or(2)
+        .max(2);
+    let label_w = verdicts
+        .iter()
+        .map(|v| v.label.len())
+        .max()
+        .unwrap_or(5)
+        .max(5);
     let mut out = format!(
         "{:id_w$}  {:label_w$}  {:11}  {:9}  note\n",
         "id", "label", "status", "residual"

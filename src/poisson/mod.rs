@@ -21,6 +21,16 @@ pub mod second;
 use crate::differential::Dual6;
 use crate::scalar::{lift, Scalar};
 
+/// Which text of a formula to evaluate: as printed in the paper, or as corrected by the audit
+/// (each corrected formula documents what differs from the printed one).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reading {
+    /// Exactly as printed.
+    Printed,
+    /// With the correction found by the audit.
+    Corrected,
+}
+
 /// A 6x6 matrix as nested arrays, rows first.
 pub type Matrix6<D> = [[D; 6]; 6];
 

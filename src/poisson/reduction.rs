@@ -6,7 +6,7 @@
 //! `r^2 = (r, r)`, `u = gamma1 M1 + gamma2 M2`.
 
 use super::first::FirstBracket;
-use super::{Bivector, Matrix6};
+use super::{Bivector, Matrix6, Reading};
 use crate::differential::jacobian;
 use crate::scalar::{dot, split, Scalar};
 
@@ -80,10 +80,15 @@ pub fn spherical(y: &[f64; 6]) -> [f64; 4] {
     [phi, theta, -y[5], -phi.cos() * y[3] + phi.sin() * y[4]]
 }
 
-/// The functions `[A, B, C, V](theta)` of (int-sph2) as printed, with alpha and beta of the
-/// bracket evaluated at the point `(phi, theta)` of the unit sphere (constant alpha and the
-/// beta of (cond) depend on theta only).
-pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4]) -> [f64; 4] {
+/// The functions `[A, B, C, V](theta)` of (int-sph2), with alpha and beta of the bracket
+/// evaluated at the point `(phi, theta)` of the unit sphere (constant alpha and the beta of
+/// (cond) depend on theta only).
+///
+/// Printed: `V = (I1 + m (a^2 + 2 a R cos theta + R^2)) / (I1^2 R^2 sin^2 theta)`.
+/// Corrected: `V = (I1 + m (a^2 + 2 a R cos theta + R^2 cos^2 theta)) / (I1^2 R^2 sin^2 theta)`,
+/// i.e. `(I1 + m (R gamma3 + a)^2)/(I1^2 R^2 s)`, the `b^2` term of (int-sph)'s H1; the printed
+/// `R^2` instead of `R^2 cos^2 theta` is the `r^2` of B copied into V.
+pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4], reading: Reading) -> [f64; 4] {
     let body = &bracket.body;
     let [phi, theta, _, _] = *sph;
     let (st, ct) = theta.sin_cos();
@@ -97,15 +102,20 @@ pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4]) -> [f64; 4] {
         alpha * alpha * (body.i1 + body.i3 * h2 / (rr * rr * st * st)),
         beta * beta / (body.i1 + m * r2),
         2.0 * alpha * g * (rr * ct + a) / (body.i1 * rr * rr * st * st),
-        (body.i1 + m * r2) / (body.i1 * body.i1 * rr * rr * st * st),
+        (body.i1
+            + m * match reading {
+                Reading::Printed => r2,
+                Reading::Corrected => h2,
+            })
+            / (body.i1 * body.i1 * rr * rr * st * st),
     ]
 }
 
 /// (int-sph2): `H1 = A p_phi^2 + B p_theta^2 + b C p_phi + b^2 V` at `(theta, p_phi, p_theta)`
-/// and the Jellett value b.
-pub fn energy_spherical(bracket: &FirstBracket, sph: &[f64; 4], b: f64) -> f64 {
+/// and the Jellett value b, with V as printed or corrected (see [`abcv`]).
+pub fn energy_spherical(bracket: &FirstBracket, sph: &[f64; 4], b: f64, reading: Reading) -> f64 {
     let [_, _, p_phi, p_theta] = *sph;
-    let [a, bb, c, v] = abcv(bracket, sph);
+    let [a, bb, c, v] = abcv(bracket, sph, reading);
     a * p_phi * p_phi + bb * p_theta * p_theta + b * c * p_phi + b * b * v
 }
 
@@ -116,19 +126,30 @@ pub fn routh_spherical(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
 
 /// The rate `dtheta/dt = 2 B(theta) p_theta` of the theta quadrature.
 pub fn theta_rate(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
-    2.0 * abcv(bracket, sph)[1] * sph[3]
+    2.0 * abcv(bracket, sph, Reading::Printed)[1] * sph[3]
 }
 
 /// The square of the theta quadrature's right-hand side,
-/// `4 B (E - A c^2 - b c C - b^2 V)` with `E = H1`, `c = -H^2/(alpha I1)`.
-pub fn theta_rate_squared(bracket: &FirstBracket, sph: &[f64; 4], e: f64, c: f64, b: f64) -> f64 {
-    let [a, bb, cc, v] = abcv(bracket, sph);
+/// `4 B (E - A c^2 - b c C - b^2 V)` with `E = H1`, `c = -H^2/(alpha I1)` (V as printed or
+/// corrected, see [`abcv`]).
+pub fn theta_rate_squared(
+    bracket: &FirstBracket,
+    sph: &[f64; 4],
+    e: f64,
+    c: f64,
+    b: f64,
+    reading: Reading,
+) -> f64 {
+    let [a, bb, cc, v] = abcv(bracket, sph, reading);
     4.0 * bb * (e - a * c * c - b * c * cc - b * b * v)
 }
 
-/// (int-sph): `[H1, H2]` as printed, in the variables `(gamma, L)` of (p-map) at `c = 0`
-/// under (cond), with the Jellett value b.
-pub fn integrals_in_l(bracket: &FirstBracket, y: &[f64; 6], b: f64) -> [f64; 2] {
+/// (int-sph): `[H1, H2]` in the variables `(gamma, L)` of (p-map) at `c = 0` under (cond),
+/// with the Jellett value b.
+///
+/// Printed: the `b^2` coefficient of H2 is `(I1 + m r^2)/(I1 R^2 s) + 2m/I1`. Corrected:
+/// `(I1 + m r^2)/(I1 R^2 s) - 2m/I1` (the sign of `2m/I1` flipped); everything else as printed.
+pub fn integrals_in_l(bracket: &FirstBracket, y: &[f64; 6], b: f64, reading: Reading) -> [f64; 2] {
     let body = &bracket.body;
     let gamma = [y[0], y[1], y[2]];
     let l = [y[3], y[4], y[5]];
@@ -146,6 +167,12 @@ pub fn integrals_in_l(bracket: &FirstBracket, y: &[f64; 6], b: f64) -> [f64; 2] 
             - cross_term / i1
             + b * b * (i1 + m * h * h) / (i1 * i1 * rr * rr * s),
         alpha * alpha / s * (i1 * i3 * r2 / (rr * rr) * l[2] * l[2] + i1 * tail) - cross_term
-            + ((i1 + m * r2) / (i1 * rr * rr * s) + 2.0 * m / i1) * b * b,
+            + ((i1 + m * r2) / (i1 * rr * rr * s)
+                + match reading {
+                    Reading::Printed => 2.0 * m / i1,
+                    Reading::Corrected => -2.0 * m / i1,
+                })
+                * b
+                * b,
     ]
 }
