@@ -258,7 +258,7 @@ pub fn claims() -> Vec<Claim> {
             statement: "the change of momenta (p-map) takes (p-br) to the Lie-Poisson bracket (e3) of e*(3)",
             check: |s| {
                 let map = PoissonMap { bracket: generic_first(body()), c: 0.0 };
-                Outcome::checked(p_map_defect(&map, &s.points(&map.bracket.body)), "max |J P J^T - P0(gamma, L)|/|P0| (J the Jacobian of (gamma, M) -> (gamma, L)), generic alpha, beta, c = 0; the unbalanced parenthesis read as gamma_i gamma3 (R u - b I1^{-1} (I1 + m h^2))")
+                Outcome::checked(p_map_defect(&map.bracket, &map, &s.points(&map.bracket.body)), "max |J P J^T - P0(gamma, L)|/|P0| (J the Jacobian of (gamma, M) -> (gamma, L)), generic alpha, beta, c = 0; the unbalanced parenthesis read as gamma_i gamma3 (R u - b I1^{-1} (I1 + m h^2))")
             },
         },
         Claim {
@@ -439,10 +439,10 @@ fn theta_outcome(s: &Sample, reading: Reading) -> Outcome {
     )
 }
 
-/// The (p-map) check: `max |J P J^T - P0(gamma, L)| / |P0|`.
-pub fn p_map_defect(map: &PoissonMap, points: &[[f64; 6]]) -> f64 {
+/// The (p-map) check: `max |J P J^T - P0(gamma, L)| / |P0|` for the bracket P and the map.
+pub fn p_map_defect<P: Bivector>(p: &P, map: &PoissonMap, points: &[[f64; 6]]) -> f64 {
     checks::worst(points, |x| {
-        let pushed = pushforward(&map.bracket, |y| map.image(y), x);
+        let pushed = pushforward(p, |y| map.image(y), x);
         checks::matrix_distance(&pushed, &LiePoisson.entries(&map.image(x)))
     })
 }

@@ -6,7 +6,7 @@
 //! Every residual is relative, so that round-off gives about 1e-16 whatever the units:
 //! the scale of each is stated with the function.
 
-use crate::differential::{gradient, Dual6};
+use crate::differential::{gradient, jacobian, Dual6};
 use crate::poisson::hamiltonian::{
     bracket, casimir_defect, decomposition_defect, hamiltonian_field, singular_values,
     RANK_TOLERANCE,
@@ -49,6 +49,19 @@ pub fn conservation(
                 rate.abs() / (norm(&dh) * norm(&v)).max(f64::MIN_POSITIVE)
             })
             .fold(0.0, f64::max)
+    })
+}
+
+/// An invariant measure with density rho (rho): `div(rho X) = 0`, relative
+/// `max |div(rho X)| / |d(rho X)|` (Frobenius norm of the Jacobian of `rho X`).
+pub fn invariant_measure(
+    field: &dyn Fn(&[Dual6; 6]) -> [Dual6; 6],
+    density: Function,
+    points: &[[f64; 6]],
+) -> f64 {
+    worst(points, |x| {
+        let (_, j) = jacobian(|y| field(y).map(|c| c * density(y)), x);
+        j.trace().abs() / j.norm().max(f64::MIN_POSITIVE)
     })
 }
 

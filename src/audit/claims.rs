@@ -339,11 +339,7 @@ fn registry_entries() -> Vec<Claim> {
                 let worst = [body(), free_body()]
                     .iter()
                     .map(|&b| {
-                        s.points(&b).iter().map(|x| {
-                            let f = |y: &[Dual6; 6]| vector_field(&b, y).map(|c| c * measure_density(&b, y));
-                            let (_, j) = crate::differential::jacobian(f, x);
-                            j.trace().abs() / j.norm()
-                        }).fold(0.0, f64::max)
+                        checks::invariant_measure(&|y| vector_field(&b, y), &of(b, measure_density), &s.points(&b))
                     })
                     .fold(0.0, f64::max);
                 Outcome::checked(worst, "max |div(X/g)| / |d(X/g)| (Frobenius norm of the Jacobian)")

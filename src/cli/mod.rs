@@ -1,6 +1,8 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
+mod audit;
+
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -13,7 +15,10 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Check every computable claim of the paper's sections 2.1 to 4 (issue 4).
+    Audit(audit::Args),
+}
 
 /// Print `value` as pretty JSON on stdout.
 pub fn print_json<T: serde::Serialize>(value: &T) {
@@ -26,7 +31,9 @@ pub fn print_json<T: serde::Serialize>(value: &T) {
 /// Parse the arguments, run the command, map errors to exit code 2.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result: routh::Result<()> = match cli.command {};
+    let result: routh::Result<()> = match cli.command {
+        Command::Audit(args) => audit::run(args),
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
