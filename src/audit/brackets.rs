@@ -20,7 +20,9 @@ use crate::poisson::reduction::{
     energy_spherical, integrals_in_l, pushforward, routh_spherical, spherical, theta_rate,
     theta_rate_squared, PoissonMap,
 };
-use crate::poisson::second::{g_eq3_coefficients, SecondAlphas, SecondBracket};
+use crate::poisson::second::{
+    g_eq3_coefficients, g_eq3_coefficients_h1, SecondAlphas, SecondBracket,
+};
 use crate::poisson::{Bivector, Reading};
 
 /// The polar angle `theta = arccos(gamma3/|gamma|)` of (sph-coord).
@@ -72,6 +74,9 @@ pub fn third(body: crate::Body) -> SecondBracket {
     }
 }
 
+/// A function on the phase space, owned.
+type BoxedFunction<'a> = Box<dyn Fn(&[Dual6; 6]) -> Dual6 + 'a>;
+
 /// An integral of a body, as in [`crate::integrals`].
 pub type Integral = fn(&Body, &[Dual6; 6]) -> Dual6;
 
@@ -100,11 +105,9 @@ pub fn field_decomposition<P: Bivector>(
     decomposition_bodies()
         .iter()
         .map(|b| {
-            let hs: Vec<Box<dyn Fn(&[Dual6; 6]) -> Dual6>> = hamiltonians
+            let hs: Vec<BoxedFunction> = hamiltonians
                 .iter()
-                .map(|&h| {
-                    Box::new(move |x: &[Dual6; 6]| h(b, x)) as Box<dyn Fn(&[Dual6; 6]) -> Dual6>
-                })
+                .map(|&h| Box::new(move |x: &[Dual6; 6]| h(b, x)) as BoxedFunction)
                 .collect();
             let refs: Vec<Function> = hs.iter().map(|h| h.as_ref()).collect();
             checks::decomposition(&field_of(*b), p, coefficients, &refs, points)
@@ -116,19 +119,6 @@ pub fn field_decomposition<P: Bivector>(
 pub fn jellett_squared<D: crate::scalar::Scalar>(body: &Body, x: &[D; 6]) -> D {
     let h3 = jellett(body, x);
     h3 * h3
-}
-
-/// The coefficients of (g-eq3) with the Hamiltonian H1 that make the decomposition hold:
-/// `g'1 = -1/(2 gamma1 alpha3)`, `g'2 = (I1 + m a (R gamma3 + a))/(2 g^2 R I1 (R gamma3 + a))`.
-pub fn g_eq3_coefficients_h1(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2] {
-    let b = &bracket.body;
-    let alpha3 = bracket.alphas.at(b, gamma)[2];
-    let h = b.radius * gamma[2] + b.a;
-    let g = b.routh_g(gamma);
-    [
-        -1.0 / (2.0 * gamma[0] * alpha3),
-        (b.i1 + b.m * b.a * h) / (2.0 * g * g * b.radius * b.i1 * h),
-    ]
 }
 
 /// What the decomposition residuals measure.

@@ -79,13 +79,12 @@ impl Jet {
             value: [[0.0; 6]; 6],
             derivative: [[[0.0; 6]; 6]; 6],
         };
-        for i in 0..6 {
-            for j in 0..6 {
-                let e = &entries[i][j];
+        for (i, row) in entries.iter().enumerate() {
+            for (j, e) in row.iter().enumerate() {
                 jet.value[i][j] = e.re;
                 if let Some(eps) = e.eps.0 {
-                    for l in 0..6 {
-                        jet.derivative[l][i][j] = eps[l];
+                    for (l, d) in eps.iter().enumerate() {
+                        jet.derivative[l][i][j] = *d;
                     }
                 }
             }

@@ -104,3 +104,22 @@ pub fn g_eq3_coefficients(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2]
             / (2.0 * g * g * b.radius * b.i1 * b.i1 * h),
     ]
 }
+
+/// The coefficients of (g-eq3) with the Hamiltonian H1 that make the decomposition
+/// `X = g'1 P' dH1 + g'2 P' d(H3^2)` hold (found by least squares, identified in closed form).
+///
+/// The printed g'1, g'2 of [`g_eq3_coefficients`] are the coefficients of the quadratic
+/// `H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2` in place of H1: K is a Casimir of P', and for
+/// the printed alpha3, `gamma1 alpha3 = g^2 (R gamma3 + a)/(I gamma, r)`, so
+/// `g'1 P' dH2 + g'2 P' d(H3^2) = I1 g'1 P' dH1 + (g'2 - m g'1/I1) P' d(H3^2)`, which are:
+/// `g'1 = -1/(2 gamma1 alpha3)`, `g'2 = (I1 + m a (R gamma3 + a))/(2 g^2 R I1 (R gamma3 + a))`.
+pub fn g_eq3_coefficients_h1(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2] {
+    let b = &bracket.body;
+    let alpha3 = bracket.alphas.at(b, gamma)[2];
+    let h = b.radius * gamma[2] + b.a;
+    let g = b.routh_g(gamma);
+    [
+        -1.0 / (2.0 * gamma[0] * alpha3),
+        (b.i1 + b.m * b.a * h) / (2.0 * g * g * b.radius * b.i1 * h),
+    ]
+}
