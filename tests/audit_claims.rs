@@ -4,9 +4,8 @@
 //! check can fail. Five points per check keep the suite fast in debug mode.
 
 use routh::audit::brackets::{
-    cond2_bracket, cond_bracket, field_decomposition, g_eq3_coefficients_h1, generic_second,
-    int_sph2_defect, int_sph_defect, jellett_squared, p_map_defect, printed_second, theta_defect,
-    third,
+    cond2_bracket, cond_bracket, field_decomposition, generic_second, int_sph2_defect,
+    int_sph_defect, jellett_squared, p_map_defect, printed_second, theta_defect, third,
 };
 use routh::audit::checks;
 use routh::audit::claims::{
@@ -22,7 +21,7 @@ use routh::poisson::first::{
 };
 use routh::poisson::lie_poisson::LiePoisson;
 use routh::poisson::reduction::{energy_spherical, integrals_in_l, theta_rate, PoissonMap};
-use routh::poisson::second::g_eq3_coefficients;
+use routh::poisson::second::{g_eq3_coefficients, g_eq3_coefficients_h1};
 use routh::poisson::{Bivector, Matrix6, Reading};
 use routh::scalar::{dot, split, Scalar};
 use routh::Body;
