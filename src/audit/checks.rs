@@ -8,8 +8,8 @@
 
 use crate::differential::{gradient, jacobian, Dual6};
 use crate::poisson::hamiltonian::{
-    bracket, casimir_defect, decomposition_defect, hamiltonian_field, singular_values,
-    RANK_TOLERANCE,
+    bracket, casimir_defect, decompose, decomposition_defect, hamiltonian_field, singular_values,
+    Decomposition, RANK_TOLERANCE,
 };
 use crate::poisson::schouten::{compatibility_defect, jacobi_defect};
 use crate::poisson::{norm, Bivector, Matrix6};
@@ -157,4 +157,42 @@ pub fn decomposition<P: Bivector>(
             .collect();
         decomposition_defect(&field(x), &fitted)
     })
+}
+
+/// The least-squares decomposition of X on the fields `P dH_a` (ob-vp), compared with given
+/// coefficients: `[fit, deviation]`, the largest relative residual of the fit
+/// `|X - sum_a c_a^fit P dH_a| / |X|` (zero iff X lies in the span) and the largest relative
+/// distance `|c - c^fit| / |c^fit|` of the given coefficients from the fitted ones.
+pub fn least_squares_fit<P: Bivector>(
+    field: &dyn Fn(&[f64; 6]) -> [f64; 6],
+    p: &P,
+    coefficients: Coefficients,
+    hamiltonians: &[Function],
+    points: &[[f64; 6]],
+) -> [f64; 2] {
+    let per_point: Vec<Decomposition> = points
+        .iter()
+        .map(|x| {
+            let basis: Vec<[f64; 6]> = hamiltonians
+                .iter()
+                .map(|h| hamiltonian_field(p, h, x))
+                .collect();
+            decompose(&field(x), &basis)
+        })
+        .collect();
+    let fit = per_point.iter().map(|d| d.residual).fold(0.0, f64::max);
+    let deviation = points
+        .iter()
+        .zip(&per_point)
+        .map(|(x, d)| {
+            let given = coefficients(x);
+            let diff: Vec<f64> = given
+                .iter()
+                .zip(&d.coefficients)
+                .map(|(a, b)| a - b)
+                .collect();
+            norm(&diff) / norm(&d.coefficients).max(f64::MIN_POSITIVE)
+        })
+        .fold(0.0, f64::max);
+    [fit, deviation]
 }

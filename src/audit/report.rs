@@ -77,6 +77,7 @@ pub fn markdown(verdicts: &[Verdict], sample: &Sample) -> String {
             residual_text(v)
         );
     }
+    out.push_str(&corrections(verdicts));
     let mut labels: Vec<&str> = Vec::new();
     for v in verdicts {
         if !labels.contains(&v.label) {
@@ -95,6 +96,39 @@ pub fn markdown(verdicts: &[Verdict], sample: &Sample) -> String {
                 residual_text(v),
                 v.note
             );
+        }
+    }
+    out
+}
+
+/// One section per failing claim: what was found, and the corrected claim (id `<id>.corrected`)
+/// with its verdict and the note that says what differs from the printed text.
+fn corrections(verdicts: &[Verdict]) -> String {
+    let mut out = String::from("\n## Failing claims and their corrections\n");
+    for v in verdicts.iter().filter(|v| v.status == Status::Fail) {
+        let _ = writeln!(
+            out,
+            "\n### `{}` ({})\n\nPrinted: {}. Residual {}: {}\n",
+            v.id,
+            v.label,
+            v.statement,
+            residual_text(v),
+            v.note
+        );
+        let corrected = format!("{}.corrected", v.id);
+        match verdicts.iter().find(|c| c.id == corrected) {
+            Some(c) => {
+                let _ = writeln!(
+                    out,
+                    "Correction `{}`: {}. **{}** (residual {}). {}",
+                    c.id,
+                    c.statement,
+                    c.status.as_str(),
+                    residual_text(c),
+                    c.note
+                );
+            }
+            None => out.push_str("No corrected form is registered; the note above says why.\n"),
         }
     }
     out
