@@ -202,16 +202,20 @@ pub fn claims() -> Vec<Claim> {
         Claim {
             id: "p-br.involution",
             label: "p-br",
-            statement: "{H1, H2} = 0 for any alpha, beta",
+            statement: "{H1, H2} = {H1, K} = 0 for any alpha, beta",
             check: |s| {
                 let p = generic_first(body());
                 let pts = s.points(&p.body);
                 let free = free_body();
                 let worst = decomposition_bodies()
                     .iter()
-                    .map(|&b| checks::involution(&p, &of(b, energy), &of(b, quadratic_integral), &pts))
+                    .map(|&b| {
+                        let h1 = of(b, energy);
+                        checks::involution(&p, &h1, &of(b, quadratic_integral), &pts)
+                            .max(checks::involution(&p, &h1, &of(b, routh_integral), &pts))
+                    })
                     .fold(checks::involution(&p, &of(free, energy), &of(free, quadratic_integral_free), &pts), f64::max);
-                Outcome::checked(worst, "max |{H1,H2}|/(|dH1||P||dH2|): H1, H2 of (int) at G = 0, and H1 = (omega, M) + 2U, H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2 for G > 0 with both signs of U")
+                Outcome::checked(worst, "max |{H1,F}|/(|dH1||P||dF|) for F = H2, K: H1, H2 of (int) at G = 0, and H1 = (omega, M) + 2U, H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2 for G = 0 and G > 0 with both signs of U; generic alpha, beta")
             },
         },
         Claim {
@@ -423,6 +427,24 @@ pub fn claims() -> Vec<Claim> {
                 let rank = checks::rank(&p, 2, &pts);
                 let cas = checks::casimirs(&p, &[&h4, &of(p.body, jellett), &of(p.body, routh_integral)], &pts);
                 Outcome::checked(rank.max(cas), format!("max s3/s1 = {rank:.1e} (1 if the rank is below 2); max |P''dC|/(|P''||dC|) over H4, H3, K = {cas:.1e}; alpha1 = 0.9 + gamma1 gamma3, alpha2 = -gamma1 alpha1/gamma2, alpha3 = -0.7 + gamma1 gamma2"))
+            },
+        },
+        Claim {
+            id: "cond2.trivial-deformation",
+            label: "cond2",
+            statement: "under (cond2) P is a trivial deformation of P0: P = L_Z P0 for some vector field Z",
+            check: |_| Outcome {
+                residual: None,
+                note: "an existence statement about a vector field Z that the paper does not give; the compatibility [P0, P] = 0 it implies is checked by cond2.compatible".into(),
+            },
+        },
+        Claim {
+            id: "p-bv2.e3",
+            label: "p-bv2",
+            statement: "a change of momenta M -> L takes the bracket of P' to the Lie-Poisson bracket of e*(3)",
+            check: |_| Outcome {
+                residual: None,
+                note: "an existence statement: the paper does not print the map; both bivectors have rank 4 with two Casimirs (P2.rank, p-bv2.involution), which is necessary, not sufficient".into(),
             },
         },
         Claim {

@@ -12,18 +12,14 @@ fn residual_text(v: &Verdict) -> String {
 
 /// A plain-text table: id, label, status, residual, note.
 pub fn table(verdicts: &[Verdict]) -> String {
-    let id_w = verdicts
-        .iter()
-        .map(|v| v.id.len())
-        .max()
-        .unwrap_or(2)
-        .max(2);
-    let label_w = verdicts
-        .iter()
-        .map(|v| v.label.len())
-        .max()
-        .unwrap_or(5)
-        .max(5);
+    let width = |column: fn(&Verdict) -> &str, header: &str| {
+        verdicts
+            .iter()
+            .map(|v| column(v).len())
+            .fold(header.len(), usize::max)
+    };
+    let id_w = width(|v| v.id, "id");
+    let label_w = width(|v| v.label, "label");
     let mut out = format!(
         "{:id_w$}  {:label_w$}  {:11}  {:9}  note\n",
         "id", "label", "status", "residual"
