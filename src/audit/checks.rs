@@ -20,17 +20,7 @@ pub type Function<'a> = &'a dyn Fn(&[Dual6; 6]) -> Dual6;
 /// The largest value of `f` over the points (0 for no points); a NaN counts as infinite, so
 /// that a formula evaluated at its singular set can never pass.
 pub fn worst(points: &[[f64; 6]], f: impl Fn(&[f64; 6]) -> f64) -> f64 {
-    points
-        .iter()
-        .map(|x| {
-            let v = f(x);
-            if v.is_nan() {
-                f64::INFINITY
-            } else {
-                v
-            }
-        })
-        .fold(0.0, f64::max)
+    points.iter().map(f).fold(0.0, nan_is_worst)
 }
 
 /// Conservation: `max |X(H)| / (|dH| |X|)` over the points and the integrals.
@@ -65,16 +55,35 @@ pub fn invariant_measure(
     })
 }
 
-/// A pointwise identity `lhs = rhs`: `max |lhs - rhs| / max(|lhs|, |rhs|)`.
+/// An identity `lhs = rhs` of functions: `max_x |lhs - rhs| / max_x max(|lhs|, |rhs|)`, the
+/// defect relative to the size the two sides reach over the sample. Normalising by the
+/// sample's largest value rather than pointwise keeps the residual meaningful where both sides
+/// pass through zero (a quadratic integral such as `M^2 - m r^2 H1` is indefinite), where a
+/// pointwise ratio would measure only the cancellation.
 pub fn identity(
     lhs: &dyn Fn(&[f64; 6]) -> f64,
     rhs: &dyn Fn(&[f64; 6]) -> f64,
     points: &[[f64; 6]],
 ) -> f64 {
-    worst(points, |x| {
-        let (l, r) = (lhs(x), rhs(x));
-        (l - r).abs() / l.abs().max(r.abs()).max(f64::MIN_POSITIVE)
-    })
+    let pairs: Vec<(f64, f64)> = points.iter().map(|x| (lhs(x), rhs(x))).collect();
+    let scale = pairs
+        .iter()
+        .map(|(l, r)| l.abs().max(r.abs()))
+        .fold(0.0, f64::max);
+    let defect = pairs
+        .iter()
+        .map(|(l, r)| (l - r).abs())
+        .fold(0.0, nan_is_worst);
+    defect / scale.max(f64::MIN_POSITIVE)
+}
+
+/// `max(a, b)` with a NaN counting as infinite.
+fn nan_is_worst(a: f64, b: f64) -> f64 {
+    if b.is_nan() {
+        f64::INFINITY
+    } else {
+        a.max(b)
+    }
 }
 
 /// Equality of two bivectors: `max |P - Q| / max(|P|, |Q|)` (Frobenius norms).
