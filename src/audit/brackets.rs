@@ -113,7 +113,7 @@ fn over_bodies(
         .fold(0.0, f64::max)
 }
 
-/// A decomposition of the field (ob-vp): `max |X - sum_a c_a P dH_a| / |X|` over the points
+/// A decomposition of the field (ob-vp): `max |X - sum_a c_a P dH_a| / max(|X|, |c_a P dH_a|)` over the points
 /// and over [`decomposition_bodies`].
 pub fn field_decomposition<P: Bivector>(
     p: &P,
@@ -156,7 +156,7 @@ pub fn jellett_squared<D: crate::scalar::Scalar>(body: &Body, x: &[D; 6]) -> D {
 }
 
 /// What the decomposition residuals measure.
-const GRAVITY_NOTE: &str = "max |X - sum c_a P dH_a|/|X| for G = 0, for G > 0 with U = +mG(r,gamma) and for the printed U = -mG(r,gamma), H1 = (omega, M) + 2U, H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2 (= (int)'s H2 at G = 0, (int-g)'s up to a constant for the printed U)";
+const GRAVITY_NOTE: &str = "max |X - sum c_a P dH_a|/max(|X|, |c_a P dH_a|) for G = 0, for G > 0 with U = +mG(r,gamma) and for the printed U = -mG(r,gamma), H1 = (omega, M) + 2U, H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2 (= (int)'s H2 at G = 0, (int-g)'s up to a constant for the printed U)";
 
 /// The claims about the brackets, in the order of the paper.
 pub fn claims() -> Vec<Claim> {

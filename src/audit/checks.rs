@@ -150,7 +150,8 @@ pub fn rank<P: Bivector>(p: &P, r: usize, points: &[[f64; 6]]) -> f64 {
 pub type Coefficients<'a> = &'a dyn Fn(&[f64; 6]) -> Vec<f64>;
 
 /// A decomposition `X = sum_a c_a P dH_a` with given coefficients (ob-vp), (g-eq1), (g-eq2),
-/// (g-eq3), (cham-vp): `max |X - sum_a c_a P dH_a| / |X|`.
+/// (g-eq3), (cham-vp): `max |X - sum_a c_a P dH_a| / max(|X|, |c_a P dH_a|)` (see
+/// [`decomposition_defect`]).
 pub fn decomposition<P: Bivector>(
     field: &dyn Fn(&[f64; 6]) -> [f64; 6],
     p: &P,

@@ -96,10 +96,15 @@ pub fn decompose(x: &[f64; 6], basis: &[[f64; 6]]) -> Decomposition {
     }
 }
 
-/// The relative residual `|X - sum_a c_a P dH_a| / |X|` of a decomposition with given
-/// coefficients `c_a` of given Hamiltonian fields `P dH_a` at a point.
+/// The relative residual `|X - sum_a c_a P dH_a| / max(|X|, sum_a |c_a| |P dH_a|)` of a
+/// decomposition with given coefficients `c_a` of given Hamiltonian fields `P dH_a` at a
+/// point: relative to the largest of the vectors that cancel.
 pub fn decomposition_defect(x: &[f64; 6], terms: &[(f64, [f64; 6])]) -> f64 {
     let rest: [f64; 6] =
         std::array::from_fn(|i| x[i] - terms.iter().map(|(c, y)| c * y[i]).sum::<f64>());
-    norm(&rest) / norm(x).max(f64::MIN_POSITIVE)
+    let scale = terms
+        .iter()
+        .map(|(c, y)| c.abs() * norm(y))
+        .fold(norm(x), f64::max);
+    norm(&rest) / scale.max(f64::MIN_POSITIVE)
 }
