@@ -257,12 +257,8 @@ fn p_br_degenerate_printed_fails_and_swapped_holds() {
 fn g_eq1() {
     assert_verdict("g-eq1", Status::Ok);
     let p = cond_bracket(body());
-    let wrong = |x: &[f64; 6]| {
-        coefficients_scaled(
-            g_eq1_coefficients(&p.body, 0.8, &[x[0], x[1], x[2]]).to_vec(),
-            1,
-        )
-    };
+    let wrong =
+        |x: &[f64; 6]| coefficients_scaled(g_eq1_coefficients(&p, &[x[0], x[1], x[2]]).to_vec(), 1);
     assert_fails(
         "g2 x 1.1",
         field_decomposition(&p, &wrong, &[energy, quadratic_integral], &points()),
@@ -271,7 +267,7 @@ fn g_eq1() {
         beta: Beta::Gamma3([1.1, -0.3, 0.4]),
         ..p
     };
-    let printed = |x: &[f64; 6]| g_eq1_coefficients(&p.body, 0.8, &[x[0], x[1], x[2]]).to_vec();
+    let printed = |x: &[f64; 6]| g_eq1_coefficients(&p, &[x[0], x[1], x[2]]).to_vec();
     assert_fails(
         "beta not of (cond)",
         field_decomposition(&generic, &printed, &[energy, quadratic_integral], &points()),

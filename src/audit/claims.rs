@@ -20,7 +20,7 @@ use crate::integrals::{
     energy, geometric, jellett, measure_density, quadratic_integral, quadratic_integral_free,
     routh_integral,
 };
-use crate::poisson::first::{Alpha, Beta, FirstBracket};
+use crate::poisson::first::{Alpha, Beta, FirstBracket, UserFunction};
 use crate::sampling::SplitMix64;
 use crate::scalar::{dot, split, Scalar};
 use serde::Serialize;
@@ -203,7 +203,7 @@ pub fn free_body() -> Body {
 }
 
 /// The generic alpha(gamma1/gamma2) of the audit.
-pub const GENERIC_ALPHA: Alpha = Alpha([0.7, 0.2, -0.1]);
+pub const GENERIC_ALPHA: Alpha = Alpha::Polynomial([0.7, 0.2, -0.1]);
 /// The generic beta(gamma3) of the audit.
 pub const GENERIC_BETA: Beta = Beta::Gamma3([1.1, -0.3, 0.4]);
 /// The constant alpha of (cond), (cond2).
@@ -212,6 +212,27 @@ pub const CONSTANT_ALPHA: Alpha = Alpha::constant(0.8);
 /// The first bracket (p-br) with the generic alpha and beta.
 pub fn generic_first(body: Body) -> FirstBracket {
     FirstBracket::new(body, GENERIC_ALPHA, GENERIC_BETA)
+}
+
+/// A transcendental user-supplied alpha: `1.5 + sin t`, `t = gamma1/gamma2`.
+pub const USER_ALPHA: Alpha = Alpha::Function(UserFunction {
+    value: |t| 1.5 + t.sin(),
+    derivative: f64::cos,
+});
+
+/// A transcendental user-supplied beta: `exp(gamma3)`.
+pub const USER_BETA: Beta = Beta::Function(UserFunction {
+    value: f64::exp,
+    derivative: f64::exp,
+});
+
+/// The first bracket (p-br) with the two generic choices of alpha and beta: the polynomials
+/// [`GENERIC_ALPHA`], [`GENERIC_BETA`] and the functions [`USER_ALPHA`], [`USER_BETA`].
+pub fn generic_firsts(body: Body) -> [FirstBracket; 2] {
+    [
+        generic_first(body),
+        FirstBracket::new(body, USER_ALPHA, USER_BETA),
+    ]
 }
 
 /// The field X of (mg-eq) of a body, in `f64`.

@@ -10,28 +10,58 @@ use super::{from_blocks, Bivector, Matrix6};
 use crate::body::Body;
 use crate::scalar::{dot, lift, split, Scalar};
 
-/// The function `alpha(gamma1/gamma2)` of (p-br): a polynomial `c0 + c1 t + c2 t^2` in
-/// `t = gamma1/gamma2` (`[c, 0, 0]` is the constant alpha of (cond), (cond2)).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Alpha(pub [f64; 3]);
+/// A user-supplied function of one variable, given with its derivative. It is evaluated on any
+/// [`Scalar`] as its first-order Taylor jet at the real part, `f(t0) + f'(t0) (t - t0)`: exact in
+/// value and first derivatives, which is all the Schouten bracket, the Casimir tests and the
+/// brackets of functions need (second derivatives of a bivector built from it would be wrong).
+#[derive(Debug, Clone, Copy)]
+pub struct UserFunction {
+    /// `t -> f(t)`.
+    pub value: fn(f64) -> f64,
+    /// `t -> f'(t)`.
+    pub derivative: fn(f64) -> f64,
+}
+
+impl UserFunction {
+    /// The value at `t`, with the first derivatives of `t` carried through.
+    pub fn at<D: Scalar>(&self, t: D) -> D {
+        let t0 = t.re();
+        (t - t0) * (self.derivative)(t0) + (self.value)(t0)
+    }
+}
+
+/// The function `alpha(gamma1/gamma2)` of (p-br), of `t = gamma1/gamma2`.
+#[derive(Debug, Clone, Copy)]
+pub enum Alpha {
+    /// A polynomial `c0 + c1 t + c2 t^2` (`[c, 0, 0]` is the constant alpha of (cond), (cond2)).
+    Polynomial([f64; 3]),
+    /// Any function of t with its derivative.
+    Function(UserFunction),
+}
 
 impl Alpha {
     /// A constant alpha.
     pub const fn constant(c: f64) -> Self {
-        Alpha([c, 0.0, 0.0])
+        Alpha::Polynomial([c, 0.0, 0.0])
     }
 
     /// The value at gamma.
     pub fn at<D: Scalar>(&self, gamma: &[D; 3]) -> D {
-        polynomial(&self.0, gamma[0] / gamma[1])
+        let t = gamma[0] / gamma[1];
+        match self {
+            Alpha::Polynomial(c) => polynomial(c, t),
+            Alpha::Function(f) => f.at(t),
+        }
     }
 }
 
 /// The function `beta` of (p-br).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub enum Beta {
     /// A polynomial `c0 + c1 gamma3 + c2 gamma3^2`: a generic `beta(gamma3)`.
     Gamma3([f64; 3]),
+    /// Any function of gamma3 with its derivative.
+    Function(UserFunction),
     /// (cond): `beta = alpha g (1 + a/(R gamma3))`.
     Cond,
     /// (cond2), read as `beta = alpha g (I1 R gamma3 - I3 (R gamma3 + a)) / (R ((I1 - I3) gamma3
@@ -48,6 +78,7 @@ impl Beta {
         let r = body.contact_vector(gamma);
         match self {
             Beta::Gamma3(c) => polynomial(c, gamma[2]),
+            Beta::Function(f) => f.at(gamma[2]),
             Beta::Cond => alpha * g * (gamma[2].recip() * (body.a / body.radius) + 1.0),
             Beta::Cond2 => {
                 let num = gamma[2] * (body.i1 * body.radius) - r[2] * body.i3;
@@ -87,7 +118,7 @@ pub enum FirstForm {
 }
 
 /// The first Poisson bracket: (p-br) or (p-bv) with the functions alpha and beta.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub struct FirstBracket {
     /// The body (I1 = I2 assumed).
     pub body: Body,
@@ -224,10 +255,13 @@ impl Bivector for FirstBracket {
     }
 }
 
-/// The coefficients `(g1, g2)` of (g-eq1) as printed, for constant alpha under (cond):
+/// The coefficients `(g1, g2)` of (g-eq1) as printed, with the alpha of the bracket (constant
+/// under (cond)):
 /// `g1 = -((R gamma3 + a) I1 - R gamma3 I3) / (2 alpha g (I1 - I3)(R gamma3 + a))`,
 /// `g2 = a / (2 alpha g (I1 - I3)(R gamma3 + a))`.
-pub fn g_eq1_coefficients(body: &Body, alpha: f64, gamma: &[f64; 3]) -> [f64; 2] {
+pub fn g_eq1_coefficients(bracket: &FirstBracket, gamma: &[f64; 3]) -> [f64; 2] {
+    let body = &bracket.body;
+    let alpha = bracket.alpha.at(gamma);
     let h = body.radius * gamma[2] + body.a;
     let den = 2.0 * alpha * body.routh_g(gamma) * (body.i1 - body.i3) * h;
     [

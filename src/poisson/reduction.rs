@@ -15,7 +15,7 @@ use crate::scalar::{dot, split, Scalar};
 /// Reading of the unbalanced parenthesis: the numerator of the first term of L1 and L2 is
 /// `gamma_i gamma3 (R u - b I1^{-1} (I1 + m h^2))`. With this reading `(L, gamma) = c`
 /// holds identically (the gamma3 terms cancel because `b = (M, r)`), so c is a free value.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub struct PoissonMap {
     /// The bracket (p-br) whose alpha and beta enter the map.
     pub bracket: FirstBracket,
@@ -90,9 +90,8 @@ pub fn spherical(y: &[f64; 6]) -> [f64; 4] {
 /// `R^2` instead of `R^2 cos^2 theta` is the `r^2` of B copied into V.
 pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4], reading: Reading) -> [f64; 4] {
     let body = &bracket.body;
-    let [phi, theta, _, _] = *sph;
-    let (st, ct) = theta.sin_cos();
-    let gamma = [phi.sin() * st, phi.cos() * st, ct];
+    let (st, ct) = sph[1].sin_cos();
+    let gamma = unit_normal(sph);
     let (alpha, beta) = bracket.alpha_beta(&gamma);
     let (m, rr, a) = (body.m, body.radius, body.a);
     let h2 = a * a + 2.0 * a * rr * ct + rr * rr * ct * ct;
@@ -119,9 +118,15 @@ pub fn energy_spherical(bracket: &FirstBracket, sph: &[f64; 4], b: f64, reading:
     a * p_phi * p_phi + bb * p_theta * p_theta + b * c * p_phi + b * b * v
 }
 
-/// (int-sph2): Routh's integral `H^2 = -alpha I1 p_phi` (constant alpha).
+/// (int-sph2): Routh's integral `H^2 = -alpha I1 p_phi`.
 pub fn routh_spherical(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
-    -bracket.alpha.0[0] * bracket.body.i1 * sph[2]
+    -bracket.alpha.at(&unit_normal(sph)) * bracket.body.i1 * sph[2]
+}
+
+/// The point `gamma = (sin phi sin theta, cos phi sin theta, cos theta)` of (sph-coord).
+pub fn unit_normal(sph: &[f64; 4]) -> [f64; 3] {
+    let (st, ct) = sph[1].sin_cos();
+    [sph[0].sin() * st, sph[0].cos() * st, ct]
 }
 
 /// The rate `dtheta/dt = 2 B(theta) p_theta` of the theta quadrature.
