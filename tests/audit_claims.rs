@@ -10,6 +10,7 @@ use routh::audit::brackets::{
 use routh::audit::checks;
 use routh::audit::claims::{
     body, find, free_body, generic_first, h4, of, printed_h2_gravity, Sample, Status, THRESHOLD,
+    USER_ALPHA, USER_BETA,
 };
 use routh::differential::Dual6;
 use routh::field::vector_field;
@@ -17,7 +18,7 @@ use routh::integrals::{
     energy, jellett, measure_density, quadratic_integral, quadratic_integral_free, routh_integral,
 };
 use routh::poisson::first::{
-    g_eq1_coefficients, g_eq2_coefficients, Beta, FirstBracket, FirstForm,
+    g_eq1_coefficients, g_eq2_coefficients, Beta, FirstBracket, FirstForm, UserFunction,
 };
 use routh::poisson::lie_poisson::LiePoisson;
 use routh::poisson::reduction::{energy_spherical, integrals_in_l, theta_rate, PoissonMap};
@@ -171,6 +172,29 @@ fn p_br_jacobi() {
         "{M1, M2} x 1.1",
         checks::jacobi(&scaled(generic_first(body())), &points()),
     );
+    let user = FirstBracket::new(body(), USER_ALPHA, USER_BETA);
+    assert_fails(
+        "user alpha, beta with {M1, M2} x 1.1",
+        checks::jacobi(&scaled(user), &points()),
+    );
+}
+
+/// The first-order jet of a user-supplied function carries exact first derivatives through
+/// compositions: `d sin(x1 x2) = cos(x1 x2) (x2, x1)`. (A wrong derivative could not be caught by
+/// the Jacobi identity: (p-br) is Poisson for every alpha(gamma1/gamma2), so at a point any
+/// value and slope belong to some admissible alpha.)
+#[test]
+fn user_function_carries_exact_first_derivatives() {
+    let f = UserFunction {
+        value: f64::sin,
+        derivative: f64::cos,
+    };
+    let x = [0.3, 2.0, 0.0, 0.0, 0.0, 0.0];
+    let (v, d) = routh::differential::gradient(|y| f.at(y[0] * y[1]), &x);
+    assert_eq!(v, 0.6f64.sin());
+    assert_eq!(d[0], 0.6f64.cos() * 2.0);
+    assert_eq!(d[1], 0.6f64.cos() * 0.3);
+    assert_eq!(f.at(0.6), 0.6f64.sin());
 }
 
 #[test]
