@@ -8,8 +8,7 @@ use super::claims::{
     CONSTANT_ALPHA, GENERIC_BETA,
 };
 use crate::body::Body;
-use crate::differential::jacobian;
-use crate::differential::Dual6;
+use crate::differential::{jacobian, Dual6};
 use crate::integrals::{
     energy, jellett, quadratic_integral, quadratic_integral_free, routh_integral,
 };
@@ -25,9 +24,10 @@ use crate::poisson::second::{
     g_eq3_coefficients, g_eq3_coefficients_h1, SecondAlphas, SecondBracket,
 };
 use crate::poisson::{norm, Bivector, Reading};
+use crate::scalar::Scalar;
 
 /// The polar angle `theta = arccos(gamma3/|gamma|)` of (sph-coord).
-fn polar_angle<D: crate::scalar::Scalar>(x: &[D; 6]) -> D {
+fn polar_angle<D: Scalar>(x: &[D; 6]) -> D {
     (x[2] / crate::integrals::geometric(x).sqrt()).acos()
 }
 
@@ -42,17 +42,17 @@ fn ratio(x: &[Dual6; 6]) -> Dual6 {
 }
 
 /// The first bracket under (cond) with the constant alpha.
-pub fn cond_bracket(body: crate::Body) -> FirstBracket {
+pub fn cond_bracket(body: Body) -> FirstBracket {
     FirstBracket::new(body, CONSTANT_ALPHA, Beta::Cond)
 }
 
 /// The first bracket under (cond2) with the constant alpha.
-pub fn cond2_bracket(body: crate::Body) -> FirstBracket {
+pub fn cond2_bracket(body: Body) -> FirstBracket {
     FirstBracket::new(body, CONSTANT_ALPHA, Beta::Cond2)
 }
 
 /// The generic P' of (p-bv2).
-pub fn generic_second(body: crate::Body) -> SecondBracket {
+pub fn generic_second(body: Body) -> SecondBracket {
     SecondBracket {
         body,
         alphas: SecondAlphas::Generic([0.9, 0.6, -0.7]),
@@ -60,7 +60,7 @@ pub fn generic_second(body: crate::Body) -> SecondBracket {
 }
 
 /// The printed rank-4 solution P' of (p-bv2).
-pub fn printed_second(body: crate::Body) -> SecondBracket {
+pub fn printed_second(body: Body) -> SecondBracket {
     SecondBracket {
         body,
         alphas: SecondAlphas::Printed,
@@ -68,7 +68,7 @@ pub fn printed_second(body: crate::Body) -> SecondBracket {
 }
 
 /// The third bracket P''.
-pub fn third(body: crate::Body) -> SecondBracket {
+pub fn third(body: Body) -> SecondBracket {
     SecondBracket {
         body,
         alphas: SecondAlphas::Third([0.9, -0.7]),
@@ -150,7 +150,7 @@ fn decomposition_outcome<P: Bivector>(
 }
 
 /// `H3^2 = (M, r)^2`, the Hamiltonian of (g-eq3) (`dH_3^2` read as `d(H3^2)`).
-pub fn jellett_squared<D: crate::scalar::Scalar>(body: &Body, x: &[D; 6]) -> D {
+pub fn jellett_squared<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     let h3 = jellett(body, x);
     h3 * h3
 }

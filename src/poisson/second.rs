@@ -18,7 +18,7 @@ pub enum SecondAlphas {
     /// The printed rank-4 solution of `[P', P'] = 0`.
     Printed,
     /// The third bracket P'': `alpha1 = c0 + gamma1 gamma3`, `alpha2 = -gamma1 alpha1/gamma2`
-    /// (so that `gamma1 alpha1 + gamma2 alpha2 = 0`), `alpha3 = c2 + gamma1 gamma2`.
+    /// (so that `gamma1 alpha1 + gamma2 alpha2 = 0`), `alpha3 = c1 + gamma1 gamma2`.
     Third([f64; 2]),
 }
 
