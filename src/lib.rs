@@ -23,3 +23,5 @@ pub mod state;
 pub use body::Body;
 pub use error::{Result, RouthError};
 pub use state::State;
+pub mod audit;
+pub mod poisson;

@@ -2,6 +2,7 @@
 //! exit code 2; clap's own usage errors also exit 2.
 
 mod simulate;
+mod audit;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -18,6 +19,8 @@ struct Cli {
 enum Command {
     /// Integrate a case along (mg-eq) and report the drift of the integrals.
     Simulate(simulate::Args),
+    /// Check every computable claim of the paper's sections 2.1 to 4.
+    Audit(audit::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -33,6 +36,7 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
+        Command::Audit(args) => audit::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
