@@ -178,7 +178,8 @@ impl Body {
     ///
     /// (the matrix determinant lemma). `D > 0` because each `m r_i^2 / A_i < r_i^2 / r^2`.
     /// About 45 floating-point operations and a single division, instead of a general 3x3
-    /// solve or a division per `A_i`.
+    /// solve or a division per `A_i` (16 ns instead of 18 for the whole field, BENCHMARKS.md).
+    /// `D det A` is of the size of `A_i^6`: finite and normal for `A_i` between 1e-50 and 1e50.
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
         let r = self.contact_vector(gamma);
