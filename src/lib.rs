@@ -26,3 +26,5 @@ pub mod table;
 pub use body::Body;
 pub use error::{Result, RouthError};
 pub use state::State;
+pub mod audit;
+pub mod poisson;

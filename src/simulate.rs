@@ -8,6 +8,7 @@ use crate::integrate::{rk4, Dop853, Method, OdeSystem, Options, Stats};
 use crate::projection::LevelSet;
 use crate::state::State;
 use serde::Serialize;
+use std::time::Instant;
 
 /// Settings of one simulation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,6 +60,10 @@ pub struct Summary {
     pub final_state: State,
     /// Drift of each integral, by name (H1, H2, H3, H4, K; H2 and K only for I1 = I2).
     pub integrals: std::collections::BTreeMap<&'static str, Drift>,
+    /// Wall time of the integration in seconds, measured with [`std::time::Instant`] inside
+    /// [`run`]: the steps, the tracking of the integrals, the projections and the samples
+    /// (including the time spent in `on_sample`), without process start-up or case parsing.
+    pub elapsed_s: f64,
 }
 
 struct DriftTracker {
@@ -148,6 +153,7 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
 ) -> Result<Summary> {
     validate(settings)?;
+    let start = Instant::now();
     let x0 = reduced(&y0);
     let level = settings.project.then(|| LevelSet::through(body, &x0));
     let project = |y: &mut [f64; N]| {
@@ -258,6 +264,7 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
         initial_state: State::from_array(&x0),
         final_state: State::from_array(&reduced(&y_end)),
         integrals: drift.report(),
+        elapsed_s: start.elapsed().as_secs_f64(),
     })
 }
 

@@ -48,10 +48,22 @@ fn json_summary_has_the_promised_keys() {
     let out = routh(&["simulate", "--t-end", "5", "--json"]);
     assert!(out.status.success(), "{}", stderr(&out));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    for key in ["steps", "rhs_evals", "t_end", "final_state", "integrals"] {
+    for key in [
+        "steps",
+        "rhs_evals",
+        "t_end",
+        "final_state",
+        "integrals",
+        "elapsed_s",
+    ] {
         assert!(v.get(key).is_some(), "JSON lacks {key}: {v}");
     }
     assert_eq!(v["t_end"], 5.0);
+    let elapsed = v["elapsed_s"].as_f64().unwrap();
+    assert!(
+        (0.0..60.0).contains(&elapsed),
+        "elapsed_s is a wall time in seconds: {elapsed}"
+    );
     assert!(v["final_state"]["gamma"].as_array().unwrap().len() == 3);
     assert!(v["final_state"]["M"].as_array().unwrap().len() == 3);
     for name in ["H1", "H2", "H3", "H4", "K"] {

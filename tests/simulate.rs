@@ -44,9 +44,10 @@ fn default_case_to_t_1000_keeps_every_integral_within_1e_10() {
     //
     // H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2 is the exception: on this case its terms
     // (24, 16, 65) nearly cancel to |H2| = 24, which amplifies their drifts fourfold to
-    // 1.49e-10 relative. SciPy's DOP853 and Hairer's Fortran dop853 take the same steps and
-    // give the same drift (bench/scipy_dop853.py), so this is the method at this tolerance,
-    // not an implementation error; we hold H2 to 2e-10 and report the miss (BENCHMARKS.md).
+    // 1.49e-10 relative. SciPy's DOP853 and Hairer's dop853 (C in SciPy 1.17) take the same
+    // steps and give the same drift (bench/scipy_dop853.py), so this is the method at this
+    // tolerance, not an implementation error; we hold H2 to 2e-10 and report the miss
+    // (BENCHMARKS.md).
     let case = Case::default_case().unwrap();
     let summary = simulate(&case, case.initial.to_array(), 1000.0, false);
     assert_eq!(

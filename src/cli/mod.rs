@@ -2,6 +2,7 @@
 //! exit code 2; clap's own usage errors also exit 2.
 
 mod animate;
+mod audit;
 mod plot;
 mod simulate;
 
@@ -25,6 +26,8 @@ enum Command {
     Plot(plot::Args),
     /// Write an HTML page animating the rolling ball.
     Animate(animate::Args),
+    /// Check every computable claim of the paper's sections 2.1 to 4.
+    Audit(audit::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -42,6 +45,7 @@ pub fn main() -> ExitCode {
         Command::Simulate(args) => simulate::run_command(args),
         Command::Plot(args) => plot::run(args),
         Command::Animate(args) => animate::run(args),
+        Command::Audit(args) => audit::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

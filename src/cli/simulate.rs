@@ -183,8 +183,8 @@ fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
     );
     println!("  t_end    {}", s.t_end);
     println!(
-        "  work     {} steps ({} rejected), {} field evaluations",
-        s.steps, s.rejected, s.rhs_evals
+        "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
+        s.steps, s.rejected, s.rhs_evals, s.elapsed_s
     );
     println!(
         "  gamma(t_end) = [{:.15}, {:.15}, {:.15}]",
