@@ -35,11 +35,16 @@ struct Frames {
 /// The rows of `table` restricted to the columns a frame needs: t, gamma3 and the columns of
 /// `routh simulate --full` ([`FULL_COLUMN_NAMES`]), in that order.
 fn frame_rows(table: &Table) -> Result<Vec<[f64; 11]>> {
-    let columns: Vec<&[f64]> = ["t", "gamma3"]
-        .into_iter()
-        .chain(FULL_COLUMN_NAMES)
-        .map(|n| table.column(n))
-        .collect::<Result<_>>()?;
+    let names = || ["t", "gamma3"].into_iter().chain(FULL_COLUMN_NAMES);
+    if let Some(missing) = names().find(|n| !table.has(n)) {
+        return Err(RouthError::Table {
+            origin: table.origin.clone(),
+            message: format!(
+                "no column `{missing}`: the animation needs the columns of `routh simulate --full`"
+            ),
+        });
+    }
+    let columns: Vec<&[f64]> = names().map(|n| table.column(n)).collect::<Result<_>>()?;
     Ok((0..table.len())
         .map(|i| std::array::from_fn(|j| columns[j][i]))
         .collect())

@@ -262,8 +262,14 @@ fn bad_input_exits_2_with_a_message() {
         &["animate", "--out", out, "--csv", garbage.to_str().unwrap()],
         "line 2",
     );
+    let reduced = dir.join("reduced.csv");
+    std::fs::write(&reduced, "t,gamma1,gamma2,gamma3\n0,0,0,1\n").unwrap();
+    assert_exit_2(
+        &["animate", "--out", out, "--csv", reduced.to_str().unwrap()],
+        "--full",
+    );
     assert!(
-        std::fs::read_dir(&dir).unwrap().count() == 1,
+        std::fs::read_dir(&dir).unwrap().count() == 2,
         "no figure written on error"
     );
 }
