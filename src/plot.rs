@@ -111,6 +111,8 @@ pub struct Plot {
     pub equal_scale: bool,
     /// Where the legend goes (a corner the curves leave free).
     pub legend: SeriesLabelPosition,
+    /// Labelled points drawn as dots (the start and the end of a path).
+    pub marks: Vec<(String, (f64, f64))>,
 }
 
 fn column_series(table: &Table, x: &str, y: &str, label: &str) -> Result<Series> {
@@ -151,24 +153,30 @@ pub fn theta_plot(table: &Table) -> Result<Plot> {
         log_y: false,
         equal_scale: false,
         legend: SeriesLabelPosition::UpperRight,
+        marks: Vec::new(),
     })
 }
 
 /// The contact-point path and the centre-of-mass path on the plane (needs the columns of
 /// `routh simulate --full`).
 pub fn path_plot(table: &Table) -> Result<Plot> {
+    let contact = column_series(table, "contact_x", "contact_y", "contact point")?;
+    let ends = [contact.points.first(), contact.points.last()];
+    let marks = ["start", "end"]
+        .into_iter()
+        .zip(ends)
+        .filter_map(|(label, point)| Some((label.to_string(), *point?)))
+        .collect();
     Ok(Plot {
         name: "contact_path",
         title: "Paths on the plane (seen from above)".into(),
         x_label: "x (m)".into(),
         y_label: "y (m)".into(),
-        series: vec![
-            column_series(table, "contact_x", "contact_y", "contact point")?,
-            column_series(table, "x", "y", "centre of mass")?,
-        ],
+        series: vec![contact, column_series(table, "x", "y", "centre of mass")?],
         log_y: false,
         equal_scale: true,
         legend: SeriesLabelPosition::UpperRight,
+        marks,
     })
 }
 
@@ -212,6 +220,7 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
         log_y: true,
         equal_scale: false,
         legend: SeriesLabelPosition::UpperLeft,
+        marks: Vec::new(),
     })
 }
 
@@ -226,6 +235,7 @@ pub fn gamma_plot(table: &Table) -> Result<Plot> {
         log_y: false,
         equal_scale: true,
         legend: SeriesLabelPosition::UpperRight,
+        marks: Vec::new(),
     })
 }
 
@@ -287,6 +297,7 @@ pub fn difference_plot(a: &Table, b: &Table, labels: (&str, &str)) -> Result<Plo
         log_y: true,
         equal_scale: false,
         legend: SeriesLabelPosition::LowerRight,
+        marks: Vec::new(),
     })
 }
 
@@ -464,6 +475,13 @@ impl Plot {
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(3))
                 });
+        }
+        for (label, point) in &self.marks {
+            chart.draw_series(std::iter::once(
+                EmptyElement::at(*point)
+                    + Circle::new((0, 0), 5, BLACK.filled())
+                    + Text::new(label.clone(), (8, -20), ("sans-serif", 16)),
+            ))?;
         }
         chart
             .configure_series_labels()
