@@ -13,6 +13,7 @@ pub mod field;
 pub mod integrals;
 pub mod integrate;
 pub mod output;
+pub mod quadrature;
 pub mod projection;
 pub mod sampling;
 pub mod scalar;
