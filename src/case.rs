@@ -154,7 +154,10 @@ impl Case {
     pub fn parse(text: &str, source: &str) -> Result<Self> {
         Self::parse_unlabelled(text, source).map_err(|e| match e {
             RouthError::Case { .. } => e,
-            other => RouthError::Case { file: source.to_string(), message: other.to_string() },
+            other => RouthError::Case {
+                file: source.to_string(),
+                message: other.to_string(),
+            },
         })
     }
 

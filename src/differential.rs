@@ -16,7 +16,9 @@ pub fn seeded(x: &[f64; 6]) -> [Dual6; 6] {
 
 /// The gradient part of a dual number computed at a [`seeded`] point.
 pub fn partials(v: &Dual6) -> [f64; 6] {
-    v.eps.unwrap_generic(nalgebra::Const::<6>, nalgebra::Const::<1>).into()
+    v.eps
+        .unwrap_generic(nalgebra::Const::<6>, nalgebra::Const::<1>)
+        .into()
 }
 
 /// Gradient of a scalar function on the phase space, with its value.

@@ -13,12 +13,13 @@ pub mod field;
 pub mod integrals;
 pub mod integrate;
 pub mod output;
-pub mod quadrature;
 pub mod projection;
+pub mod quadrature;
 pub mod sampling;
 pub mod scalar;
 pub mod simulate;
 pub mod state;
+pub mod steady;
 
 pub use body::Body;
 pub use error::{Result, RouthError};

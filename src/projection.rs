@@ -25,8 +25,15 @@ pub struct LevelSet {
 impl LevelSet {
     /// The level set through `x0`: H4, H3, K (when I1 = I2) and H1 at their values there.
     pub fn through(body: &Body, x0: &[f64; 6]) -> Self {
-        let mut level = LevelSet { body: *body, targets: Vec::new() };
-        level.targets = level.constraints(&x0.map(Dual6::from)).iter().map(|c| c.re).collect();
+        let mut level = LevelSet {
+            body: *body,
+            targets: Vec::new(),
+        };
+        level.targets = level
+            .constraints(&x0.map(Dual6::from))
+            .iter()
+            .map(|c| c.re)
+            .collect();
         level
     }
 
@@ -49,7 +56,11 @@ impl LevelSet {
             return;
         };
         for iteration in 0..NEWTON_ITERATIONS {
-            let values = if iteration == 0 { at_start.clone() } else { self.constraints(&x.map(Dual6::from)) };
+            let values = if iteration == 0 {
+                at_start.clone()
+            } else {
+                self.constraints(&x.map(Dual6::from))
+            };
             let residual = DVector::from_fn(n, |i, _| values[i].re - self.targets[i]);
             let step = jac.transpose() * gram.solve(&residual);
             for (xi, si) in x.iter_mut().zip(step.iter()) {

@@ -70,7 +70,11 @@ struct DriftTracker {
 impl DriftTracker {
     fn new(body: &Body, x0: &[f64; 6]) -> Self {
         let initial = Integrals::at(body, x0).values();
-        DriftTracker { initial, max: [0.0; 5], last: initial }
+        DriftTracker {
+            initial,
+            max: [0.0; 5],
+            last: initial,
+        }
     }
 
     fn observe(&mut self, body: &Body, x: &[f64; 6]) {
@@ -88,7 +92,11 @@ impl DriftTracker {
             .filter_map(|i| {
                 Some((
                     INTEGRAL_NAMES[i],
-                    Drift { initial: self.initial[i]?, last: self.last[i]?, max_rel_drift: self.max[i] },
+                    Drift {
+                        initial: self.initial[i]?,
+                        last: self.last[i]?,
+                        max_rel_drift: self.max[i],
+                    },
                 ))
             })
             .collect()
@@ -103,7 +111,11 @@ fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
 /// Validate the settings; each violation names the option.
 pub fn validate(settings: &Settings) -> Result<()> {
     let bad = |name: &'static str, value: f64, rule: &'static str| {
-        Err(RouthError::Option { name, value: value.to_string(), rule })
+        Err(RouthError::Option {
+            name,
+            value: value.to_string(),
+            rule,
+        })
     };
     if !(settings.t_end.is_finite() && settings.t_end >= 0.0) {
         return bad("t_end", settings.t_end, "must be finite and >= 0");
@@ -115,7 +127,11 @@ pub fn validate(settings: &Settings) -> Result<()> {
         return bad("atol", settings.atol, "must be finite and > 0");
     }
     if settings.samples == 1 {
-        return bad("samples", 1.0, "must be 0 or >= 2 (the samples include both ends)");
+        return bad(
+            "samples",
+            1.0,
+            "must be 0 or >= 2 (the samples include both ends)",
+        );
     }
     Ok(())
 }
@@ -162,8 +178,13 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     }
     let (y_end, stats) = match settings.method {
         Method::Dop853 => {
-            let opts = Options { rtol: settings.rtol, atol: settings.atol, ..Options::default() };
-            let mut solver = Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?;
+            let opts = Options {
+                rtol: settings.rtol,
+                atol: settings.atol,
+                ..Options::default()
+            };
+            let mut solver =
+                Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?;
             if settings.t_end == 0.0 {
                 (y0, Stats::default())
             } else {
@@ -177,7 +198,11 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
                     drift.observe(body, &reduced(solver.y()));
                     let t = solver.t();
                     while next < times.len() && times[next] <= t {
-                        let y = if times[next] == t { *solver.y() } else { solver.dense(times[next]) };
+                        let y = if times[next] == t {
+                            *solver.y()
+                        } else {
+                            solver.dense(times[next])
+                        };
                         emit(times[next], &y, &mut drift)?;
                         next += 1;
                     }
@@ -193,7 +218,11 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             let mut stats = Stats::default();
             for n in 0..steps {
                 let t0 = n as f64 * h;
-                let t1 = if n + 1 == steps { settings.t_end } else { t0 + h };
+                let t1 = if n + 1 == steps {
+                    settings.t_end
+                } else {
+                    t0 + h
+                };
                 let (mut y1, s) = rk4(sys, t0, y, t1, 1, |_, _| {});
                 project(&mut y1);
                 stats.steps += s.steps;
@@ -214,7 +243,10 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
         }
     };
     if y_end.iter().any(|v| !v.is_finite()) {
-        return Err(RouthError::Integrate(format!("the state became non-finite before t = {}", settings.t_end)));
+        return Err(RouthError::Integrate(format!(
+            "the state became non-finite before t = {}",
+            settings.t_end
+        )));
     }
     Ok(Summary {
         method: settings.method.to_string(),

@@ -5,7 +5,10 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh")).args(args).output().expect("the binary runs")
+    Command::new(env!("CARGO_BIN_EXE_routh"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
 }
 
 fn scratch(name: &str) -> PathBuf {
@@ -20,7 +23,12 @@ fn stderr(out: &Output) -> String {
 
 fn assert_usage_error(out: &Output, expected: &str) {
     let err = stderr(out);
-    assert_eq!(out.status.code(), Some(2), "expected exit 2 with `{expected}`, got {:?}: {err}", out.status);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "expected exit 2 with `{expected}`, got {:?}: {err}",
+        out.status
+    );
     assert!(err.contains(expected), "message `{err}` lacks `{expected}`");
     assert!(!err.contains("panicked"), "panic: {err}");
 }
@@ -48,19 +56,36 @@ fn json_summary_has_the_promised_keys() {
     assert!(v["final_state"]["M"].as_array().unwrap().len() == 3);
     for name in ["H1", "H2", "H3", "H4", "K"] {
         let d = &v["integrals"][name];
-        assert!(d["initial"].is_f64() && d["max_rel_drift"].is_f64(), "{name}: {d}");
+        assert!(
+            d["initial"].is_f64() && d["max_rel_drift"].is_f64(),
+            "{name}: {d}"
+        );
     }
 }
 
 #[test]
 fn csv_has_the_promised_columns_and_samples() {
     let path = scratch("run.csv");
-    let out = routh(&["simulate", "--t-end", "1", "--samples", "11", "--out", path.to_str().unwrap(), "--json"]);
+    let out = routh(&[
+        "simulate",
+        "--t-end",
+        "1",
+        "--samples",
+        "11",
+        "--out",
+        path.to_str().unwrap(),
+        "--json",
+    ]);
     assert!(out.status.success(), "{}", stderr(&out));
     let text = std::fs::read_to_string(&path).unwrap();
     let mut lines = text.lines();
-    assert_eq!(lines.next().unwrap(), "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,H1,H2,H3,H4,K");
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+    assert_eq!(
+        lines.next().unwrap(),
+        "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,H1,H2,H3,H4,K"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
     assert_eq!(rows.len(), 11);
     assert_eq!(rows[0][0], 0.0);
     assert_eq!(rows[10][0], 1.0);
@@ -69,7 +94,15 @@ fn csv_has_the_promised_columns_and_samples() {
 
 #[test]
 fn rk4_and_projection_options_run() {
-    let out = routh(&["simulate", "--t-end", "1", "--method", "rk4:2000", "--project", "--json"]);
+    let out = routh(&[
+        "simulate",
+        "--t-end",
+        "1",
+        "--method",
+        "rk4:2000",
+        "--project",
+        "--json",
+    ]);
     assert!(out.status.success(), "{}", stderr(&out));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["method"], "rk4:2000");
@@ -83,8 +116,14 @@ fn bad_options_exit_2_with_a_message() {
     assert_usage_error(&routh(&["simulate", "--t-end", "-1"]), "t_end");
     assert_usage_error(&routh(&["simulate", "--rtol", "-1e-9"]), "rtol");
     assert_usage_error(&routh(&["simulate", "--atol", "nan"]), "atol");
-    assert_usage_error(&routh(&["simulate", "--method", "euler"]), "unknown integration method");
-    assert_usage_error(&routh(&["simulate", "--case", "/nonexistent/case.toml"]), "/nonexistent/case.toml");
+    assert_usage_error(
+        &routh(&["simulate", "--method", "euler"]),
+        "unknown integration method",
+    );
+    assert_usage_error(
+        &routh(&["simulate", "--case", "/nonexistent/case.toml"]),
+        "/nonexistent/case.toml",
+    );
 }
 
 #[test]
@@ -95,7 +134,11 @@ fn bad_case_files_exit_2_naming_the_key_and_file() {
         ("a = 0.3", "a = 1.5", "|a| < R"),
         ("I3 = 0.5", "I3 = 0.9", "I1 + I2 >= I3"),
         ("m = 1.0", "m = -1.0", "m = -1"),
-        ("gamma = [0.29552020666133955, 0.0, 0.955336489125606]", "gamma = [1.0, 1.0, 0.0]", "not a unit vector"),
+        (
+            "gamma = [0.29552020666133955, 0.0, 0.955336489125606]",
+            "gamma = [1.0, 1.0, 0.0]",
+            "not a unit vector",
+        ),
         ("t_end = 100.0\n", "", "t_end"),
         ("[body]", "[body", "malformed TOML"),
     ] {
@@ -103,7 +146,11 @@ fn bad_case_files_exit_2_naming_the_key_and_file() {
         std::fs::write(&path, default.replacen(old, new, 1)).unwrap();
         let out = routh(&["simulate", "--case", path.to_str().unwrap()]);
         assert_usage_error(&out, expected);
-        assert!(stderr(&out).contains("bad.toml"), "file not named: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("bad.toml"),
+            "file not named: {}",
+            stderr(&out)
+        );
     }
 }
 
@@ -111,10 +158,20 @@ fn bad_case_files_exit_2_naming_the_key_and_file() {
 fn a_failed_run_leaves_no_output_file() {
     let path = scratch("never.csv");
     let _ = std::fs::remove_file(&path);
-    let out = routh(&["simulate", "--t-end", "nan", "--out", path.to_str().unwrap()]);
+    let out = routh(&[
+        "simulate",
+        "--t-end",
+        "nan",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(!path.exists(), "a failed run wrote {}", path.display());
     let dir = path.parent().unwrap();
-    let leftovers: Vec<_> = std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()).filter(|e| e.file_name().to_string_lossy().contains("never.csv")).collect();
+    let leftovers: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains("never.csv"))
+        .collect();
     assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
 }

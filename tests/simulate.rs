@@ -10,8 +10,22 @@ use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::State;
 
 fn simulate(case: &Case, x0: [f64; 6], t_end: f64, project: bool) -> Summary {
-    let settings = Settings { method: Method::Dop853, t_end, rtol: 1e-12, atol: 1e-12, project, samples: 0 };
-    run(&case.body, &ReducedSystem(&case.body), x0, &settings, &mut |_, _| Ok(())).unwrap()
+    let settings = Settings {
+        method: Method::Dop853,
+        t_end,
+        rtol: 1e-12,
+        atol: 1e-12,
+        project,
+        samples: 0,
+    };
+    run(
+        &case.body,
+        &ReducedSystem(&case.body),
+        x0,
+        &settings,
+        &mut |_, _| Ok(()),
+    )
+    .unwrap()
 }
 
 fn worst_drift(summary: &Summary) -> (&'static str, f64) {
@@ -29,13 +43,35 @@ fn default_case_to_t_1000_keeps_every_integral_within_1e_10() {
     // systematic part), which is why this is 1e-10 and not 1e-12.
     let case = Case::default_case().unwrap();
     let summary = simulate(&case, case.initial.to_array(), 1000.0, false);
-    assert_eq!(summary.integrals.len(), 5, "H1, H2, H3, H4 and K are all tracked");
+    assert_eq!(
+        summary.integrals.len(),
+        5,
+        "H1, H2, H3, H4 and K are all tracked"
+    );
     let (name, drift) = worst_drift(&summary);
     assert!(drift < 1e-10, "{name} drifted by {drift:e}");
     // Negative control: a loose tolerance drifts far beyond the bound, so the bound is sharp.
-    let settings = Settings { method: Method::Dop853, t_end: 1000.0, rtol: 1e-6, atol: 1e-6, project: false, samples: 0 };
-    let loose = run(&case.body, &ReducedSystem(&case.body), case.initial.to_array(), &settings, &mut |_, _| Ok(())).unwrap();
-    assert!(worst_drift(&loose).1 > 1e-8, "a loose run did not drift: {:?}", worst_drift(&loose));
+    let settings = Settings {
+        method: Method::Dop853,
+        t_end: 1000.0,
+        rtol: 1e-6,
+        atol: 1e-6,
+        project: false,
+        samples: 0,
+    };
+    let loose = run(
+        &case.body,
+        &ReducedSystem(&case.body),
+        case.initial.to_array(),
+        &settings,
+        &mut |_, _| Ok(()),
+    )
+    .unwrap();
+    assert!(
+        worst_drift(&loose).1 > 1e-8,
+        "a loose run did not drift: {:?}",
+        worst_drift(&loose)
+    );
 }
 
 #[test]
@@ -57,13 +93,33 @@ fn time_reversal_recovers_the_start_within_1e_9() {
     let case = Case::default_case().unwrap();
     let x0 = case.initial;
     let forward = simulate(&case, x0.to_array(), 50.0, false);
-    let back = simulate(&case, forward.final_state.reversed().to_array(), 50.0, false);
+    let back = simulate(
+        &case,
+        forward.final_state.reversed().to_array(),
+        50.0,
+        false,
+    );
     let end = back.final_state.reversed();
     let scale = x0.to_array().iter().map(|v| v.abs()).fold(0.0, f64::max);
-    let error = end.to_array().iter().zip(x0.to_array()).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) / scale;
+    let error = end
+        .to_array()
+        .iter()
+        .zip(x0.to_array())
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+        / scale;
     assert!(error < 1e-9, "time reversal error {error:e}");
-    let moved = forward.final_state.to_array().iter().zip(x0.to_array()).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
-    assert!(moved > 1e-2, "negative control: the state at t = 50 differs from the start ({moved})");
+    let moved = forward
+        .final_state
+        .to_array()
+        .iter()
+        .zip(x0.to_array())
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        moved > 1e-2,
+        "negative control: the state at t = 50 differs from the start ({moved})"
+    );
 }
 
 #[test]
@@ -74,23 +130,58 @@ fn rk4_converges_to_the_dop853_result_with_order_4() {
     let x0 = case.initial.to_array();
     let reference = simulate(&case, x0, 1.0, false).final_state.to_array();
     let error = |steps: usize| {
-        let settings = Settings { method: Method::Rk4 { steps }, t_end: 1.0, rtol: 1.0, atol: 1.0, project: false, samples: 0 };
-        let s = run(&case.body, &ReducedSystem(&case.body), x0, &settings, &mut |_, _| Ok(())).unwrap();
-        s.final_state.to_array().iter().zip(&reference).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+        let settings = Settings {
+            method: Method::Rk4 { steps },
+            t_end: 1.0,
+            rtol: 1.0,
+            atol: 1.0,
+            project: false,
+            samples: 0,
+        };
+        let s = run(
+            &case.body,
+            &ReducedSystem(&case.body),
+            x0,
+            &settings,
+            &mut |_, _| Ok(()),
+        )
+        .unwrap();
+        s.final_state
+            .to_array()
+            .iter()
+            .zip(&reference)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
     };
     let ratio = error(400) / error(800);
-    assert!((13.0..19.0).contains(&ratio), "RK4 error ratio per halving {ratio}");
+    assert!(
+        (13.0..19.0).contains(&ratio),
+        "RK4 error ratio per halving {ratio}"
+    );
 }
 
 #[test]
 fn samples_are_equally_spaced_and_end_at_t_end() {
     let case = Case::default_case().unwrap();
-    let settings = Settings { method: Method::Dop853, t_end: 2.0, rtol: 1e-10, atol: 1e-10, project: false, samples: 5 };
+    let settings = Settings {
+        method: Method::Dop853,
+        t_end: 2.0,
+        rtol: 1e-10,
+        atol: 1e-10,
+        project: false,
+        samples: 5,
+    };
     let mut seen = Vec::new();
-    let summary = run(&case.body, &ReducedSystem(&case.body), case.initial.to_array(), &settings, &mut |t, x| {
-        seen.push((t, *x));
-        Ok(())
-    })
+    let summary = run(
+        &case.body,
+        &ReducedSystem(&case.body),
+        case.initial.to_array(),
+        &settings,
+        &mut |t, x| {
+            seen.push((t, *x));
+            Ok(())
+        },
+    )
     .unwrap();
     let times: Vec<f64> = seen.iter().map(|s| s.0).collect();
     assert_eq!(times, vec![0.0, 0.5, 1.0, 1.5, 2.0]);

@@ -46,7 +46,8 @@ pub struct Args {
 }
 
 fn parse_method(s: &str) -> std::result::Result<Method, String> {
-    s.parse().map_err(|e: routh::integrate::ParseMethodError| e.to_string())
+    s.parse()
+        .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
 /// The settings of a case with the command-line overrides applied.
@@ -66,7 +67,9 @@ pub const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omeg
 
 /// One CSV row: t, gamma, M, omega and the integrals (empty where not an integral).
 pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
-    let omega = case.body.angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
+    let omega = case
+        .body
+        .angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
     let mut row = format!("{t}");
     for v in x.iter().chain(&omega) {
         row.push_str(&format!(",{v}"));
@@ -96,7 +99,10 @@ pub fn run_command(args: Args) -> Result<()> {
         Some(path) => {
             let mut summary = None;
             write_atomic(path, |w| {
-                let io = |source| RouthError::Io { path: path.clone(), source };
+                let io = |source| RouthError::Io {
+                    path: path.clone(),
+                    source,
+                };
                 writeln!(w, "{CSV_HEADER}").map_err(io)?;
                 summary = Some(run(&case.body, &system, x0, &settings, &mut |t, x| {
                     writeln!(w, "{}", csv_row(&case, t, x)).map_err(io)
@@ -121,15 +127,35 @@ fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
         "  body     m = {}, R = {}, a = {}, I = ({}, {}, {}), G = {}",
         b.m, b.radius, b.a, b.i1, b.i2, b.i3, b.gravity
     );
-    println!("  method   {}{}", s.method, if s.projected { " with projection onto the integrals" } else { "" });
+    println!(
+        "  method   {}{}",
+        s.method,
+        if s.projected {
+            " with projection onto the integrals"
+        } else {
+            ""
+        }
+    );
     println!("  t_end    {}", s.t_end);
-    println!("  work     {} steps ({} rejected), {} field evaluations", s.steps, s.rejected, s.rhs_evals);
-    println!("  gamma(t_end) = [{:.15}, {:.15}, {:.15}]", s.final_state.gamma[0], s.final_state.gamma[1], s.final_state.gamma[2]);
-    println!("  M(t_end)     = [{:.15}, {:.15}, {:.15}]", s.final_state.m[0], s.final_state.m[1], s.final_state.m[2]);
+    println!(
+        "  work     {} steps ({} rejected), {} field evaluations",
+        s.steps, s.rejected, s.rhs_evals
+    );
+    println!(
+        "  gamma(t_end) = [{:.15}, {:.15}, {:.15}]",
+        s.final_state.gamma[0], s.final_state.gamma[1], s.final_state.gamma[2]
+    );
+    println!(
+        "  M(t_end)     = [{:.15}, {:.15}, {:.15}]",
+        s.final_state.m[0], s.final_state.m[1], s.final_state.m[2]
+    );
     println!("  integral        initial value   max relative drift");
     for name in INTEGRAL_NAMES {
         match s.integrals.get(name) {
-            Some(d) => println!("  {name:<4} {:>24.15e}   {:.3e}", d.initial, d.max_rel_drift),
+            Some(d) => println!(
+                "  {name:<4} {:>24.15e}   {:.3e}",
+                d.initial, d.max_rel_drift
+            ),
             None => println!("  {name:<4} {:>24}   (not an integral: I1 != I2)", "-"),
         }
     }

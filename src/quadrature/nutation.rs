@@ -18,6 +18,7 @@ use crate::integrate::brent;
 use crate::quadrature::gauss::GaussLegendre;
 use crate::quadrature::reduction::Reduction;
 use crate::state::State;
+use num_dual::first_derivative;
 use std::f64::consts::{PI, TAU};
 
 /// First number of Chebyshev nodes tried for the series of `dt/dsigma`.
@@ -62,7 +63,9 @@ impl CosineSeries {
     /// Whether the last quarter of the coefficients is negligible against `c0`.
     fn converged(&self) -> bool {
         let n = self.0.len();
-        let tail = self.0[3 * n / 4..].iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        let tail = self.0[3 * n / 4..]
+            .iter()
+            .fold(0.0_f64, |m, c| m.max(c.abs()));
         tail <= SERIES_TOLERANCE * self.0[0].abs()
     }
 
@@ -107,6 +110,7 @@ pub struct Nutation {
     pub nodes: usize,
     time: CosineSeries,
     angle: CosineSeries,
+    rule: GaussLegendre,
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// psi - Psi(sigma) on the initial period.
@@ -223,13 +227,15 @@ impl ExactSolution {
         if through_bottom {
             u1 = -1.0;
         }
-        for (u, pole) in [(u1, through_bottom), (u2, through_top)] {
+        for u in [u1, u2] {
             let (_, dq, _) = red.q_derivatives(u);
-            if !pole && dq.abs() * (u2 - u1) <= 1e-12 * red.q_scale(u) {
+            if dq.abs() * (u2 - u1) <= 1e-12 * red.q_scale(u) {
                 return Err(RouthError::Separatrix {
                     u_min: u1,
                     u_max: u2,
-                    reason: format!("Q has a double root at the turning point {u} (dQ/du = {dq:e})"),
+                    reason: format!(
+                        "Q has a double root at the turning point {u} (dQ/du = {dq:e})"
+                    ),
                 });
             }
         }
@@ -287,7 +293,6 @@ impl Nutation {
         initial: &State,
         udot0: f64,
     ) -> Result<Self> {
-        let half = 0.5 * (u2 - u1);
         let mut nut = Nutation {
             reduction: red,
             u1,
@@ -299,10 +304,11 @@ impl Nutation {
             nodes: 0,
             time: CosineSeries(vec![]),
             angle: CosineSeries(vec![]),
+            rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             sigma0: 0.0,
             psi_ref: 0.0,
         };
-        let rule = GaussLegendre::new(DIVIDED_DIFFERENCE_NODES);
+        let half = 0.5 * (u2 - u1);
         let mut n = FIRST_NODES;
         loop {
             let mut dt = Vec::with_capacity(n);
@@ -310,7 +316,7 @@ impl Nutation {
             for j in 0..n {
                 let sigma = (j as f64 + 0.5) * PI / n as f64;
                 let phase = nut.phase(sigma, false);
-                let p = nut.cofactor(phase.u, &rule);
+                let p = nut.cofactor(phase.u);
                 if !(p > 0.0) {
                     return Err(RouthError::Singular {
                         formula: "the reduced equation (du/dt)^2 = Q(u)",
@@ -322,8 +328,9 @@ impl Nutation {
                     });
                 }
                 let f = p.sqrt().recip();
+                let quotient = nut.jellett_quotient(phase.u);
                 dt.push(f);
-                dpsi.push(red.precession_rate(phase.u) * f);
+                dpsi.push(red.precession_from_quotient(phase.u, quotient) * f);
             }
             let time = CosineSeries::from_samples(&dt);
             let angle = CosineSeries::from_samples(&dpsi);
@@ -334,6 +341,15 @@ impl Nutation {
                 nut.time = time;
                 nut.angle = angle;
                 break;
+            }
+            if n >= MAX_NODES && time.converged() {
+                return Err(RouthError::Singular {
+                    formula: "the precession angle psi",
+                    reason: format!(
+                        "the motion passes so close to the axis (gamma3 up to {u2}, down to \
+                         {u1}) that psi turns too fast to resolve with {n} nodes"
+                    ),
+                });
             }
             if n >= MAX_NODES {
                 return Err(RouthError::Separatrix {
@@ -347,23 +363,35 @@ impl Nutation {
             }
             n *= 2;
         }
-        let u0 = initial.gamma[2];
-        let sigma0 = if u0 <= u1 {
-            0.0
-        } else if u0 >= u2 {
-            PI
+        // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
+        // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
+        // only to the square root of its error, the rate du/dt fixes it well.
+        let cos0 = (0.5 * (u1 + u2) - initial.gamma[2]) / half;
+        let mut sigma0 = if udot0 < 0.0 {
+            TAU - cos0.clamp(-1.0, 1.0).acos()
         } else {
-            2.0 * (u0 - u1).sqrt().atan2((u2 - u0).sqrt())
+            cos0.clamp(-1.0, 1.0).acos()
         };
-        nut.sigma0 = if udot0 < 0.0 { TAU - sigma0 } else { sigma0 };
+        for _ in 0..3 {
+            let (f, _) = nut.time.value_and_integral(sigma0);
+            sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
+        }
+        nut.sigma0 = sigma0;
         // psi_ref: the rotation about e3 that takes the state of phase sigma0 at psi = 0 to
         // the initial state, fitted on the horizontal parts of gamma and omega (so it is
         // defined on the axis too, where gamma has no horizontal part).
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
         let omega = initial.omega(&red.body);
-        let w2 = omega.iter().map(|w| w * w).sum::<f64>().max(f64::MIN_POSITIVE);
+        let w2 = omega
+            .iter()
+            .map(|w| w * w)
+            .sum::<f64>()
+            .max(f64::MIN_POSITIVE);
         let cross_dot = |a: [f64; 3], b: [f64; 3], w: f64| {
-            (w * (a[0] * b[1] - a[1] * b[0]), w * (a[0] * b[0] + a[1] * b[1]))
+            (
+                w * (a[0] * b[1] - a[1] * b[0]),
+                w * (a[0] * b[0] + a[1] * b[1]),
+            )
         };
         let (y1, x1) = cross_dot(model_gamma, initial.gamma, 1.0);
         let (y2, x2) = cross_dot(model_omega, omega, 1.0 / w2);
@@ -375,15 +403,34 @@ impl Nutation {
     /// divided out exactly: `Q(u) / (u - u1) = int_0^1 Q'(u1 + tau (u - u1)) d tau` (as
     /// `Q(u1) = 0`), by Gauss-Legendre quadrature of the derivative from automatic
     /// differentiation. Dividing Q itself would lose the digits that cancel in Q near a root.
-    fn cofactor(&self, u: f64, rule: &GaussLegendre) -> f64 {
+    fn cofactor(&self, u: f64) -> f64 {
         let slope = |from: f64| {
-            rule.integrate(|tau| self.reduction.q_derivatives(from + tau * (u - from)).1)
+            self.rule
+                .integrate(|tau| self.reduction.q_derivatives(from + tau * (u - from)).1)
         };
         if u - self.u1 <= self.u2 - u {
             slope(self.u1) / (self.u2 - u)
         } else {
             -slope(self.u2) / (u - self.u1)
         }
+    }
+
+    /// Jellett's quotient `N(u) / (1 - u^2)`; near a pole `p` that the motion passes through,
+    /// where `N(p) = 0`, with the factor `u - p` divided out exactly as in `cofactor`:
+    /// `N(u) / (1 - u^2) = -int_0^1 N'(p + tau (u - p)) d tau / (u + p)`.
+    fn jellett_quotient(&self, u: f64) -> f64 {
+        let red = &self.reduction;
+        let pole = if self.through_top && u > 0.0 {
+            1.0
+        } else if self.through_bottom && u < 0.0 {
+            -1.0
+        } else {
+            return red.jellett_quotient(u);
+        };
+        let slope = self.rule.integrate(|tau| {
+            first_derivative(|v| red.jellett_remainder(v), pole + tau * (u - pole)).1
+        });
+        -slope / (u + pole)
     }
 
     /// The tilt at phase `sigma` (in `[0, 2 pi)`); `odd` says the phase is in an odd
@@ -428,8 +475,13 @@ impl Nutation {
         let (f, _) = self.time.value_and_integral(local);
         let (_, psi) = self.angle.value_and_integral(local);
         let psi = psi_shift + psi + (turns * self.advance).rem_euclid(TAU);
-        self.reduction
-            .omega(phase.u, phase.s, psi, phase.udot_over_s_times_f / f)
+        self.reduction.omega(
+            phase.u,
+            phase.s,
+            psi,
+            phase.udot_over_s_times_f / f,
+            self.jellett_quotient(phase.u),
+        )
     }
 
     /// The phase sigma in `[0, 2 pi)` with `t(sigma) = tau` for `tau` in `[0, T)`: safeguarded

@@ -124,24 +124,36 @@ impl Reduction {
         self.q_terms(u).iter().map(|t| t.abs()).sum()
     }
 
-    /// The precession rate `dpsi/dt = u N(u) / (A R (1 - u^2)) - omega3` (module docs),
-    /// for `|u| < 1`.
-    pub fn precession_rate(&self, u: f64) -> f64 {
-        let b = &self.body;
-        u * self.jellett_remainder(u) / (b.i1 * b.radius * (1.0 - u * u)) - self.spin(u)
+    /// Jellett's quotient `N(u) / (1 - u^2) = omega_t / (A R s)`, for `|u| < 1`.
+    pub fn jellett_quotient(&self, u: f64) -> f64 {
+        self.jellett_remainder(u) / (1.0 - u * u)
     }
 
-    /// The angular velocity `omega = omega_t t + omega_n n + omega3 e3` at
-    /// `gamma = (s cos psi, s sin psi, u)` (s may be negative: the same point as `-s`, `psi + pi`),
-    /// with `omega_t = N(u) / (A R s)` (its limit 0 at `s = 0`, where N vanishes to second
-    /// order on a motion through the pole) and the given `omega_n = (du/dt) / s`.
-    pub fn omega(&self, u: f64, s: f64, psi: f64, omega_n: f64) -> ([f64; 3], [f64; 3]) {
-        let b = &self.body;
-        let omega_t = if s == 0.0 {
-            0.0
-        } else {
-            self.jellett_remainder(u) / (b.i1 * b.radius * s)
-        };
+    /// The precession rate `dpsi/dt = u N(u) / (A R (1 - u^2)) - omega3` (module docs),
+    /// from Jellett's quotient `N / (1 - u^2)`.
+    pub fn precession_from_quotient(&self, u: f64, quotient: f64) -> f64 {
+        u * quotient / (self.body.i1 * self.body.radius) - self.spin(u)
+    }
+
+    /// The precession rate `dpsi/dt` at `|u| < 1`.
+    pub fn precession_rate(&self, u: f64) -> f64 {
+        self.precession_from_quotient(u, self.jellett_quotient(u))
+    }
+
+    /// gamma and the angular velocity `omega = omega_t t + omega_n n + omega3 e3` at
+    /// `gamma = (s cos psi, s sin psi, u)` (s may be negative: the same point as `-s`,
+    /// `psi + pi`), with `omega_t = N / (A R s) = s quotient / (A R)` from Jellett's quotient
+    /// `N / (1 - u^2)` (finite at a pole the motion passes through) and the given
+    /// `omega_n = (du/dt) / s`.
+    pub fn omega(
+        &self,
+        u: f64,
+        s: f64,
+        psi: f64,
+        omega_n: f64,
+        quotient: f64,
+    ) -> ([f64; 3], [f64; 3]) {
+        let omega_t = s * quotient / (self.body.i1 * self.body.radius);
         let (sp, cp) = psi.sin_cos();
         let gamma = [s * cp, s * sp, u];
         let omega = [
