@@ -1,7 +1,9 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
+mod exact;
 mod simulate;
+mod steady;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -18,6 +20,10 @@ struct Cli {
 enum Command {
     /// Integrate the equations of motion (mg-eq) from a case.
     Simulate(simulate::Args),
+    /// The exact motion by quadrature: turning points, nutation period, state at any time.
+    Exact(exact::Args),
+    /// The stationary motions of the case's body and their stability (Routh's threshold).
+    Steady(steady::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -33,6 +39,8 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
+        Command::Exact(args) => exact::run(args),
+        Command::Steady(args) => steady::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
