@@ -4,7 +4,6 @@
 use routh::body::Body;
 use routh::case::Case;
 use routh::field::vector_field;
-use routh::integrals::{energy, jellett, routh_integral};
 use routh::integrate::{solve, Options, Stop};
 use routh::quadrature::{ExactSolution, Motion, Reduction};
 use routh::state::{Normalise, State};

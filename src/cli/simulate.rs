@@ -7,7 +7,6 @@ use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::{Result, RouthError};
-use std::io::Write;
 use std::path::PathBuf;
 
 /// Samples written to CSV when `--out` is given without `--samples`.

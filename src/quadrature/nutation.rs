@@ -317,7 +317,7 @@ impl Nutation {
                 let sigma = (j as f64 + 0.5) * PI / n as f64;
                 let phase = nut.phase(sigma, false);
                 let p = nut.cofactor(phase.u);
-                if !(p > 0.0) {
+                if p.is_nan() || p <= 0.0 {
                     return Err(RouthError::Singular {
                         formula: "the reduced equation (du/dt)^2 = Q(u)",
                         reason: format!(
