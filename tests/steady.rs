@@ -192,3 +192,19 @@ fn a_non_steady_state_changes_its_tilt() {
         .q_derivatives(p.state.gamma[2]);
     assert!(dq.abs() > 1e-3, "{dq}");
 }
+
+#[test]
+fn growth_rate_below_threshold_is_the_root_of_q_second_derivative_over_8() {
+    // Near the pole, u = p - theta^2 / 2 + ..., so (du/dt)^2 = Q(u) ~ Q''(p) (u - p)^2 / 2 gives
+    // thetadot^2 = Q''(p) theta^2 / 8: below the threshold the Jacobian has the real pair
+    // +-sqrt(Q''(p) / 8). Two independent computations of the same number.
+    for (body, pole) in top_heavy() {
+        let wc = routh_threshold(&body, pole);
+        for factor in [0.0, 0.5, 0.9] {
+            let v = vertical_spin(&body, pole, factor * wc).unwrap();
+            let predicted = (v.stability.q_second_derivative / 8.0).sqrt();
+            let rate = v.stability.max_real_eigenvalue;
+            assert!((rate - predicted).abs() < 1e-9 * predicted, "{rate} vs {predicted}");
+        }
+    }
+}
