@@ -130,17 +130,53 @@ fn bad_options_exit_2_with_a_message() {
 fn bad_case_files_exit_2_naming_the_key_and_file() {
     let default = routh::case::DEFAULT_CASE;
     for (old, new, expected) in [
-        ("G = 9.81", "G = 9.81\nspin = 1", "spin"),
+        // item 7: the schema
+        ("G = 9.81", "G = 9.81\nspin = 1", "unknown field `spin`"),
+        (
+            "[integration]",
+            "[integration]\nsteps = 3",
+            "unknown field `steps`",
+        ),
+        ("t_end = 100.0\n", "", "missing field `t_end`"),
+        ("R = 1.0\n", "", "missing field `R`"),
+        ("[body]", "[body", "malformed TOML"),
+        (
+            "omega = [0.5, 0.2, 8.0]",
+            "omega = [0.5, 0.2, 8.0]\nM = [0.0, 0.0, 1.0]",
+            "exactly one",
+        ),
+        // item 1: the body
+        ("m = 1.0", "m = nan", "m = NaN: must be finite"),
+        ("m = 1.0", "m = -1.0", "m = -1: must be > 0"),
+        ("R = 1.0", "R = 0.0", "R = 0: must be > 0"),
         ("a = 0.3", "a = 1.5", "|a| < R"),
+        ("a = 0.3", "a = inf", "a = inf: must be finite"),
+        ("I1 = 0.4", "I1 = -0.4", "I1 = -0.4: must be > 0"),
+        ("I3 = 0.5", "I3 = 0.0", "I3 = 0: must be > 0"),
+        ("I3 = 0.5", "I3 = 0.5\nI2 = -1.0", "I2 = -1: must be > 0"),
+        ("G = 9.81", "G = -9.81", "G = -9.81: must be >= 0"),
         ("I3 = 0.5", "I3 = 0.9", "I1 + I2 >= I3"),
-        ("m = 1.0", "m = -1.0", "m = -1"),
+        ("I3 = 0.5", "I3 = 0.2\nI2 = 0.1", "I2 + I3 >= I1"),
+        ("I3 = 0.5", "I3 = 0.5\nI2 = 1.0", "I3 + I1 >= I2"),
+        // item 2: the state
         (
             "gamma = [0.29552020666133955, 0.0, 0.955336489125606]",
             "gamma = [1.0, 1.0, 0.0]",
             "not a unit vector",
         ),
-        ("t_end = 100.0\n", "", "t_end"),
-        ("[body]", "[body", "malformed TOML"),
+        (
+            "gamma = [0.29552020666133955, 0.0, 0.955336489125606]",
+            "gamma = [nan, 0.0, 1.0]",
+            "non-finite",
+        ),
+        (
+            "omega = [0.5, 0.2, 8.0]",
+            "omega = [0.5, inf, 8.0]",
+            "non-finite",
+        ),
+        // invalid option values in the file
+        ("rtol = 1e-12", "rtol = -1e-12", "rtol"),
+        ("t_end = 100.0", "t_end = nan", "t_end"),
     ] {
         let path = scratch("bad.toml");
         std::fs::write(&path, default.replacen(old, new, 1)).unwrap();
@@ -174,4 +210,51 @@ fn a_failed_run_leaves_no_output_file() {
         .filter(|e| e.file_name().to_string_lossy().contains("never.csv"))
         .collect();
     assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
+}
+
+#[test]
+fn full_motion_adds_orientation_and_positions_to_the_csv() {
+    let path = scratch("full.csv");
+    let out = routh(&[
+        "simulate",
+        "--full",
+        "--t-end",
+        "1",
+        "--samples",
+        "6",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    assert_eq!(header.len(), 24);
+    assert_eq!(
+        &header[15..],
+        [
+            "qw",
+            "qx",
+            "qy",
+            "qz",
+            "x",
+            "y",
+            "z",
+            "contact_x",
+            "contact_y"
+        ]
+    );
+    for line in text.lines().skip(1) {
+        let v: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
+        // The quaternion is unit (1e-12: DOP853 at the default 1e-12 tolerance over t = 1)
+        // and the centre of mass is at the height (r, gamma) = R (gamma, gamma) + a gamma3 of the
+        // default body (R = 1, a = 0.3), to round-off.
+        let norm = (v[15] * v[15] + v[16] * v[16] + v[17] * v[17] + v[18] * v[18]).sqrt();
+        assert!((norm - 1.0).abs() < 1e-12, "|q| = {norm}");
+        let height = v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + 0.3 * v[3];
+        assert!(
+            (v[21] - height).abs() < 1e-14,
+            "height {} vs (r, gamma) = {height}",
+            v[21]
+        );
+    }
 }

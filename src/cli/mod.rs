@@ -1,6 +1,7 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
+mod audit;
 mod exact;
 mod simulate;
 mod steady;
@@ -18,8 +19,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Integrate the equations of motion (mg-eq) from a case.
+    /// Integrate a case along (mg-eq) and report the drift of the integrals.
     Simulate(simulate::Args),
+    /// Check every computable claim of the paper's sections 2.1 to 4.
+    Audit(audit::Args),
     /// The exact motion by quadrature: turning points, nutation period, state at any time.
     Exact(exact::Args),
     /// The stationary motions of the case's body and their stability (Routh's threshold).
@@ -39,6 +42,7 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
+        Command::Audit(args) => audit::run(args),
         Command::Exact(args) => exact::run(args),
         Command::Steady(args) => steady::run(args),
     };

@@ -3,7 +3,8 @@
 
 use routh::case::Case;
 use routh::integrals::{Integrals, INTEGRAL_NAMES};
-use routh::integrate::Method;
+use routh::integrate::{Method, OdeSystem};
+use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::{Result, RouthError};
@@ -19,13 +20,13 @@ pub struct Args {
     #[arg(long)]
     pub case: Option<PathBuf>,
     /// Final time.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub t_end: Option<f64>,
     /// Relative tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of DOP853.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Integrator: `dop853` (adaptive, 8th order) or `rk4` / `rk4:<steps>` (fixed step).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
@@ -39,6 +40,10 @@ pub struct Args {
     /// CSV file for the samples (written atomically).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Also rebuild the motion in space: add the orientation quaternion (qw, qx, qy, qz), the
+    /// centre of mass (x, y, z) and the contact point (contact_x, contact_y) to the CSV.
+    #[arg(long)]
+    pub full: bool,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
@@ -91,25 +96,30 @@ pub fn run_command(args: Args) -> Result<()> {
         (None, None) => 0,
     };
     let settings = settings(&case, &args, samples);
-    let system = ReducedSystem(&case.body);
-    let x0 = case.initial.to_array();
-    let summary = match &args.out {
-        None => run(&case.body, &system, x0, &settings, &mut |_, _| Ok(()))?,
-        Some(path) => {
-            let mut summary = None;
-            write_atomic(path, |w| {
-                let io = |source| RouthError::Io {
-                    path: path.clone(),
-                    source,
-                };
-                writeln!(w, "{CSV_HEADER}").map_err(io)?;
-                summary = Some(run(&case.body, &system, x0, &settings, &mut |t, x| {
-                    writeln!(w, "{}", csv_row(&case, t, x)).map_err(io)
-                })?);
-                Ok(())
-            })?;
-            summary.expect("run returned a summary")
-        }
+    let summary = if args.full {
+        let extra = |y: &[f64; 12]| full_columns(&case.body, y).to_vec();
+        let header = FULL_COLUMN_NAMES.join(",");
+        let system = FullMotion { body: &case.body };
+        execute(
+            &case,
+            &args,
+            &settings,
+            &system,
+            initial_full(&case.initial),
+            &header,
+            extra,
+        )?
+    } else {
+        let system = ReducedSystem(&case.body);
+        execute(
+            &case,
+            &args,
+            &settings,
+            &system,
+            case.initial.to_array(),
+            "",
+            |_| Vec::new(),
+        )?
     };
     if args.json {
         super::print_json(&summary);
@@ -117,6 +127,42 @@ pub fn run_command(args: Args) -> Result<()> {
         print_summary(&case, &summary, args.out.as_ref());
     }
     Ok(())
+}
+
+/// Run the simulation of `system` from `y0` (whose first six components are the reduced
+/// state), writing the CSV when `--out` is given: the reduced columns, then the columns of
+/// `extra_header` with the values of `extra`.
+fn execute<S: OdeSystem<N>, const N: usize>(
+    case: &Case,
+    args: &Args,
+    settings: &Settings,
+    system: &S,
+    y0: [f64; N],
+    extra_header: &str,
+    extra: impl Fn(&[f64; N]) -> Vec<f64>,
+) -> Result<Summary> {
+    let Some(path) = &args.out else {
+        return run(&case.body, system, y0, settings, &mut |_, _| Ok(()));
+    };
+    let mut summary = None;
+    write_atomic(path, |w| {
+        let io = |source| RouthError::Io {
+            path: path.clone(),
+            source,
+        };
+        let separator = if extra_header.is_empty() { "" } else { "," };
+        writeln!(w, "{CSV_HEADER}{separator}{extra_header}").map_err(io)?;
+        summary = Some(run(&case.body, system, y0, settings, &mut |t, y| {
+            let x: [f64; 6] = std::array::from_fn(|i| y[i]);
+            let mut row = csv_row(case, t, &x);
+            for v in extra(y) {
+                row.push_str(&format!(",{v}"));
+            }
+            writeln!(w, "{row}").map_err(io)
+        })?);
+        Ok(())
+    })?;
+    Ok(summary.expect("run returned a summary"))
 }
 
 fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {

@@ -425,3 +425,81 @@ pub const D: [[f64; 16]; 4] = [
         -0.14972683625798562581422125276e+03,
     ],
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The coefficients carry ~30 digits but are rounded to f64 (and some were
+    /// published with fewer digits), and the large entries (up to ~5e2 in `D`,
+    /// ~4e1 in `A`) amplify rounding in the sums: 1e-13 bounds the residuals.
+    const TOL: f64 = 1e-13;
+
+    fn dot(a: &[f64], b: &[f64]) -> f64 {
+        a.iter().zip(b).map(|(x, y)| x * y).sum()
+    }
+
+    #[test]
+    fn rows_of_a_sum_to_c() {
+        for (i, row) in A.iter().enumerate() {
+            let sum: f64 = row.iter().sum();
+            assert!((sum - C[i]).abs() < TOL, "row {i}: {sum} vs {}", C[i]);
+            assert!(row[i..].iter().all(|&a| a == 0.0), "row {i} not explicit");
+        }
+    }
+
+    #[test]
+    fn weights_sum_to_one_and_estimators_to_zero() {
+        assert!((B.iter().sum::<f64>() - 1.0).abs() < TOL);
+        // b - BHH is a 3rd-order error estimate: BHH is itself consistent.
+        assert!((BHH.iter().sum::<f64>() - 1.0).abs() < TOL);
+        // ER = b - b̂ with b̂ of order 5: zero sum.
+        assert!(ER.iter().sum::<f64>().abs() < TOL);
+    }
+
+    #[test]
+    fn quadrature_order_conditions_up_to_8() {
+        // sum b_i c_i^k = 1/(k+1), k = 0..=7 (order 8 for quadrature).
+        for k in 0..8 {
+            let ck: Vec<f64> = C[..12].iter().map(|c| c.powi(k)).collect();
+            let lhs = dot(&B, &ck);
+            assert!((lhs - 1.0 / (k + 1) as f64).abs() < TOL, "k = {k}: {lhs}");
+            // The 5th-order embedded weights b̂ = b - ER satisfy it up to k = 4.
+            if k <= 4 {
+                assert!(dot(&ER, &ck).abs() < TOL, "ER, k = {k}");
+            }
+        }
+    }
+
+    #[test]
+    fn tree_order_conditions() {
+        // sum b_i a_ij c_j^k = 1/((k+1)(k+2)) for k = 0..=6 (trees [τ^k]),
+        // and sum b_i c_i a_ij c_j^k = 1/((k+1)(k+3)) for k = 0..=5.
+        for k in 0..7 {
+            let ack: Vec<f64> = (0..12)
+                .map(|i| (0..12).map(|j| A[i][j] * C[j].powi(k)).sum())
+                .collect();
+            let lhs = dot(&B, &ack);
+            let rhs = 1.0 / ((k + 1) * (k + 2)) as f64;
+            assert!((lhs - rhs).abs() < TOL, "k = {k}: {lhs} vs {rhs}");
+            if k < 6 {
+                let bc: Vec<f64> = (0..12).map(|i| B[i] * C[i]).collect();
+                let lhs = dot(&bc, &ack);
+                let rhs = 1.0 / ((k + 1) * (k + 3)) as f64;
+                assert!((lhs - rhs).abs() < TOL, "k = {k}: {lhs} vs {rhs}");
+            }
+        }
+    }
+
+    #[test]
+    fn dense_output_reproduces_the_step() {
+        // The CONTD8 form matches y_old, y_new and h f at both step ends by
+        // construction; the D rows add the higher-order corrections, which
+        // must vanish for y' = 1 (all stages equal): each row of D sums to
+        // zero. Entries reach 5e2, so the rounding bound is 1e-11.
+        for (r, row) in D.iter().enumerate() {
+            let sum: f64 = row.iter().sum();
+            assert!(sum.abs() < 1e-11, "row {r} of D sums to {sum}");
+        }
+    }
+}
