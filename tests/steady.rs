@@ -204,7 +204,10 @@ fn growth_rate_below_threshold_is_the_root_of_q_second_derivative_over_8() {
             let v = vertical_spin(&body, pole, factor * wc).unwrap();
             let predicted = (v.stability.q_second_derivative / 8.0).sqrt();
             let rate = v.stability.max_real_eigenvalue;
-            assert!((rate - predicted).abs() < 1e-9 * predicted, "{rate} vs {predicted}");
+            assert!(
+                (rate - predicted).abs() < 1e-9 * predicted,
+                "{rate} vs {predicted}"
+            );
         }
     }
 }
