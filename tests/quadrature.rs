@@ -317,3 +317,12 @@ fn asymmetric_body_is_refused() {
         Err(RouthError::NotSymmetric { .. })
     ));
 }
+
+#[test]
+fn negative_times_agree_with_backward_integration() {
+    for (name, body, x0) in cases() {
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let d = distance(&exact.state_at(-7.3), &integrate(&body, &x0, -7.3, 1e-13));
+        assert!(d < 1e-10, "{name}: {d:e}");
+    }
+}
