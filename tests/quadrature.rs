@@ -326,3 +326,34 @@ fn negative_times_agree_with_backward_integration() {
         assert!(d < 1e-10, "{name}: {d:e}");
     }
 }
+
+#[test]
+fn period_agrees_with_gauss_legendre_in_the_substituted_variable() {
+    // An independent rule for T = 2 int_0^pi (du/dsigma) / sqrt(Q(u(sigma))) dsigma, with Q
+    // itself (no divided differences): Gauss-Legendre on [0, pi], 100 and 200 nodes. Q loses
+    // digits near the turning points, so agreement to 1e-9 is what this rule can show.
+    use routh::quadrature::gauss::GaussLegendre;
+    for (name, body, x0) in cases() {
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let Motion::Nutation(nut) = &exact.motion else {
+            panic!("{name}: a nutation expected");
+        };
+        let half = 0.5 * (nut.u2 - nut.u1);
+        let mid = 0.5 * (nut.u2 + nut.u1);
+        let period = |n: usize| {
+            let integrand = |x: f64| {
+                let sigma = std::f64::consts::PI * x;
+                let q = exact.reduction.q(mid - half * sigma.cos());
+                half * sigma.sin() / q.sqrt()
+            };
+            2.0 * std::f64::consts::PI * GaussLegendre::new(n).integrate(integrand)
+        };
+        let (t100, t200) = (period(100), period(200));
+        let rel = (t200 - nut.period).abs() / nut.period;
+        println!(
+            "{name}: T = {}, Gauss-Legendre {t100} {t200}: {rel:.1e}",
+            nut.period
+        );
+        assert!(rel < 1e-9, "{name}: {rel:e}");
+    }
+}
