@@ -15,10 +15,12 @@ pub mod integrate;
 pub mod motion;
 pub mod output;
 pub mod projection;
+pub mod quadrature;
 pub mod sampling;
 pub mod scalar;
 pub mod simulate;
 pub mod state;
+pub mod steady;
 
 pub use body::Body;
 pub use error::{Result, RouthError};

@@ -1,8 +1,10 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
 //! exit code 2; clap's own usage errors also exit 2.
 
-mod simulate;
 mod audit;
+mod exact;
+mod simulate;
+mod steady;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -21,6 +23,10 @@ enum Command {
     Simulate(simulate::Args),
     /// Check every computable claim of the paper's sections 2.1 to 4.
     Audit(audit::Args),
+    /// The exact motion by quadrature: turning points, nutation period, state at any time.
+    Exact(exact::Args),
+    /// The stationary motions of the case's body and their stability (Routh's threshold).
+    Steady(steady::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -37,6 +43,8 @@ pub fn main() -> ExitCode {
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
         Command::Audit(args) => audit::run(args),
+        Command::Exact(args) => exact::run(args),
+        Command::Steady(args) => steady::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
