@@ -69,6 +69,17 @@ pub enum RouthError {
         /// Why, with the offending value.
         reason: String,
     },
+    /// The motion is on or near a separatrix (a homoclinic orbit of (mg-eq)): the nutation
+    /// period diverges, so the quadrature over one period cannot be done.
+    #[error("the motion is on or near a separatrix, where the nutation period diverges: {reason} (tilt between gamma3 = {u_min} and {u_max})")]
+    Separatrix {
+        /// Lower turning point of gamma3.
+        u_min: f64,
+        /// Upper turning point of gamma3.
+        u_max: f64,
+        /// What shows it (a double root of Q, or a series that does not converge).
+        reason: String,
+    },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(String),

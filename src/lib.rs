@@ -17,10 +17,12 @@ pub mod motion;
 pub mod output;
 pub mod plot;
 pub mod projection;
+pub mod quadrature;
 pub mod sampling;
 pub mod scalar;
 pub mod simulate;
 pub mod state;
+pub mod steady;
 pub mod table;
 
 pub use body::Body;

@@ -3,8 +3,10 @@
 
 mod animate;
 mod audit;
+mod exact;
 mod plot;
 mod simulate;
+mod steady;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -28,6 +30,10 @@ enum Command {
     Animate(animate::Args),
     /// Check every computable claim of the paper's sections 2.1 to 4.
     Audit(audit::Args),
+    /// The exact motion by quadrature: turning points, nutation period, state at any time.
+    Exact(exact::Args),
+    /// The stationary motions of the case's body and their stability (Routh's threshold).
+    Steady(steady::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -46,6 +52,8 @@ pub fn main() -> ExitCode {
         Command::Plot(args) => plot::run(args),
         Command::Animate(args) => animate::run(args),
         Command::Audit(args) => audit::run(args),
+        Command::Exact(args) => exact::run(args),
+        Command::Steady(args) => steady::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,117 @@
+//! `routh steady`: the stationary motions for the body of a case and their linear stability
+//! (from the double root of Q and from the Jacobian's eigenvalues), with Routh's threshold.
+
+use routh::case::Case;
+use routh::steady::{
+    routh_threshold, steady_precessions, vertical_spin, SteadyPrecession, VerticalSpin,
+};
+use routh::{Body, Result};
+use serde::Serialize;
+use std::path::PathBuf;
+
+/// Tilts (degrees) at which the steady precessions are listed.
+const TILTS_DEGREES: [f64; 11] = [
+    15.0, 30.0, 45.0, 60.0, 75.0, 90.0, 105.0, 120.0, 135.0, 150.0, 165.0,
+];
+
+/// Options of `routh steady`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Case file (TOML); the built-in default case when omitted. Its body is used, and the
+    /// spin omega3 of its initial state.
+    #[arg(long)]
+    pub case: Option<PathBuf>,
+    /// Print the result as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Serialize)]
+struct Report {
+    case: String,
+    body: Body,
+    /// The spin rate omega3 used (the case's initial omega3).
+    spin: f64,
+    /// Routh's threshold |omega3| for the vertical spin with the centre of mass above the
+    /// geometric centre (0 when there is none: a = 0 or G = 0).
+    threshold_spin: f64,
+    /// gamma3 of the vertical spin with the centre of mass above (None when a = 0).
+    top_heavy_gamma3: Option<f64>,
+    vertical: Vec<VerticalSpin>,
+    precessions: Vec<SteadyPrecession>,
+}
+
+fn stable(b: bool) -> &'static str {
+    if b {
+        "stable"
+    } else {
+        "unstable"
+    }
+}
+
+fn print_text(r: &Report) {
+    println!("case: {}", r.case);
+    println!("spin omega3 = {}", r.spin);
+    println!("vertical spins (gamma = (0, 0, +-1), omega = (0, 0, omega3)):");
+    for v in &r.vertical {
+        println!(
+            "  gamma3 = {:+}: centre of mass {}, threshold |omega3| = {}; {} by Q'' = {:.6e}, \
+             {} by the Jacobian (max Re lambda = {:.3e})",
+            v.gamma3,
+            if v.centre_of_mass_above {
+                "above"
+            } else {
+                "below"
+            },
+            v.threshold_spin,
+            stable(v.stability.stable_by_q),
+            v.stability.q_second_derivative,
+            stable(v.stability.stable_by_jacobian),
+            v.stability.max_real_eigenvalue
+        );
+    }
+    println!("steady precessions at constant tilt (omega_n = 0):");
+    println!("  theta        omega_t      dpsi/dt      Q''          by Q      by Jacobian");
+    for p in &r.precessions {
+        println!(
+            "  {:<12.6} {:<12.6} {:<12.6} {:<12.4e} {:<9} {}",
+            p.theta,
+            p.omega_t,
+            p.precession,
+            p.stability.q_second_derivative,
+            stable(p.stability.stable_by_q),
+            stable(p.stability.stable_by_jacobian)
+        );
+    }
+}
+
+/// Run `routh steady`.
+pub fn run(args: Args) -> Result<()> {
+    let case = Case::load(args.case.as_deref())?;
+    let body = case.body;
+    let spin = case.initial.omega(&body)[2];
+    let vertical = [1.0, -1.0]
+        .into_iter()
+        .map(|pole| vertical_spin(&body, pole, spin))
+        .collect::<Result<Vec<_>>>()?;
+    let top_heavy_gamma3 = (body.a != 0.0).then(|| body.a.signum());
+    let mut precessions = vec![];
+    for degrees in TILTS_DEGREES {
+        precessions.extend(steady_precessions(&body, degrees.to_radians(), spin)?);
+    }
+    let report = Report {
+        case: case.source.clone(),
+        body,
+        spin,
+        threshold_spin: top_heavy_gamma3.map_or(0.0, |p| routh_threshold(&body, p)),
+        top_heavy_gamma3,
+        vertical,
+        precessions,
+    };
+    if args.json {
+        super::print_json(&report);
+    } else {
+        print_text(&report);
+    }
+    Ok(())
+}

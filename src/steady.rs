@@ -1,0 +1,194 @@
+//! Stationary motions of the Routh sphere (I1 = I2) and their linear stability, judged twice:
+//! from the reduced equation `(du/dt)^2 = Q(u)` of [`crate::quadrature::reduction`] (a double
+//! root of Q is stable when `Q'' < 0` there: nearby levels of the integrals give small
+//! nutations) and, independently, from the eigenvalues of the Jacobian of the field (mg-eq)
+//! by automatic differentiation.
+//!
+//! * The vertical spin `gamma = (0, 0, p)`, `p = +-1`, `omega = (0, 0, w)`: an equilibrium of
+//!   (mg-eq). With `l = R + a p` (the distance from the centre of mass to the contact point),
+//!   `Q''(p) = -2 [(C + m R l)^2 w^2 - 4 m G a p (A + m l^2)] / (A + m l^2)^2`, which gives
+//!   Routh's criterion: when the centre of mass is above the geometric centre (`a p > 0`) the
+//!   spin is stable if and only if `w^2 > 4 m G a p (A + m l^2) / (C + m R l)^2`; below it
+//!   (`a p <= 0`) it is stable at every spin rate.
+//! * Steady motions at constant tilt `0 < theta < pi`: `omega_n = 0`, Q with a double root at
+//!   `u = cos theta`. For given `u` and spin `omega3`, `Q'(u) = 0` is a quadratic equation in
+//!   `omega_t`, with zero, one or two roots; the state precesses about e3 at
+//!   `dpsi/dt = u omega_t / s - omega3` and is an equilibrium in the frame rotating with it, where
+//!   the linearisation is `J - (dpsi/dt) L` with `L x = (e3 x gamma, e3 x M)`.
+
+use crate::body::Body;
+use crate::differential::jacobian;
+use crate::error::{Result, RouthError};
+use crate::field::vector_field;
+use crate::quadrature::Reduction;
+use crate::state::{Normalise, State};
+use nalgebra::SMatrix;
+use serde::Serialize;
+
+/// Relative size of the largest real part of the Jacobian's eigenvalues (against the norm of
+/// the matrix) below which they count as imaginary: the zero eigenvalues of the integrals form
+/// Jordan blocks, whose computed eigenvalues scatter by about sqrt(machine epsilon).
+pub const EIGENVALUE_TOLERANCE: f64 = 1e-6;
+
+/// A stationary motion with its stability by the two methods.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Stability {
+    /// `Q''` at the double root of Q (stable when negative).
+    pub q_second_derivative: f64,
+    /// Stable by the sign of Q''.
+    pub stable_by_q: bool,
+    /// Largest real part of the eigenvalues of the linearisation.
+    pub max_real_eigenvalue: f64,
+    /// Stable by the eigenvalues (all on the imaginary axis within the tolerance).
+    pub stable_by_jacobian: bool,
+}
+
+/// The vertical spin about the symmetry axis.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct VerticalSpin {
+    /// gamma3 = +1 or -1.
+    pub gamma3: f64,
+    /// Whether the centre of mass is above the geometric centre (`a gamma3 > 0`).
+    pub centre_of_mass_above: bool,
+    /// The spin rate omega3.
+    pub spin: f64,
+    /// Routh's threshold |omega3| above which the spin is stable (0 when the centre of mass is
+    /// not above the geometric centre or G = 0).
+    pub threshold_spin: f64,
+    /// Stability at `spin`.
+    pub stability: Stability,
+    /// The state.
+    pub state: State,
+}
+
+/// A steady motion at constant tilt.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SteadyPrecession {
+    /// The tilt theta (gamma3 = cos theta).
+    pub theta: f64,
+    /// The spin omega3.
+    pub spin: f64,
+    /// The component omega_t of omega along the horizontal projection of gamma.
+    pub omega_t: f64,
+    /// The precession rate dpsi/dt of gamma about e3 in the body frame.
+    pub precession: f64,
+    /// Stability.
+    pub stability: Stability,
+    /// The state at psi = 0.
+    pub state: State,
+}
+
+/// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
+/// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0.
+pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
+    let l = body.radius + body.a * pole;
+    let lift = 4.0 * body.m * body.gravity * body.a * pole * (body.i1 + body.m * l * l);
+    lift.max(0.0).sqrt() / (body.i3 + body.m * body.radius * l)
+}
+
+/// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs).
+pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> (f64, f64) {
+    let (_, mut j) = jacobian(|x| vector_field(body, x), &state.to_array());
+    let mut rotation = SMatrix::<f64, 6, 6>::zeros();
+    for block in [0, 3] {
+        rotation[(block, block + 1)] = -1.0;
+        rotation[(block + 1, block)] = 1.0;
+    }
+    j -= rotation * precession;
+    let max = j
+        .complex_eigenvalues()
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, l| m.max(l.re));
+    (max, j.norm())
+}
+
+fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
+    let red = Reduction::of_state(body, state)?;
+    let (_, _, q2) = red.q_derivatives(state.gamma[2]);
+    let (max_re, norm) = max_real_eigenvalue(body, state, precession);
+    Ok(Stability {
+        q_second_derivative: q2,
+        stable_by_q: q2 < 0.0,
+        max_real_eigenvalue: max_re,
+        stable_by_jacobian: max_re <= EIGENVALUE_TOLERANCE * norm.max(1.0),
+    })
+}
+
+/// The state of the vertical spin at `gamma3 = pole` (+1 or -1) with spin rate `spin`.
+pub fn vertical_spin_state(body: &Body, pole: f64, spin: f64) -> Result<State> {
+    State::from_omega(body, [0.0, 0.0, pole], [0.0, 0.0, spin], Normalise::Reject)
+}
+
+/// The vertical spin at `gamma3 = pole` with spin rate `spin`, and its stability.
+pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> {
+    body.require_symmetric("the stationary motions")?;
+    if pole.abs() != 1.0 {
+        return Err(RouthError::Option {
+            name: "pole",
+            value: pole.to_string(),
+            rule: "must be +1 or -1",
+        });
+    }
+    let state = vertical_spin_state(body, pole, spin)?;
+    Ok(VerticalSpin {
+        gamma3: pole,
+        centre_of_mass_above: body.a * pole > 0.0,
+        spin,
+        threshold_spin: routh_threshold(body, pole),
+        stability: stability(body, &state, 0.0)?,
+        state,
+    })
+}
+
+/// The state at tilt theta (psi = 0) with `omega = (omega_t, 0, spin)`.
+fn tilted_state(body: &Body, theta: f64, omega_t: f64, spin: f64) -> Result<State> {
+    let (s, u) = theta.sin_cos();
+    State::from_omega(body, [s, 0.0, u], [omega_t, 0.0, spin], Normalise::Reject)
+}
+
+/// The steady motions at tilt `theta` in (0, pi) with spin rate `spin`: the roots omega_t of
+/// the quadratic `Q'(cos theta) = 0` (zero, one or two), each with its stability.
+pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<SteadyPrecession>> {
+    body.require_symmetric("the stationary motions")?;
+    if !(theta > 0.0 && theta < std::f64::consts::PI) {
+        return Err(RouthError::Option {
+            name: "theta",
+            value: theta.to_string(),
+            rule: "must lie in (0, pi); the vertical spins are separate",
+        });
+    }
+    let u = theta.cos();
+    let slope = |omega_t: f64| -> Result<f64> {
+        let state = tilted_state(body, theta, omega_t, spin)?;
+        Ok(Reduction::of_state(body, &state)?.q_derivatives(u).1)
+    };
+    let w = spin.abs().max((body.gravity / body.radius).sqrt()).max(1.0);
+    let (fm, f0, fp) = (slope(-w)?, slope(0.0)?, slope(w)?);
+    let (a2, a1, a0) = (0.5 * (fp + fm) - f0, 0.5 * (fp - fm), f0);
+    let disc = a1 * a1 - 4.0 * a2 * a0;
+    if disc < 0.0 || a2 == 0.0 {
+        return Ok(vec![]);
+    }
+    let big = -0.5 * (a1 + a1.signum() * disc.sqrt());
+    let mut roots = vec![big / a2];
+    if big != 0.0 {
+        roots.push(a0 / big);
+    }
+    roots.sort_by(f64::total_cmp);
+    roots
+        .into_iter()
+        .map(|x| {
+            let omega_t = w * x;
+            let state = tilted_state(body, theta, omega_t, spin)?;
+            let precession = u * omega_t / theta.sin() - spin;
+            Ok(SteadyPrecession {
+                theta,
+                spin,
+                omega_t,
+                precession,
+                stability: stability(body, &state, precession)?,
+                state,
+            })
+        })
+        .collect()
+}
