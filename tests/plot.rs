@@ -273,3 +273,48 @@ fn bad_input_exits_2_with_a_message() {
         "no figure written on error"
     );
 }
+
+#[test]
+fn quadrature_beside_the_integrator() {
+    // `routh exact` samples at the times of `routh plot`/`simulate`; the difference figure is
+    // drawn, and the two solutions agree to the integrator's tolerance (1e-12 per unit time;
+    // 1e-9 allows the growth over t = 2 at |omega| ~ 8).
+    let dir = scratch("exact");
+    let quadrature = dir.join("quadrature.csv");
+    ok(&routh(&[
+        "exact",
+        "--t",
+        "2",
+        "--samples",
+        "101",
+        "--out",
+        quadrature.to_str().unwrap(),
+    ]));
+    let out = routh(&[
+        "plot",
+        "--t-end",
+        "2",
+        "--samples",
+        "101",
+        "--compare",
+        quadrature.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    let mut names = FIGURES.to_vec();
+    names.push("difference");
+    written(&ok(&out), &dir, &names, "png");
+    let exact = Table::read_csv(&quadrature).unwrap();
+    let simulated = simulate_full(&Case::default_case().unwrap(), 2.0, 101).unwrap();
+    for name in ["gamma1", "gamma2", "gamma3", "M1", "M2", "M3"] {
+        let worst = exact
+            .column(name)
+            .unwrap()
+            .iter()
+            .zip(simulated.column(name).unwrap())
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-9, "{name}: {worst:e}");
+    }
+}
