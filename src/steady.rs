@@ -22,7 +22,7 @@ use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
-use nalgebra::SMatrix;
+use nalgebra::{SMatrix, Schur};
 use serde::Serialize;
 
 /// Relative size of the largest real part of the Jacobian's eigenvalues (against the norm of
@@ -87,7 +87,7 @@ pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
 }
 
 /// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs).
-pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> (f64, f64) {
+pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
     let (_, mut j) = jacobian(|x| vector_field(body, x), &state.to_array());
     let mut rotation = SMatrix::<f64, 6, 6>::zeros();
     for block in [0, 3] {
@@ -95,17 +95,46 @@ pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> (f64,
         rotation[(block + 1, block)] = 1.0;
     }
     j -= rotation * precession;
-    let max = j
-        .complex_eigenvalues()
-        .iter()
-        .fold(f64::NEG_INFINITY, |m, l| m.max(l.re));
-    (max, j.norm())
+    let max = spectral_abscissa(&j).ok_or_else(|| RouthError::Singular {
+        formula: "the eigenvalues of the Jacobian of (mg-eq)",
+        reason: format!(
+            "the Schur iteration did not converge at {:?}",
+            state.to_array()
+        ),
+    })?;
+    Ok((max, j.norm()))
+}
+
+/// Iterations allowed to nalgebra's Schur decomposition (a 6x6 matrix needs a few dozen).
+const SCHUR_ITERATIONS: usize = 10_000;
+
+/// The largest real part of the eigenvalues of `j`, or `None` if the Schur decomposition does
+/// not converge.
+///
+/// nalgebra's `complex_eigenvalues` iterates without bound, and its shifted QR iteration can
+/// cycle forever on the exactly structured Jacobians of the vertical spins (zero blocks, equal
+/// moduli). We bound the iterations and, if the plain matrix cycles, decompose the similar
+/// matrix `Q^T j Q` for a fixed generic rotation Q: the same eigenvalues, no exact structure.
+pub fn spectral_abscissa(j: &SMatrix<f64, 6, 6>) -> Option<f64> {
+    let abscissa = |m: SMatrix<f64, 6, 6>| {
+        Schur::try_new(m, f64::EPSILON, SCHUR_ITERATIONS).map(|schur| {
+            schur
+                .complex_eigenvalues()
+                .iter()
+                .fold(f64::NEG_INFINITY, |acc, l| acc.max(l.re))
+        })
+    };
+    abscissa(*j).or_else(|| {
+        let generic = SMatrix::<f64, 6, 6>::from_fn(|r, c| ((r * 7 + c * 3) % 11) as f64 + 0.5);
+        let q = generic.qr().q();
+        abscissa(q.transpose() * j * q)
+    })
 }
 
 fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
     let red = Reduction::of_state(body, state)?;
     let (_, _, q2) = red.q_derivatives(state.gamma[2]);
-    let (max_re, norm) = max_real_eigenvalue(body, state, precession);
+    let (max_re, norm) = max_real_eigenvalue(body, state, precession)?;
     Ok(Stability {
         q_second_derivative: q2,
         stable_by_q: q2 < 0.0,

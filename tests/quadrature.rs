@@ -350,10 +350,15 @@ fn period_agrees_with_gauss_legendre_in_the_substituted_variable() {
         };
         let (t100, t200) = (period(100), period(200));
         let rel = (t200 - nut.period).abs() / nut.period;
+        // This rule evaluates Q itself near the turning points, where it is a small difference
+        // of larger terms, so the rule has an error of its own: its change from 100 to 200
+        // nodes (9e-10 on the small-tilt case, 1e-10 or less on the others). T must agree
+        // within 1e-9 or within four times that change, whichever is larger.
+        let allowed = 1e-9_f64.max(4.0 * (t200 - t100).abs() / nut.period);
         println!(
-            "{name}: T = {}, Gauss-Legendre {t100} {t200}: {rel:.1e}",
+            "{name}: T = {}, Gauss-Legendre {t100} {t200}: {rel:.1e} (allowed {allowed:.1e})",
             nut.period
         );
-        assert!(rel < 1e-9, "{name}: {rel:e}");
+        assert!(rel < allowed, "{name}: {rel:e}");
     }
 }

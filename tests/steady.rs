@@ -58,7 +58,7 @@ fn threshold_is_the_double_root_of_q_second_derivative() {
 /// 1e-8 below it, while above it the computed real parts are below 1e-20 here.
 fn unstable_by_jacobian(body: &Body, pole: f64, w: f64) -> bool {
     let state = vertical_spin_state(body, pole, w).unwrap();
-    max_real_eigenvalue(body, &state, 0.0).0 > 1e-7
+    max_real_eigenvalue(body, &state, 0.0).unwrap().0 > 1e-7
 }
 
 #[test]
@@ -209,5 +209,24 @@ fn growth_rate_below_threshold_is_the_root_of_q_second_derivative_over_8() {
                 "{rate} vs {predicted}"
             );
         }
+    }
+}
+
+#[test]
+fn spectral_abscissa_terminates_on_structured_matrices() {
+    // Regression: nalgebra's unbounded Schur iteration cycled forever on a vertical-spin
+    // Jacobian during the threshold bisection. Blocks of rotations (eigenvalues +-2i, +-i),
+    // a real eigenvalue 0.5 and an exact zero: the abscissa is 0.5 to round-off.
+    let mut j = nalgebra::SMatrix::<f64, 6, 6>::zeros();
+    j[(0, 1)] = -2.0;
+    j[(1, 0)] = 2.0;
+    j[(2, 2)] = 0.5;
+    j[(3, 4)] = 1.0;
+    j[(4, 3)] = -1.0;
+    let abscissa = routh::steady::spectral_abscissa(&j).unwrap();
+    assert!((abscissa - 0.5).abs() < 1e-14, "{abscissa}");
+    for w in [0.1, 1.0, 2.7556608402825384, 8.0] {
+        let state = vertical_spin_state(&Body::default(), 1.0, w).unwrap();
+        assert!(max_real_eigenvalue(&Body::default(), &state, 0.0).is_ok());
     }
 }

@@ -195,7 +195,7 @@ impl ExactSolution {
         let udot0 = g[0] * omega[1] - g[1] * omega[0];
         let norm_omega = omega.iter().map(|w| w * w).sum::<f64>().sqrt();
         let (_, dq0, _) = red.q_derivatives(u0);
-        let scale = red.q_scale(u0).max(f64::MIN_POSITIVE);
+        let slope_scale = red.q_slope_scale(u0).max(f64::MIN_POSITIVE);
         let steady = |u: f64| {
             Ok(ExactSolution {
                 body: *body,
@@ -211,7 +211,7 @@ impl ExactSolution {
                 },
             })
         };
-        if udot0.abs() <= 1e-12 * norm_omega && dq0.abs() <= 1e-10 * scale {
+        if udot0.abs() <= 1e-12 * norm_omega && dq0.abs() <= 1e-10 * slope_scale {
             return steady(u0);
         }
         let mut u1 = turning_point(&red, u0, -1.0)?;

@@ -29,7 +29,7 @@ use crate::error::Result;
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Scalar};
 use crate::state::State;
-use num_dual::second_derivative;
+use num_dual::{first_derivative, second_derivative};
 
 /// The values of the three integrals that fix a nutation: energy H1 (int-g), Jellett's H3
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
@@ -122,6 +122,15 @@ impl Reduction {
     /// The round-off scale of `Q` at `u`: the sum of the magnitudes of its terms.
     pub fn q_scale(&self, u: f64) -> f64 {
         self.q_terms(u).iter().map(|t| t.abs()).sum()
+    }
+
+    /// The round-off scale of `Q'` at `u`: the sum of the magnitudes of the derivatives of
+    /// the terms of `Q`. At a pole all terms of `Q` vanish, while their slopes do not, so the
+    /// test for a double root at `u` must compare `Q'` with this and not with [`Self::q_scale`].
+    pub fn q_slope_scale(&self, u: f64) -> f64 {
+        (0..4)
+            .map(|i| first_derivative(|v| self.q_terms(v)[i], u).1.abs())
+            .sum()
     }
 
     /// Jellett's quotient `N(u) / (1 - u^2) = omega_t / (A R s)`, for `|u| < 1`.
