@@ -64,21 +64,26 @@ pub fn measure_density<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
 }
 
 /// The integrals tracked along a trajectory, in the order of the CSV columns.
+///
+/// For the Routh sphere (I1 = I2) all five are integrals. For a body with I1 != I2 (the
+/// remark after (raus-int), after [bm02]) Jellett's H3 and Routh's K are not; the quadratic
+/// integral survives without gravity in the form (int) `M^2 - m r^2 H1` (which equals the
+/// H2 of [`quadratic_integral`] when I1 = I2, claim `H2.relation` of the audit).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Integrals {
     /// Energy H1 (int-g).
     #[serde(rename = "H1")]
     pub h1: f64,
-    /// Quadratic integral H2; `None` when the body is not symmetric (it needs K).
+    /// Quadratic integral H2; `None` for I1 != I2 with gravity, where there is none.
     #[serde(rename = "H2")]
     pub h2: Option<f64>,
-    /// Jellett's H3.
+    /// Jellett's H3; `None` for I1 != I2, where it is not an integral.
     #[serde(rename = "H3")]
-    pub h3: f64,
+    pub h3: Option<f64>,
     /// H4 = (gamma, gamma).
     #[serde(rename = "H4")]
     pub h4: f64,
-    /// Routh's K = g omega3; `None` when the body is not symmetric (no longer an integral).
+    /// Routh's K = g omega3; `None` for I1 != I2, where it is not an integral.
     #[serde(rename = "K")]
     pub k: Option<f64>,
 }
@@ -90,10 +95,15 @@ impl Integrals {
     /// Evaluate all tracked integrals at `x`.
     pub fn at(body: &Body, x: &[f64; 6]) -> Self {
         let symmetric = body.is_symmetric();
+        let h2 = if symmetric {
+            Some(quadratic_integral(body, x))
+        } else {
+            (body.gravity == 0.0).then(|| quadratic_integral_free(body, x))
+        };
         Integrals {
             h1: energy(body, x),
-            h2: symmetric.then(|| quadratic_integral(body, x)),
-            h3: jellett(body, x),
+            h2,
+            h3: symmetric.then(|| jellett(body, x)),
             h4: geometric(x),
             k: symmetric.then(|| routh_integral(body, x)),
         }
@@ -101,6 +111,6 @@ impl Integrals {
 
     /// The values in the order of [`INTEGRAL_NAMES`] (`None` where not an integral).
     pub fn values(&self) -> [Option<f64>; 5] {
-        [Some(self.h1), self.h2, Some(self.h3), Some(self.h4), self.k]
+        [Some(self.h1), self.h2, self.h3, Some(self.h4), self.k]
     }
 }

@@ -1,8 +1,8 @@
 //! Projection of a state back onto the level set of the integrals, after each integration
 //! step (Hairer, Lubich, Wanner, *Geometric Numerical Integration*, section IV.4).
 //!
-//! The constraints are `H4 = (gamma, gamma)`, Jellett's `H3`, Routh's `K` (only for I1 = I2)
-//! and the energy `H1`, held at their values at the start. A simplified Newton iteration moves
+//! The constraints are `H4 = (gamma, gamma)`, Jellett's `H3` and Routh's `K` (both only for
+//! I1 = I2, where they are integrals) and the energy `H1`, held at their values at the start. A simplified Newton iteration moves
 //! the state along the span of the constraint gradients (automatic differentiation of the
 //! functions of [`crate::integrals`]): `x <- x - J^T (J J^T)^{-1} (C(x) - c0)`.
 
@@ -23,7 +23,7 @@ pub struct LevelSet {
 }
 
 impl LevelSet {
-    /// The level set through `x0`: H4, H3, K (when I1 = I2) and H1 at their values there.
+    /// The level set through `x0`: H4, H3 and K (when I1 = I2) and H1 at their values there.
     pub fn through(body: &Body, x0: &[f64; 6]) -> Self {
         let mut level = LevelSet {
             body: *body,
@@ -39,8 +39,9 @@ impl LevelSet {
 
     fn constraints(&self, x: &[Dual6; 6]) -> Vec<Dual6> {
         let body = &self.body;
-        let mut c = vec![geometric(x), jellett(body, x)];
+        let mut c = vec![geometric(x)];
         if body.is_symmetric() {
+            c.push(jellett(body, x));
             c.push(routh_integral(body, x));
         }
         c.push(energy(body, x));

@@ -200,3 +200,82 @@ fn samples_are_equally_spaced_and_end_at_t_end() {
     assert_eq!(times, vec![0.0, 0.5, 1.0, 1.5, 2.0]);
     assert_eq!(State::from_array(&seen[4].1), summary.final_state);
 }
+
+#[test]
+fn a_triaxial_body_tracks_only_its_integrals() {
+    // With I1 != I2 (the remark after (raus-int)) Jellett's H3 and Routh's K are no longer
+    // integrals and are not reported; without gravity the quadratic integral (int)
+    // M^2 - m r^2 H1 survives and is tracked as H2 (drift at the 1e-10 level of the default
+    // tolerance), with gravity there is no H2. Negative control: H3 itself drifts by far more.
+    use routh::integrals::jellett;
+    let free = routh::Body::new(1.0, 1.0, 0.3, 0.4, 0.45, 0.5, 0.0).unwrap();
+    let x0 = State::from_omega(
+        &free,
+        [0.29552020666133955, 0.0, 0.955336489125606],
+        [0.5, 0.2, 8.0],
+        routh::state::Normalise::Reject,
+    )
+    .unwrap();
+    let settings = Settings {
+        method: Method::Dop853,
+        t_end: 10.0,
+        rtol: 1e-12,
+        atol: 1e-12,
+        project: false,
+        samples: 0,
+    };
+    let mut h3 = Vec::new();
+    let s = run(
+        &free,
+        &ReducedSystem(&free),
+        x0.to_array(),
+        &settings,
+        &mut |_, _| Ok(()),
+    )
+    .unwrap();
+    assert_eq!(
+        s.integrals.keys().copied().collect::<Vec<_>>(),
+        vec!["H1", "H2", "H4"]
+    );
+    assert!(
+        s.integrals["H2"].max_rel_drift < 1e-10,
+        "{:?}",
+        s.integrals["H2"]
+    );
+    let dense = Settings {
+        samples: 101,
+        ..settings
+    };
+    run(
+        &free,
+        &ReducedSystem(&free),
+        x0.to_array(),
+        &dense,
+        &mut |_, x| {
+            h3.push(jellett(&free, x));
+            Ok(())
+        },
+    )
+    .unwrap();
+    let spread = h3.iter().fold(0.0_f64, |m, v| m.max((v - h3[0]).abs())) / h3[0].abs();
+    assert!(
+        spread > 1e-6,
+        "H3 is not an integral for I1 != I2, yet it moved by only {spread:e}"
+    );
+    let heavy = routh::Body {
+        gravity: 9.81,
+        ..free
+    };
+    let s = run(
+        &heavy,
+        &ReducedSystem(&heavy),
+        x0.to_array(),
+        &settings,
+        &mut |_, _| Ok(()),
+    )
+    .unwrap();
+    assert_eq!(
+        s.integrals.keys().copied().collect::<Vec<_>>(),
+        vec!["H1", "H4"]
+    );
+}
