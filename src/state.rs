@@ -103,7 +103,7 @@ fn checked_gamma(gamma: [f64; 3], normalise: Normalise) -> Result<[f64; 3]> {
     match normalise {
         Normalise::Reject if (norm - 1.0).abs() > UNIT_TOLERANCE => Err(RouthError::State(format!(
             "gamma = {gamma:?} is not a unit vector: |gamma| - 1 = {:.3e} exceeds {UNIT_TOLERANCE:e} \
-             (pass --normalize to rescale it)",
+             (normalize = true in a case's [initial] table, or normalize=True in Python, rescales it)",
             norm - 1.0
         ))),
         Normalise::Reject => Ok(gamma),
