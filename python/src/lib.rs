@@ -20,13 +20,13 @@ use routh_core::state::{Normalise, State};
 use routh_core::RouthError;
 use std::path::PathBuf;
 
-/// The Python exception for a library error: the integration failing at run time is a
-/// `RuntimeError`, a file that cannot be accessed an `OSError`, everything else (parameters,
+/// The Python exception for a library error: the integration or a figure failing at run time
+/// is a `RuntimeError`, a file that cannot be accessed an `OSError`, everything else (parameters,
 /// states, options, case files) a `ValueError`.
 fn python_error(e: RouthError) -> PyErr {
     let message = e.to_string();
     match e {
-        RouthError::Integrate(_) => PyRuntimeError::new_err(message),
+        RouthError::Integrate(_) | RouthError::Plot { .. } => PyRuntimeError::new_err(message),
         RouthError::Io { .. } => PyOSError::new_err(message),
         RouthError::Parameter { .. }
         | RouthError::Triangle { .. }
@@ -34,7 +34,9 @@ fn python_error(e: RouthError) -> PyErr {
         | RouthError::State(_)
         | RouthError::Option { .. }
         | RouthError::Case { .. }
-        | RouthError::Singular { .. } => PyValueError::new_err(message),
+        | RouthError::Singular { .. }
+        | RouthError::Separatrix { .. }
+        | RouthError::Table { .. } => PyValueError::new_err(message),
     }
 }
 
@@ -270,6 +272,7 @@ fn summary_dict(py: Python<'_>, summary: Summary) -> PyResult<Bound<'_, PyDict>>
         initial_state,
         final_state,
         integrals,
+        elapsed_s,
     } = summary;
     let dict = PyDict::new(py);
     dict.set_item("method", method)?;
@@ -278,6 +281,7 @@ fn summary_dict(py: Python<'_>, summary: Summary) -> PyResult<Bound<'_, PyDict>>
     dict.set_item("rejected", rejected)?;
     dict.set_item("rhs_evals", rhs_evals)?;
     dict.set_item("projected", projected)?;
+    dict.set_item("elapsed_s", elapsed_s)?;
     dict.set_item(
         "initial_state",
         PyArray1::from_slice(py, &initial_state.to_array()),
