@@ -1,14 +1,10 @@
 //! The `routh exact` and `routh steady` commands run as a user would: JSON keys, CSV output,
 //! and exit code 2 with a message on bad input.
 
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
-        .args(args)
-        .output()
-        .expect("run routh")
-}
+mod common;
+use common::{assert_exit_2, routh};
 
 fn json(out: &Output) -> serde_json::Value {
     assert!(
@@ -87,9 +83,7 @@ fn bad_input_exits_2_with_a_message() {
         &["steady", "--case", asymmetric.to_str().unwrap()],
     ];
     for args in cases {
-        let out = routh(args);
-        assert_eq!(out.status.code(), Some(2), "{args:?}");
-        assert!(!out.stderr.is_empty(), "{args:?}");
+        assert_exit_2(args, "error: ");
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

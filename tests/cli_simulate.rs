@@ -2,14 +2,10 @@
 //! overrides, and bad input (exit code 2, a message, no panic, no output file).
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::{assert_exit_2, routh};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("routh-cli-simulate-{}", std::process::id()));
@@ -124,16 +120,16 @@ fn rk4_and_projection_options_run() {
 
 #[test]
 fn bad_options_exit_2_with_a_message() {
-    assert_usage_error(&routh(&["simulate", "--t-end", "nan"]), "t_end");
-    assert_usage_error(&routh(&["simulate", "--t-end", "-1"]), "t_end");
-    assert_usage_error(&routh(&["simulate", "--rtol", "-1e-9"]), "rtol");
-    assert_usage_error(&routh(&["simulate", "--atol", "nan"]), "atol");
-    assert_usage_error(
-        &routh(&["simulate", "--method", "euler"]),
+    assert_exit_2(&["simulate", "--t-end", "nan"], "t_end");
+    assert_exit_2(&["simulate", "--t-end", "-1"], "t_end");
+    assert_exit_2(&["simulate", "--rtol", "-1e-9"], "rtol");
+    assert_exit_2(&["simulate", "--atol", "nan"], "atol");
+    assert_exit_2(
+        &["simulate", "--method", "euler"],
         "unknown integration method",
     );
-    assert_usage_error(
-        &routh(&["simulate", "--case", "/nonexistent/case.toml"]),
+    assert_exit_2(
+        &["simulate", "--case", "/nonexistent/case.toml"],
         "/nonexistent/case.toml",
     );
 }

@@ -4,19 +4,15 @@
 use routh::case::Case;
 use routh::table::{simulate_full, Table};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
+
+mod common;
+use common::{assert_exit_2, routh};
 
 /// The figure size promised by `routh::plot::SIZE`.
 const WIDTH: u32 = 960;
 const HEIGHT: u32 = 640;
 const FIGURES: [&str; 4] = ["theta", "contact_path", "integral_drift", "gamma_trace"];
-
-fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("routh-plot-{}-{name}", std::process::id()));
@@ -228,17 +224,6 @@ fn animate_writes_a_self_contained_page() {
         !page.contains("__DATA__") && !page.contains("http"),
         "self-contained"
     );
-}
-
-fn assert_exit_2(args: &[&str], expected: &str) {
-    let out = routh(args);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-    assert!(
-        err.contains(expected),
-        "{args:?}: `{err}` lacks `{expected}`"
-    );
-    assert!(!err.contains("panicked"), "{err}");
 }
 
 #[test]
