@@ -63,6 +63,10 @@ fn quadrature_agrees_with_dop853_at_t_10_forward_and_backward() {
                 Err(e) => panic!("unexpected error {e}"),
             };
             solved += 1;
+            for k in 1..10 {
+                let d = flow.phi_defect(0.1 * k as f64 * std::f64::consts::PI);
+                assert!(d < 1e-14, "Phi in the completed-square form: {d:e}");
+            }
             let d0 = distance(&flow.state_at(0.0), &x0);
             assert!(d0 < 1e-12, "{d0:e}");
             for t in [10.0, -10.0] {
@@ -76,6 +80,23 @@ fn quadrature_agrees_with_dop853_at_t_10_forward_and_backward() {
             }
         }
         assert!(solved >= 5, "{condition:?} {field:?}: only {solved} solved");
+    }
+}
+
+/// The default case (a fast top, tilt 0.3, gamma2 = 0): all three fields under both
+/// conditions, alpha = 1 as in `routh exact --flow`.
+#[test]
+fn default_case_flows_agree_with_dop853() {
+    let case = routh::case::Case::load(None).unwrap();
+    let x0 = case.initial.to_array();
+    for condition in [Condition::Cond, Condition::Cond2] {
+        let bracket = condition.bracket(case.body, 1.0);
+        for field in [Field::X1, Field::X2, Field::XHat2] {
+            let flow = Flow::new(bracket, field, &x0).unwrap();
+            let step = dop853(|y| vector_field(&bracket, field, y), x0, 10.0);
+            let d = distance(&flow.state_at(10.0), &step);
+            assert!(d < TOLERANCE, "{condition:?} {field:?}: {d:e}");
+        }
     }
 }
 

@@ -172,7 +172,10 @@ const MAX_NODES: usize = 2048;
 /// The series has converged when its last quarter of coefficients is below this fraction of
 /// `c0` (an analytic integrand converges geometrically; a slow one means a nearly double root
 /// of Phi or a zero of B just outside the interval, as near a separatrix).
-const CONVERGED: f64 = 1e-12;
+const CONVERGED: f64 = 1e-13;
+/// The largest tail accepted at the round-off floor: the error of t(s) is a few times the
+/// tail times `c0`, so 1e-10 keeps the state within about 1e-9 of the flow over ten periods.
+const FLOOR: f64 = 1e-10;
 /// Step of the outward scan for the turning points (rad); a zero of Phi, or a zero or pole of
 /// beta, is bracketed by it and then located by Brent's method.
 const SCAN_STEP: f64 = 1e-3;
@@ -333,16 +336,47 @@ impl Flow {
         }
     }
 
-    /// `Phi(theta) = E - A p_phi^2 - b C p_phi - b^2 V - 2U` and `B(theta)`.
+    /// `Phi(theta) = E - A p_phi^2 - b C p_phi - b^2 V - 2U` and `B(theta)`, with A, B, C, V of
+    /// the corrected (int-sph2) ([`abcv`]).
+    ///
+    /// Near the poles the terms of `A p_phi^2 + b C p_phi + b^2 V` grow like `1/sin^2 theta`
+    /// and cancel to a small Phi (the turning points sit on that centrifugal barrier), so Phi is
+    /// evaluated in the equal, cancellation-free form obtained by completing the square with
+    /// `g^2 = I3 (I1 + m h^2) + I1 m R^2 sin^2 theta` (h = R cos theta + a):
+    /// `Phi = E - 2U - alpha^2 I1 p_phi^2 + b^2 m/(I1 I3) - D^2/(R^2 sin^2 theta)`,
+    /// `D = alpha sqrt(I3) h p_phi + b g/(I1 sqrt(I3))`. [`Flow::phi_defect`] checks that
+    /// the two forms agree.
     fn phi_and_b(&self, e: f64, theta: f64) -> (f64, f64) {
+        let body = &self.bracket.body;
         let sph = [self.start[0], theta, self.start[2], 0.0];
-        let [a, bb, c, v] = abcv(&self.bracket, &sph, Reading::Corrected);
-        let p = self.start[2];
-        let u = self.bracket.body.potential(&unit_normal(&sph));
+        let gamma = unit_normal(&sph);
+        let [_, bb, _, _] = abcv(&self.bracket, &sph, Reading::Corrected);
+        let (p, b) = (self.start[2], self.b);
+        let alpha = self.bracket.alpha.at(&gamma);
+        let h = body.radius * gamma[2] + body.a;
+        let sqrt_i3 = body.i3.sqrt();
+        let d = alpha * sqrt_i3 * h * p + b * body.routh_g(&gamma) / (body.i1 * sqrt_i3);
+        let sin = theta.sin();
         (
-            e - a * p * p - self.b * c * p - self.b * self.b * v - 2.0 * u,
+            e - 2.0 * body.potential(&gamma) - alpha * alpha * body.i1 * p * p
+                + b * b * body.m / (body.i1 * body.i3)
+                - d * d / (body.radius * body.radius * sin * sin),
             bb,
         )
+    }
+
+    /// The relative difference at theta between [`Flow::phi_and_b`]'s Phi and Phi written
+    /// with A, C, V of (int-sph2) as printed in the corrected form,
+    /// `E - A p_phi^2 - b C p_phi - b^2 V - 2U`, relative to the largest of these terms.
+    pub fn phi_defect(&self, theta: f64) -> f64 {
+        let sph = [self.start[0], theta, self.start[2], 0.0];
+        let [a, _, c, v] = abcv(&self.bracket, &sph, Reading::Corrected);
+        let (p, b) = (self.start[2], self.b);
+        let u2 = 2.0 * self.bracket.body.potential(&unit_normal(&sph));
+        let terms = [self.energy, a * p * p, b * c * p, b * b * v, u2];
+        let direct = terms[0] - terms[1] - terms[2] - terms[3] - terms[4];
+        let scale = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+        (direct - self.phi_and_b(self.energy, theta).0).abs() / scale
     }
 
     /// `dphi/dt` at theta.
@@ -416,7 +450,7 @@ impl Flow {
                 if fa <= 0.0 {
                     return Ok(a);
                 }
-                return brent(|t| self.phi_and_b(e, t).0, a, b, 4.0 * f64::EPSILON, 200)
+                return brent(|t| self.phi_and_b(e, t).0, a, b, 0.0, 200)
                     .ok_or_else(|| singular("Phi(theta) is not finite near a turning point"));
             }
             (a, fa) = (b, fb);
@@ -433,9 +467,17 @@ impl Flow {
     }
 
     /// The cosine series of `dt/ds` and `dphi/ds` (even, 2 pi-periodic, analytic in s) from
-    /// their values at the midpoint nodes `s_j = (j + 1/2) pi / n`, n doubled until converged.
+    /// their values at the midpoint nodes `s_j = (j + 1/2) pi / n`.
+    ///
+    /// n doubles from [`FIRST_NODES`] while the largest coefficient of the last quarter (the
+    /// tail, relative to `c0`) decreases. It stops at [`CONVERGED`], or where the tail stops
+    /// decreasing: there it has reached the round-off floor of the integrand, which grows
+    /// with n (the nodes nearest the turning points see `Phi`, computed with an absolute
+    /// error of round-off times its largest terms, divided by `(theta - theta_-)`), and the
+    /// series with the smallest tail is kept if that tail is below [`FLOOR`].
     fn series(&self, e: f64, theta: [f64; 2]) -> Result<[Vec<f64>; 2]> {
         let mut n = FIRST_NODES;
+        let mut best: Option<(f64, [Vec<f64>; 2])> = None;
         loop {
             let nodes: Vec<f64> = (0..n).map(|j| (j as f64 + 0.5) * PI / n as f64).collect();
             let values: Vec<[f64; 2]> = nodes.iter().map(|&s| self.rates(e, theta, s)).collect();
@@ -459,15 +501,23 @@ impl Flow {
             });
             let tail = coefficients[0][3 * n / 4..]
                 .iter()
-                .fold(0.0f64, |m, c| m.max(c.abs()));
-            if tail <= CONVERGED * coefficients[0][0].abs() {
+                .fold(0.0f64, |m, c| m.max(c.abs()))
+                / coefficients[0][0].abs();
+            if tail <= CONVERGED {
                 return Ok(coefficients);
             }
-            if n >= MAX_NODES {
-                return Err(singular(&format!(
-                    "the theta quadrature does not converge with {n} nodes (tail {tail:.1e} of dt/ds = {:.3e}): a nearly double root of Phi or a zero of B near theta in [{}, {}]",
-                    coefficients[0][0] / 2.0, theta[0], theta[1]
-                )));
+            let stalled = best.as_ref().is_some_and(|(t, _)| tail >= *t);
+            if !stalled {
+                best = Some((tail, coefficients));
+            }
+            if stalled || n >= MAX_NODES {
+                return match best {
+                    Some((t, c)) if t <= FLOOR => Ok(c),
+                    _ => Err(singular(&format!(
+                        "the theta quadrature does not converge with {n} nodes (tail {tail:.1e} of dt/ds): a nearly double root of Phi or a zero of B near theta in [{}, {}]",
+                        theta[0], theta[1]
+                    ))),
+                };
             }
             n *= 2;
         }
