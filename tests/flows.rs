@@ -39,7 +39,7 @@ fn distance(a: &[f64], b: &[f64]) -> f64 {
 fn cases() -> Vec<(routh::Body, Condition, Field)> {
     let mut out = Vec::new();
     for b in [free_body(), body()] {
-        for c in [Condition::Cond, Condition::Cond2] {
+        for c in [Condition::Cond, Condition::Cond2, Condition::Conformal] {
             for f in [Field::X1, Field::X2, Field::XHat2] {
                 out.push((b, c, f));
             }
@@ -154,6 +154,33 @@ fn conformal_form_at_b_zero_is_the_same_curve_with_the_time_change() {
     let worst = conformal_defect(-1.0, &free_body()).max(conformal_defect(-1.0, &body()));
     assert!(worst < TOLERANCE, "{worst:e}");
     assert!(conformal_defect(1.0, &free_body()) > TOLERANCE);
+}
+
+/// The same at b = 0 with the quadrature: the theta quadrature of P_f dH1 (beta of P_f is a
+/// function of gamma3) taken at tau, against the motion X by DOP853 at
+/// `t(tau) = -2 int beta dtau` (the time change itself by composite Gauss-Legendre along the
+/// quadrature's trajectory, 40 panels of 20 nodes on [0, tau]).
+#[test]
+fn conformal_quadrature_with_the_time_change_is_the_motion_at_b_zero() {
+    let rule = routh::quadrature::gauss::GaussLegendre::new(20);
+    for b in [free_body(), body()] {
+        let pf = Condition::Conformal.bracket(b, 0.0);
+        for x0 in (Sample { seed: 9, count: 6 }).points_jellett_zero(&b) {
+            let Ok(flow) = Flow::new(pf, Field::X1, &x0) else {
+                continue;
+            };
+            let beta = |x: &[f64; 6]| pf.alpha_beta(&[x[0], x[1], x[2]]).1;
+            let tau = 2.0 / beta(&x0).abs();
+            let panels = 40;
+            let h = tau / panels as f64;
+            let t: f64 = (0..panels)
+                .map(|k| -2.0 * h * rule.integrate(|u| beta(&flow.state_at((k as f64 + u) * h))))
+                .sum();
+            let x = dop853(|y| real_field(&b, y), x0, t);
+            let d = distance(&flow.state_at(tau), &x);
+            assert!(d < TOLERANCE, "G = {}: {d:e}", b.gravity);
+        }
+    }
 }
 
 /// The largest distance between the two curves with `dt/dtau = 2 sign beta`.

@@ -35,10 +35,10 @@ pub struct Args {
     /// X1 = P dH1, X2 = P dH2 or Xhat2 = P dK (section 3.2; docs/flows.md).
     #[arg(long, value_name = "X1|X2|Xhat2")]
     pub flow: Option<routh::poisson::flows::Field>,
-    /// With --flow: the beta of the bracket, (cond) or (cond2).
+    /// With --flow: the beta of the bracket, (cond), (cond2) or the conformal P_f (cham-vp).
     #[arg(
         long,
-        value_name = "cond|cond2",
+        value_name = "cond|cond2|conformal",
         default_value = "cond",
         requires = "flow"
     )]

@@ -121,16 +121,20 @@ pub enum Condition {
     Cond,
     /// (cond2): X = g^1 X1 + g^2 X^2 (g-eq2), P compatible with P0.
     Cond2,
+    /// The bivector P_f of the conformally Hamiltonian form (cham-vp): `alpha = -R`,
+    /// `beta = -g (r, I r)/(gamma, I r)` (a function of gamma3 on the sphere, so the same
+    /// quadrature applies); at b = 0, X = -1/(2 beta) P_f dH1. The given alpha is ignored.
+    Conformal,
 }
 
 impl Condition {
     /// The first bracket (p-br) with constant alpha and this beta.
     pub fn bracket(&self, body: crate::Body, alpha: f64) -> FirstBracket {
-        let beta = match self {
-            Condition::Cond => Beta::Cond,
-            Condition::Cond2 => Beta::Cond2,
-        };
-        FirstBracket::new(body, Alpha::constant(alpha), beta)
+        match self {
+            Condition::Cond => FirstBracket::new(body, Alpha::constant(alpha), Beta::Cond),
+            Condition::Cond2 => FirstBracket::new(body, Alpha::constant(alpha), Beta::Cond2),
+            Condition::Conformal => FirstBracket::conformal(body),
+        }
     }
 
     /// The name on the command line: `cond`, `cond2`.
@@ -138,6 +142,7 @@ impl Condition {
         match self {
             Condition::Cond => "cond",
             Condition::Cond2 => "cond2",
+            Condition::Conformal => "conformal",
         }
     }
 }
@@ -149,10 +154,11 @@ impl FromStr for Condition {
         match s {
             "cond" => Ok(Condition::Cond),
             "cond2" => Ok(Condition::Cond2),
+            "conformal" => Ok(Condition::Conformal),
             _ => Err(ParseNameError {
                 what: "condition",
                 given: s.into(),
-                expected: "cond or cond2",
+                expected: "cond, cond2 or conformal",
             }),
         }
     }
