@@ -6,6 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod animate;
+pub mod ball;
 pub mod body;
 pub mod case;
 pub mod differential;
@@ -25,6 +26,7 @@ pub mod state;
 pub mod steady;
 pub mod table;
 
+pub use ball::{AsBall, Ball, Model};
 pub use body::Body;
 pub use error::{Result, RouthError};
 pub use state::State;

@@ -1,10 +1,14 @@
 //! Integration of a case along the field (mg-eq), with the integrals (int-g), (raus-int)
 //! tracked at every step, dense-output samples, and optional projection onto their level set.
 
+use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
-use crate::integrals::{Integrals, INTEGRAL_NAMES};
-use crate::integrate::{rk4, Dop853, Method, OdeSystem, Options, Stats};
+use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::{
+    drive, Control, Dop853, Drive, IntegrateError, Method, OdeSystem, Options, Projection, Rk4,
+    Stepper,
+};
 use crate::projection::LevelSet;
 use crate::state::State;
 use serde::Serialize;
@@ -58,7 +62,8 @@ pub struct Summary {
     pub initial_state: State,
     /// The state at t_end.
     pub final_state: State,
-    /// Drift of each integral, by name (H1, H2, H3, H4, K; H2 and K only for I1 = I2).
+    /// Drift of each integral of the ball's model, by name (H1, H2, H3, H4, K, MM, Mgamma;
+    /// see [`Integrals`]).
     pub integrals: std::collections::BTreeMap<&'static str, Drift>,
     /// Wall time of the integration in seconds, measured with [`std::time::Instant`] inside
     /// [`run`]: the steps, the tracking of the integrals, the projections and the samples
@@ -67,24 +72,24 @@ pub struct Summary {
 }
 
 struct DriftTracker {
-    initial: [Option<f64>; 5],
-    max: [f64; 5],
-    last: [Option<f64>; 5],
+    initial: [Option<f64>; 7],
+    max: [f64; 7],
+    last: [Option<f64>; 7],
 }
 
 impl DriftTracker {
-    fn new(body: &Body, x0: &[f64; 6]) -> Self {
-        let initial = Integrals::at(body, x0).values();
+    fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+        let initial = Integrals::at(body, x0).all();
         DriftTracker {
             initial,
-            max: [0.0; 5],
+            max: [0.0; 7],
             last: initial,
         }
     }
 
-    fn observe(&mut self, body: &Body, x: &[f64; 6]) {
-        self.last = Integrals::at(body, x).values();
-        for i in 0..5 {
+    fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+        self.last = Integrals::at(body, x).all();
+        for i in 0..7 {
             if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
                 let scale = if h0 == 0.0 { 1.0 } else { h0.abs() };
                 self.max[i] = self.max[i].max((h - h0).abs() / scale);
@@ -93,10 +98,10 @@ impl DriftTracker {
     }
 
     fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
-        (0..5)
+        (0..7)
             .filter_map(|i| {
                 Some((
-                    INTEGRAL_NAMES[i],
+                    ALL_INTEGRAL_NAMES[i],
                     Drift {
                         initial: self.initial[i]?,
                         last: self.last[i]?,
@@ -146,7 +151,7 @@ pub fn validate(settings: &Settings) -> Result<()> {
 /// `y0` over `[0, t_end]`. `on_sample(t, y)` receives the equally spaced samples; the
 /// integrals are tracked on the reduced part at every step end and sample.
 pub fn run<S: OdeSystem<N>, const N: usize>(
-    body: &Body,
+    body: &impl AsBall,
     sys: &S,
     y0: [f64; N],
     settings: &Settings,
@@ -163,7 +168,6 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             y[..6].copy_from_slice(&x);
         }
     };
-    let mut drift = DriftTracker::new(body, &x0);
     let times: Vec<f64> = (0..settings.samples)
         .map(|i| {
             if i + 1 == settings.samples {
@@ -173,81 +177,37 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             }
         })
         .collect();
-    let mut next = 0;
-    let mut emit = |t: f64, y: &[f64; N], drift: &mut DriftTracker| -> Result<()> {
-        drift.observe(body, &reduced(y));
-        on_sample(t, y)
-    };
-    while next < times.len() && times[next] == 0.0 {
-        emit(0.0, &y0, &mut drift)?;
-        next += 1;
-    }
-    let (y_end, stats) = match settings.method {
+    let mut stepper: Box<dyn Stepper<N> + '_> = match settings.method {
         Method::Dop853 => {
             let opts = Options {
                 rtol: settings.rtol,
                 atol: settings.atol,
                 ..Options::default()
             };
-            let mut solver =
-                Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?;
-            if settings.t_end == 0.0 {
-                (y0, Stats::default())
-            } else {
-                loop {
-                    let done = solver.step().map_err(integrate_error)?;
-                    if level.is_some() {
-                        let mut y = *solver.y();
-                        project(&mut y);
-                        solver.set_state(y);
-                    }
-                    drift.observe(body, &reduced(solver.y()));
-                    let t = solver.t();
-                    while next < times.len() && times[next] <= t {
-                        let y = if times[next] == t {
-                            *solver.y()
-                        } else {
-                            solver.dense(times[next])
-                        };
-                        emit(times[next], &y, &mut drift)?;
-                        next += 1;
-                    }
-                    if done {
-                        break (*solver.y(), solver.stats());
-                    }
-                }
-            }
+            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?)
         }
-        Method::Rk4 { steps } => {
-            let h = settings.t_end / steps as f64;
-            let mut y = y0;
-            let mut stats = Stats::default();
-            for n in 0..steps {
-                let t0 = n as f64 * h;
-                let t1 = if n + 1 == steps {
-                    settings.t_end
-                } else {
-                    t0 + h
-                };
-                let (mut y1, s) = rk4(sys, t0, y, t1, 1, |_, _| {});
-                project(&mut y1);
-                stats.steps += s.steps;
-                stats.rhs_evals += s.rhs_evals;
-                drift.observe(body, &reduced(&y1));
-                while next < times.len() && times[next] <= t1 {
-                    let ys = if times[next] == t1 {
-                        y1
-                    } else {
-                        rk4(sys, t0, y, times[next], 1, |_, _| {}).0
-                    };
-                    emit(times[next], &ys, &mut drift)?;
-                    next += 1;
-                }
-                y = y1;
-            }
-            (y, stats)
-        }
+        Method::Rk4 { steps } => Box::new(Rk4::new(sys, 0.0, y0, settings.t_end, steps)),
     };
+    let plan = Drive {
+        samples: &times,
+        project: level.is_some().then_some(&project as Projection<'_, N>),
+        event: None,
+    };
+    let drift = std::cell::RefCell::new(DriftTracker::new(body, &x0));
+    let outcome = drive(
+        stepper.as_mut(),
+        &plan,
+        &mut |t, y| {
+            drift.borrow_mut().observe(body, &reduced(y));
+            on_sample(t, y)
+        },
+        &mut |_, y| {
+            drift.borrow_mut().observe(body, &reduced(y));
+            Ok(Control::Continue)
+        },
+    )?;
+    let (y_end, stats) = (outcome.y, outcome.stats);
+    let drift = drift.into_inner();
     if y_end.iter().any(|v| !v.is_finite()) {
         return Err(RouthError::Integrate(format!(
             "the state became non-finite before t = {}",
@@ -268,15 +228,21 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     })
 }
 
-fn integrate_error(e: crate::integrate::IntegrateError) -> RouthError {
+fn integrate_error(e: IntegrateError) -> RouthError {
     RouthError::Integrate(e.to_string())
+}
+
+impl From<IntegrateError> for RouthError {
+    fn from(e: IntegrateError) -> Self {
+        integrate_error(e)
+    }
 }
 
 /// The reduced field (mg-eq) of a body as an [`OdeSystem`].
 #[derive(Debug, Clone, Copy)]
-pub struct ReducedSystem<'a>(pub &'a Body);
+pub struct ReducedSystem<'a, B = Body>(pub &'a B);
 
-impl OdeSystem<6> for ReducedSystem<'_> {
+impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
         crate::field::vector_field(self.0, y)

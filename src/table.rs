@@ -151,7 +151,7 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
         .map(str::to_string)
         .collect();
     let mut table = Table::new(&case.source, names);
-    let body = &case.body;
+    let body = &case.ball;
     run(
         body,
         &FullMotion { body },
