@@ -45,26 +45,10 @@ pub struct Integration {
 }
 
 impl Integration {
-    /// Check the settings: t_end finite and >= 0; rtol, atol finite and > 0.
+    /// Check the settings with the one validation of the library,
+    /// [`crate::simulate::validate_span`].
     pub fn validate(&self) -> Result<()> {
-        check_option(
-            "t_end",
-            self.t_end,
-            self.t_end.is_finite() && self.t_end >= 0.0,
-            "must be finite and >= 0",
-        )?;
-        check_option(
-            "rtol",
-            self.rtol,
-            self.rtol.is_finite() && self.rtol > 0.0,
-            "must be finite and > 0",
-        )?;
-        check_option(
-            "atol",
-            self.atol,
-            self.atol.is_finite() && self.atol > 0.0,
-            "must be finite and > 0",
-        )
+        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)
     }
 }
 

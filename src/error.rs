@@ -93,7 +93,7 @@ pub enum RouthError {
     },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
-    Integrate(String),
+    Integrate(#[from] crate::integrate::IntegrateError),
     /// A table of samples (a CSV file of `routh simulate`) that cannot be used.
     #[error("{origin}: {message}")]
     Table {

@@ -6,16 +6,17 @@ use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
 use crate::integrate::{
-    drive, Control, Dop853, Drive, IntegrateError, Method, OdeSystem, Options, Projection, Rk4,
-    Stepper,
+    drive, Control, Dop853, Drive, EventFn, IntegrateError, Method, OdeSystem, Options, Projection,
+    Rk4, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
 use serde::Serialize;
+use std::cell::RefCell;
 use std::time::Instant;
 
 /// Settings of one simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Settings {
     /// The integrator.
     pub method: Method,
@@ -118,8 +119,24 @@ fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
     std::array::from_fn(|i| y[i])
 }
 
-/// Validate the settings; each violation names the option.
-pub fn validate(settings: &Settings) -> Result<()> {
+impl Default for Settings {
+    /// The one set of defaults of the library, the CLI and Python: DOP853 at
+    /// rtol = atol = 1e-12 over [0, 100], no projection, no samples.
+    fn default() -> Self {
+        Settings {
+            method: Method::Dop853,
+            t_end: 100.0,
+            rtol: 1e-12,
+            atol: 1e-12,
+            project: false,
+            samples: 0,
+        }
+    }
+}
+
+/// The one validation of the time span and tolerances (used by [`validate`] and by case
+/// files): t_end finite and >= 0; rtol, atol finite and > 0. Each violation names the option.
+pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
     let bad = |name: &'static str, value: f64, rule: &'static str| {
         Err(RouthError::Option {
             name,
@@ -127,21 +144,28 @@ pub fn validate(settings: &Settings) -> Result<()> {
             rule,
         })
     };
-    if !(settings.t_end.is_finite() && settings.t_end >= 0.0) {
-        return bad("t_end", settings.t_end, "must be finite and >= 0");
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return bad("t_end", t_end, "must be finite and >= 0");
     }
-    if !(settings.rtol.is_finite() && settings.rtol > 0.0) {
-        return bad("rtol", settings.rtol, "must be finite and > 0");
+    if !(rtol.is_finite() && rtol > 0.0) {
+        return bad("rtol", rtol, "must be finite and > 0");
     }
-    if !(settings.atol.is_finite() && settings.atol > 0.0) {
-        return bad("atol", settings.atol, "must be finite and > 0");
+    if !(atol.is_finite() && atol > 0.0) {
+        return bad("atol", atol, "must be finite and > 0");
     }
+    Ok(())
+}
+
+/// Validate the settings ([`validate_span`] and the sample count); each violation names the
+/// option.
+pub fn validate(settings: &Settings) -> Result<()> {
+    validate_span(settings.t_end, settings.rtol, settings.atol)?;
     if settings.samples == 1 {
-        return bad(
-            "samples",
-            1.0,
-            "must be 0 or >= 2 (the samples include both ends)",
-        );
+        return Err(RouthError::Option {
+            name: "samples",
+            value: "1".into(),
+            rule: "must be 0 or >= 2 (the samples include both ends)",
+        });
     }
     Ok(())
 }
@@ -149,7 +173,8 @@ pub fn validate(settings: &Settings) -> Result<()> {
 /// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`
 /// (further components, such as the orientation of the full motion, follow it), from
 /// `y0` over `[0, t_end]`. `on_sample(t, y)` receives the equally spaced samples; the
-/// integrals are tracked on the reduced part at every step end and sample.
+/// integrals are tracked on the reduced part at every step end and sample. A failed
+/// integration is an error ([`RouthError::Integrate`]); [`integrate_observed`] tells more.
 pub fn run<S: OdeSystem<N>, const N: usize>(
     body: &impl AsBall,
     sys: &S,
@@ -157,6 +182,41 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     settings: &Settings,
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
 ) -> Result<Summary> {
+    let observed = integrate_observed(body, sys, y0, settings, None, on_sample, &mut |_| {})?;
+    match observed.failure {
+        Some(e) => Err(e.into()),
+        None => Ok(observed.summary),
+    }
+}
+
+/// What [`integrate_observed`] returns: the summary, how the run stopped, the time reached,
+/// and the integrator's failure (then the summary holds the state reached).
+#[derive(Debug, Clone)]
+pub struct Observed<const N: usize> {
+    /// The summary of the run (up to the failure, if any).
+    pub summary: Summary,
+    /// How the driver stopped (meaningless after a failure).
+    pub stop: Stop<N>,
+    /// The time reached.
+    pub t: f64,
+    /// The integrator's error, if it failed.
+    pub failure: Option<IntegrateError>,
+}
+
+/// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: as [`run`], with an
+/// optional event function and `on_step(stepper)` called after each step (for its dense
+/// output). Invalid settings and errors of `on_sample` are errors; a failure of the
+/// integrator is reported in [`Observed::failure`] with the state reached.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    y0: [f64; N],
+    settings: &Settings,
+    event: Option<EventFn<'_, N>>,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+    on_step: &mut dyn FnMut(&dyn Stepper<N>),
+) -> Result<Observed<N>> {
     validate(settings)?;
     let start = Instant::now();
     let x0 = reduced(&y0);
@@ -184,16 +244,16 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
                 atol: settings.atol,
                 ..Options::default()
             };
-            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?)
+            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts)?)
         }
         Method::Rk4 { steps } => Box::new(Rk4::new(sys, 0.0, y0, settings.t_end, steps)),
     };
     let plan = Drive {
         samples: &times,
         project: level.is_some().then_some(&project as Projection<'_, N>),
-        event: None,
+        event,
     };
-    let drift = std::cell::RefCell::new(DriftTracker::new(body, &x0));
+    let drift = RefCell::new(DriftTracker::new(body, &x0));
     let outcome = drive(
         stepper.as_mut(),
         &plan,
@@ -201,41 +261,36 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             drift.borrow_mut().observe(body, &reduced(y));
             on_sample(t, y)
         },
-        &mut |_, y| {
+        &mut |_, y, stepper| {
             drift.borrow_mut().observe(body, &reduced(y));
+            on_step(stepper);
             Ok(Control::Continue)
         },
-    )?;
-    let (y_end, stats) = (outcome.y, outcome.stats);
-    let drift = drift.into_inner();
-    if y_end.iter().any(|v| !v.is_finite()) {
-        return Err(RouthError::Integrate(format!(
-            "the state became non-finite before t = {}",
-            settings.t_end
-        )));
-    }
-    Ok(Summary {
-        method: settings.method.to_string(),
-        t_end: settings.t_end,
-        steps: stats.steps,
-        rejected: stats.rejected,
-        rhs_evals: stats.rhs_evals,
-        projected: settings.project,
-        initial_state: State::from_array(&x0),
-        final_state: State::from_array(&reduced(&y_end)),
-        integrals: drift.report(),
-        elapsed_s: start.elapsed().as_secs_f64(),
+    );
+    let (stop, t, y_end, failure) = match outcome {
+        Ok(o) if o.y.iter().all(|v| v.is_finite()) => (o.stop, o.t, o.y, None),
+        Ok(o) => (o.stop, o.t, o.y, Some(IntegrateError::NonFinite { t: o.t })),
+        Err(RouthError::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
+        Err(other) => return Err(other),
+    };
+    let stats = stepper.stats();
+    Ok(Observed {
+        summary: Summary {
+            method: settings.method.to_string(),
+            t_end: settings.t_end,
+            steps: stats.steps,
+            rejected: stats.rejected,
+            rhs_evals: stats.rhs_evals,
+            projected: settings.project,
+            initial_state: State::from_array(&x0),
+            final_state: State::from_array(&reduced(&y_end)),
+            integrals: drift.into_inner().report(),
+            elapsed_s: start.elapsed().as_secs_f64(),
+        },
+        stop,
+        t,
+        failure,
     })
-}
-
-fn integrate_error(e: IntegrateError) -> RouthError {
-    RouthError::Integrate(e.to_string())
-}
-
-impl From<IntegrateError> for RouthError {
-    fn from(e: IntegrateError) -> Self {
-        integrate_error(e)
-    }
 }
 
 /// The reduced field (mg-eq) of a body as an [`OdeSystem`].

@@ -75,7 +75,7 @@ fn the_observer_stops_a_run_between_steps() {
         &mut solver,
         &Drive::default(),
         &mut |_, _| Ok(()),
-        &mut |_, _| {
+        &mut |_, _, _| {
             seen += 1;
             Ok(if seen == 5 {
                 Control::Stop
@@ -94,7 +94,7 @@ fn the_observer_stops_a_run_between_steps() {
         &mut solver,
         &Drive::default(),
         &mut |_, _| Ok(()),
-        &mut |_, _| Ok(Control::Continue),
+        &mut |_, _, _| Ok(Control::Continue),
     )
     .unwrap();
     assert_eq!(outcome.stop, Stop::Reached);
@@ -129,7 +129,7 @@ fn samples_and_events_work_on_both_steppers() {
                 got.push((t, y[0]));
                 Ok(())
             },
-            &mut |_, _| Ok(Control::Continue),
+            &mut |_, _, _| Ok(Control::Continue),
         )
         .unwrap();
         let Stop::Event { t, .. } = outcome.stop else {

@@ -5,6 +5,7 @@ use routh::case::{check_option, Case};
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{ExactSolution, Motion};
+use routh::table::csv_header;
 use routh::{Body, Result, RouthError, State};
 use serde::Serialize;
 use std::io::Write;
@@ -60,8 +61,8 @@ struct Summary {
     k: f64,
 }
 
-/// The CSV header of `routh exact` samples.
-const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,theta,H1,H3,K";
+/// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
+const EXACT_COLUMNS: [&str; 4] = ["theta", "H1", "H3", "K"];
 
 fn csv_row(body: &Body, t: f64, state: &State) -> String {
     let x = state.to_array();
@@ -155,7 +156,7 @@ pub fn run(args: Args) -> Result<()> {
                 path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
                 source,
             };
-            writeln!(w, "{CSV_HEADER}").map_err(io)?;
+            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
             for i in 0..n {
                 let ti = t * i as f64 / (n - 1) as f64;
                 writeln!(w, "{}", csv_row(&body, ti, &exact.state_at(ti))).map_err(io)?;

@@ -7,6 +7,7 @@ use routh::integrate::{Method, OdeSystem};
 use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
+use routh::table::csv_header;
 use routh::{Result, RouthError};
 use std::path::PathBuf;
 
@@ -65,9 +66,6 @@ pub fn settings(case: &Case, args: &Args, samples: usize) -> Settings {
         samples,
     }
 }
-
-/// The CSV header of the reduced state and integrals.
-pub const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,H1,H2,H3,H4,K";
 
 /// One CSV row: t, gamma, M, omega and the integrals (empty where not an integral).
 pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
@@ -151,7 +149,8 @@ fn execute<S: OdeSystem<N>, const N: usize>(
             source,
         };
         let separator = if extra_header.is_empty() { "" } else { "," };
-        writeln!(w, "{CSV_HEADER}{separator}{extra_header}").map_err(io)?;
+        let header = csv_header(&INTEGRAL_NAMES);
+        writeln!(w, "{header}{separator}{extra_header}").map_err(io)?;
         summary = Some(run(&case.ball, system, y0, settings, &mut |t, y| {
             let x: [f64; 6] = std::array::from_fn(|i| y[i]);
             let mut row = csv_row(case, t, &x);

@@ -84,6 +84,13 @@ impl FromStr for Method {
     }
 }
 
+impl serde::Serialize for Method {
+    /// As its name, `"dop853"` or `"rk4:<steps>"`.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
 impl fmt::Display for Method {
     /// Writes `"dop853"` or `"rk4:<steps>"`, which [`FromStr`] parses back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -323,14 +330,15 @@ pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), Integra
 /// projected, the samples before it are reported, `on_step` sees it and the run ends with
 /// [`Stop::Event`]; otherwise the step end is projected (`set_state`), the samples up to it
 /// are reported through `on_sample` from the dense output (a sample on the step end gets the
-/// projected state), and `on_step(t, y)` sees the step end and may stop the run. A zero of
+/// projected state), and `on_step(t, y, stepper)` sees the step end (and the stepper, for its
+/// dense output on the step) and may stop the run. A zero of
 /// `event` exactly at `t0` is not an event; samples at `t0` are reported first. Errors of the
 /// stepper are converted into `E`; errors of the callbacks end the run.
 pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
     stepper: &mut St,
     run: &Drive<'_, N>,
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<(), E>,
-    on_step: &mut dyn FnMut(f64, &[f64; N]) -> Result<Control, E>,
+    on_step: &mut dyn FnMut(f64, &[f64; N], &St) -> Result<Control, E>,
 ) -> Result<Outcome<N>, E> {
     let (t0, t_end, y0) = (stepper.t(), stepper.t_end(), *stepper.y());
     let dir = if t_end >= t0 { 1.0 } else { -1.0 };
@@ -368,7 +376,7 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
                     on_sample(samples[next], &stepper.dense(samples[next]))?;
                     next += 1;
                 }
-                on_step(te, &ye)?;
+                on_step(te, &ye, stepper)?;
                 return Ok(Outcome {
                     stop: Stop::Event { t: te, y: ye },
                     t: te,
@@ -395,7 +403,7 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
             on_sample(s, &y)?;
             next += 1;
         }
-        let control = on_step(t, stepper.y())?;
+        let control = on_step(t, stepper.y(), stepper)?;
         let stop = match (control, done) {
             (Control::Stop, false) => Stop::Stopped { t },
             (_, true) => Stop::Reached,
@@ -446,7 +454,7 @@ pub fn solve<S: OdeSystem<N>, const N: usize>(
         project,
         event,
     };
-    let outcome = drive(&mut solver, &run, &mut |_, _| Ok(()), &mut |t, y| {
+    let outcome = drive(&mut solver, &run, &mut |_, _| Ok(()), &mut |t, y, _| {
         observer(t, y);
         Ok(Control::Continue)
     })?;
@@ -490,7 +498,7 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
             on_sample(t, y);
             Ok(())
         },
-        &mut |_, _| Ok(Control::Continue),
+        &mut |_, _, _| Ok(Control::Continue),
     )?;
     Ok((outcome.y, outcome.stats))
 }

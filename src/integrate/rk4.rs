@@ -168,7 +168,7 @@ pub fn rk4<S: OdeSystem<N>, const N: usize>(
         &mut stepper,
         &super::Drive::default(),
         &mut |_, _| Ok(()),
-        &mut |t, y| {
+        &mut |t, y, _| {
             observer(t, y);
             Ok(super::Control::Continue)
         },
