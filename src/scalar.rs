@@ -54,9 +54,16 @@ impl<T: DualNum<Primitive = f64> + Copy> Scalar for T {
         DualNum::recip(&self)
     }
 
+    /// Fused only where the target has a fused multiply-add instruction: without it
+    /// (x86-64 without `target-cpu`), `f64::mul_add` is a call to a software `fma`, which
+    /// made the default trajectory 30 % slower (BENCHMARKS.md).
     #[inline(always)]
     fn mul_add(self, a: Self, b: Self) -> Self {
-        DualNum::mul_add(&self, a, b)
+        if cfg!(target_feature = "fma") {
+            DualNum::mul_add(&self, a, b)
+        } else {
+            self * a + b
+        }
     }
 }
 
