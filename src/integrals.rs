@@ -100,7 +100,7 @@ pub fn measure_density<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
 ///
 /// Which are integrals is decided by [`Ball::model`]. For the Routh sphere (I1 = I2, centre of
 /// mass on e3) H1, H2, H3, H4, K. For a body with I1 != I2 (the remark after (raus-int), after
-/// [bm02]) Jellett's H3 and Routh's K are not; with the centre of mass on e3 the quadratic
+/// \[bm02\]) Jellett's H3 and Routh's K are not; with the centre of mass on e3 the quadratic
 /// integral survives without gravity in the form (int) `M^2 - m r^2 H1` (which equals the H2
 /// of [`quadratic_integral`] when I1 = I2, claim `H2.relation` of the audit). The Chaplygin
 /// ball has (M, M) and (M, gamma) instead (its H2 of (int) is `(M, M) - m R^2 H1`, not
