@@ -33,28 +33,28 @@ fn field_and_integrals(c: &mut Criterion) {
     let case = default_case();
     let x = case.initial.to_array();
     c.bench_function("vector_field (default case)", |b| {
-        b.iter(|| vector_field::<f64>(black_box(&case.body), black_box(&x)))
+        b.iter(|| vector_field::<f64>(black_box(&case.ball), black_box(&x)))
     });
     // Each evaluation feeds the next, as the stages of a Runge-Kutta step do: this measures
     // the latency of the field rather than the throughput of independent evaluations.
     c.bench_function("vector_field chained (default case)", |b| {
         let mut y = x;
         b.iter(|| {
-            let f = vector_field::<f64>(black_box(&case.body), &y);
+            let f = vector_field::<f64>(black_box(&case.ball), &y);
             for (yi, fi) in y.iter_mut().zip(f) {
                 *yi += 1e-12 * fi;
             }
         })
     });
     c.bench_function("integrals H1..H4, K (default case)", |b| {
-        b.iter(|| Integrals::at(black_box(&case.body), black_box(&x)))
+        b.iter(|| Integrals::at(black_box(&case.ball), black_box(&x)))
     });
 }
 
 fn projection(c: &mut Criterion) {
     let case = default_case();
     let x0 = case.initial.to_array();
-    let level = LevelSet::through(&case.body, &x0);
+    let level = LevelSet::through(&case.ball, &x0);
     // A state off the level set by about the local error of one step at rtol = 1e-12.
     let perturbed = x0.map(|v| v * (1.0 + 1e-12));
     c.bench_function("projection onto the level set (default case)", |b| {
@@ -68,10 +68,10 @@ fn projection(c: &mut Criterion) {
 
 fn trajectory(c: &mut Criterion) {
     let case = default_case();
-    let system = ReducedSystem(&case.body);
+    let system = ReducedSystem(&case.ball);
     let x0 = case.initial.to_array();
     let simulate = || {
-        run(&case.body, &system, x0, &TRAJECTORY, &mut |_, _| Ok(()))
+        run(&case.ball, &system, x0, &TRAJECTORY, &mut |_, _| Ok(()))
             .expect("the default case integrates to t = 1000")
     };
     let summary = simulate();

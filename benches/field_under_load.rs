@@ -36,7 +36,7 @@ fn report(name: &str, ns: &[f64]) {
 
 fn main() {
     let case = Case::default_case().expect("the built-in default case is valid");
-    let body = case.body;
+    let body = case.body("").unwrap();
     let x = case.initial.to_array();
     let independent = batch_times(|| {
         for _ in 0..PER_BATCH {

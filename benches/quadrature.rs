@@ -14,7 +14,7 @@ const T_LONG: f64 = 1e6;
 
 fn quadrature(c: &mut Criterion) {
     let case = Case::default_case().unwrap();
-    let (body, x0) = (case.body, case.initial);
+    let (body, x0) = (case.body("").unwrap(), case.initial);
     let exact = ExactSolution::new(&body, &x0).unwrap();
     if let Motion::Nutation(nut) = &exact.motion {
         println!(
@@ -36,7 +36,7 @@ fn quadrature(c: &mut Criterion) {
 /// DOP853 from 0 to 1e6, timed once, with the distance to the quadrature at the end.
 fn dop853_once() {
     let case = Case::default_case().unwrap();
-    let (body, x0) = (case.body, case.initial);
+    let (body, x0) = (case.body("").unwrap(), case.initial);
     let opts = Options {
         rtol: case.integration.rtol,
         atol: case.integration.atol,

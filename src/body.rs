@@ -1,5 +1,6 @@
-//! The rolling body: parameters, the contact vector r, the inertia tensor about the contact
-//! point I_Q of (om-m), and Routh's function g of (rho).
+//! The ball with its centre of mass on the e3 axis, in the paper's parameters (m, R, a, I1,
+//! I2, I3, G): a [`Ball`] with `com = (0, 0, -a)`, and Routh's function g of (rho), which
+//! belongs to the Routh sphere I1 = I2.
 //!
 //! Conventions (the paper's variables, made explicit). The body frame is attached to the
 //! ball at its centre of mass, its axes principal; e3 is the symmetry axis. `gamma` is the
@@ -9,8 +10,9 @@
 //! `-a e3` from the geometric centre: with `a > 0` it lies on the side of `-e3`, and the
 //! height of the centre of mass above the plane is `(r, gamma) = R + a gamma3` on `|gamma| = 1`.
 
+use crate::ball::{AsBall, Ball, Model};
 use crate::error::{Result, RouthError};
-use crate::scalar::{dot, Scalar};
+use crate::scalar::Scalar;
 use serde::Serialize;
 
 /// Parameters of the ball: mass m, radius R, offset a of the centre of mass, principal
@@ -126,9 +128,10 @@ impl Body {
         Ok(())
     }
 
-    /// Whether the body is dynamically symmetric, I1 = I2 (the Routh sphere).
+    /// Whether the body is dynamically symmetric, I1 = I2 within the relative tolerance
+    /// [`MODEL_TOLERANCE`](crate::ball::MODEL_TOLERANCE): then it is the Routh sphere ([`Model::RouthSphere`]).
     pub fn is_symmetric(&self) -> bool {
-        self.i1 == self.i2
+        self.ball().model() == Model::RouthSphere
     }
 
     /// Fail with a clear message unless I1 = I2; `what` names the computation that needs it.
@@ -144,55 +147,23 @@ impl Body {
         }
     }
 
-    /// The vector from the centre of mass to the contact point, `r = (R gamma1, R gamma2, R gamma3 + a)`.
+    /// The vector from the centre of mass to the contact point, `r = (R gamma1, R gamma2, R gamma3 + a)`
+    /// (the [`Ball::contact_vector`] of `com = (0, 0, -a)`).
     #[inline(always)]
     pub fn contact_vector<D: Scalar>(&self, gamma: &[D; 3]) -> [D; 3] {
-        [
-            gamma[0] * self.radius,
-            gamma[1] * self.radius,
-            gamma[2] * self.radius + self.a,
-        ]
+        self.ball().contact_vector(gamma)
     }
 
-    /// Angular momentum about the contact point (om-m): `M = I_Q omega`,
-    /// `I_Q = I + m r^2 E - m r (x) r`.
+    /// Angular momentum about the contact point (om-m), [`Ball::angular_momentum`].
     #[inline(always)]
     pub fn angular_momentum<D: Scalar>(&self, gamma: &[D; 3], omega: &[D; 3]) -> [D; 3] {
-        let r = self.contact_vector(gamma);
-        let r2 = dot(&r, &r);
-        let ro = dot(&r, omega);
-        let inertia = [self.i1, self.i2, self.i3];
-        std::array::from_fn(|i| omega[i] * inertia[i] + (omega[i] * r2 - r[i] * ro) * self.m)
+        self.ball().angular_momentum(gamma, omega)
     }
 
-    /// Angular velocity `omega = I_Q^{-1} M` of (om-m), in closed form with one division.
-    ///
-    /// `I_Q = A - m r r^T` with the diagonal `A = diag(A_1, A_2, A_3)`, `A_i = I_i + m r^2`.
-    /// Sherman-Morrison gives
-    /// `omega = A^{-1} M + m (A^{-1} r)(r, A^{-1} M) / (1 - m (r, A^{-1} r))`.
-    /// Multiplying through by `det A = A_1 A_2 A_3` clears the three divisions by `A_i`:
-    /// with the cofactors `B_i = det A / A_i` (`B_1 = A_2 A_3`, ...), `b = (B_i r_i)` and
-    /// `c = (B_i M_i)`,
-    ///
-    /// `omega = (D c + m (r, c) b) / (D det A)`, `D = det A - m (r, b) = det I_Q`
-    ///
-    /// (the matrix determinant lemma). `D > 0` because each `m r_i^2 / A_i < r_i^2 / r^2`.
-    /// About 45 floating-point operations and a single division, instead of a general 3x3
-    /// solve or a division per `A_i` (16 ns instead of 18 for the whole field, BENCHMARKS.md).
-    /// `D det A` is of the size of `A_i^6`: finite and normal for `A_i` between 1e-50 and 1e50.
+    /// Angular velocity `omega = I_Q^{-1} M` of (om-m), [`Ball::angular_velocity`].
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
-        let r = self.contact_vector(gamma);
-        let mr2 = dot(&r, &r) * self.m;
-        let a = [mr2 + self.i1, mr2 + self.i2, mr2 + self.i3];
-        let cofactor = [a[1] * a[2], a[0] * a[2], a[0] * a[1]];
-        let det_a = a[0] * cofactor[0];
-        let b: [D; 3] = std::array::from_fn(|i| r[i] * cofactor[i]);
-        let c: [D; 3] = std::array::from_fn(|i| m_vec[i] * cofactor[i]);
-        let det_iq = det_a - dot(&r, &b) * self.m;
-        let coupling = dot(&r, &c) * self.m;
-        let scale = (det_iq * det_a).recip();
-        std::array::from_fn(|i| (c[i] * det_iq + b[i] * coupling) * scale)
+        self.ball().angular_velocity(gamma, m_vec)
     }
 
     /// Routh's function of (rho),
@@ -209,25 +180,30 @@ impl Body {
             .sqrt()
     }
 
-    /// Potential energy of gravity `U = m G (r, gamma)`: m G times the height of the centre of
-    /// mass above the plane. The paper prints `U = -m g (r, gamma)`; with gamma pointing into
-    /// the plane, only the `+` sign pulls the ball toward the plane (see the README).
+    /// Potential energy of gravity `U = m G (r, gamma)`, [`Ball::potential`].
     #[inline(always)]
     pub fn potential<D: Scalar>(&self, gamma: &[D; 3]) -> D {
-        let r = self.contact_vector(gamma);
-        dot(&r, gamma) * (self.m * self.gravity)
+        self.ball().potential(gamma)
     }
 
-    /// `dU/dgamma = m G (2 R gamma + a e3)`, the gradient of [`Body::potential`]
-    /// (checked against automatic differentiation of `potential` in the tests).
+    /// `dU/dgamma = m G (2 R gamma + a e3)`, [`Ball::potential_gradient`].
     #[inline(always)]
     pub fn potential_gradient<D: Scalar>(&self, gamma: &[D; 3]) -> [D; 3] {
-        let k = self.m * self.gravity;
-        [
-            gamma[0] * (2.0 * self.radius * k),
-            gamma[1] * (2.0 * self.radius * k),
-            gamma[2] * (2.0 * self.radius * k) + self.a * k,
-        ]
+        self.ball().potential_gradient(gamma)
+    }
+}
+
+impl AsBall for Body {
+    /// The ball with `com = (0, 0, -a)`.
+    #[inline(always)]
+    fn ball(&self) -> Ball {
+        Ball {
+            m: self.m,
+            radius: self.radius,
+            inertia: [self.i1, self.i2, self.i3],
+            com: [0.0, 0.0, -self.a],
+            gravity: self.gravity,
+        }
     }
 }
 

@@ -6,7 +6,7 @@
 //! [body]
 //! m = 1.0
 //! R = 1.0
-//! a = 0.3
+//! a = 0.3         # or com = [x, y, z], exactly one of the two (a is com = [0, 0, -a])
 //! I1 = 0.4
 //! I3 = 0.5        # I2 optional, defaults to I1
 //! G = 9.81
@@ -22,6 +22,7 @@
 //!
 //! Unknown keys and missing fields are errors that name the key and the file.
 
+use crate::ball::{AsBall, Ball};
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::state::{Normalise, State};
@@ -44,26 +45,10 @@ pub struct Integration {
 }
 
 impl Integration {
-    /// Check the settings: t_end finite and >= 0; rtol, atol finite and > 0.
+    /// Check the settings with the one validation of the library,
+    /// [`crate::simulate::validate_span`].
     pub fn validate(&self) -> Result<()> {
-        check_option(
-            "t_end",
-            self.t_end,
-            self.t_end.is_finite() && self.t_end >= 0.0,
-            "must be finite and >= 0",
-        )?;
-        check_option(
-            "rtol",
-            self.rtol,
-            self.rtol.is_finite() && self.rtol > 0.0,
-            "must be finite and > 0",
-        )?;
-        check_option(
-            "atol",
-            self.atol,
-            self.atol.is_finite() && self.atol > 0.0,
-            "must be finite and > 0",
-        )
+        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)
     }
 }
 
@@ -86,8 +71,8 @@ pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str
 pub struct Case {
     /// Where it came from (a path or `<built-in default>`).
     pub source: String,
-    /// The body.
-    pub body: Body,
+    /// The ball (the model: any moments, any centre of mass).
+    pub ball: Ball,
     /// The initial state.
     pub initial: State,
     /// The integration settings.
@@ -102,7 +87,8 @@ struct BodyTable {
     m: f64,
     #[serde(rename = "R")]
     radius: f64,
-    a: f64,
+    a: Option<f64>,
+    com: Option<[f64; 3]>,
     #[serde(rename = "I1")]
     i1: f64,
     #[serde(rename = "I2")]
@@ -172,22 +158,32 @@ impl Case {
         let body: BodyTable = table(&document, "body").map_err(&err)?;
         let initial: InitialTable = table(&document, "initial").map_err(&err)?;
         let integration: Integration = table(&document, "integration").map_err(&err)?;
-        let body = Body::new(
-            body.m,
-            body.radius,
-            body.a,
-            body.i1,
-            body.i2.unwrap_or(body.i1),
-            body.i3,
-            body.gravity,
-        )?;
+        let inertia = [body.i1, body.i2.unwrap_or(body.i1), body.i3];
+        let ball = match (body.a, body.com) {
+            (Some(a), None) => Body::new(
+                body.m,
+                body.radius,
+                a,
+                inertia[0],
+                inertia[1],
+                inertia[2],
+                body.gravity,
+            )?
+            .ball(),
+            (None, Some(com)) => Ball::new(body.m, body.radius, inertia, com, body.gravity)?,
+            _ => {
+                return Err(err(
+                    "[body] needs exactly one of the keys `a` and `com`".into()
+                ));
+            }
+        };
         let normalise = if initial.normalize {
             Normalise::Rescale
         } else {
             Normalise::Reject
         };
         let state = match (initial.omega, initial.m) {
-            (Some(omega), None) => State::from_omega(&body, initial.gamma, omega, normalise)?,
+            (Some(omega), None) => State::from_omega(&ball, initial.gamma, omega, normalise)?,
             (None, Some(m)) => State::new(initial.gamma, m, normalise)?,
             _ => {
                 return Err(err(
@@ -198,11 +194,17 @@ impl Case {
         integration.validate()?;
         Ok(Case {
             source: source.to_string(),
-            body,
+            ball,
             initial: state,
             integration,
             document,
         })
+    }
+
+    /// The ball as a [`Body`] (the paper's parameters, centre of mass on e3); an
+    /// [`RouthError::OffAxis`] naming `what` for a centre of mass off the axis.
+    pub fn body(&self, what: &'static str) -> Result<Body> {
+        self.ball.axial_body(what)
     }
 
     /// A command's own table `[name]`, if present, deserialised with unknown keys rejected

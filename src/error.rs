@@ -40,6 +40,17 @@ pub enum RouthError {
         /// I2.
         i2: f64,
     },
+    /// A computation that needs the centre of mass on the e3 axis (a [`crate::Body`]: the
+    /// Routh sphere, its quadrature and geometry) was given a ball whose centre of mass is off it.
+    #[error(
+        "{what} needs the centre of mass on the e3 axis (com = (0, 0, -a)), but com = {com:?}"
+    )]
+    OffAxis {
+        /// What needs it.
+        what: &'static str,
+        /// The centre of mass offset of the ball.
+        com: [f64; 3],
+    },
     /// A state (gamma, M) that is not a point of the phase space.
     #[error("invalid state: {0}")]
     State(String),
@@ -82,7 +93,7 @@ pub enum RouthError {
     },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
-    Integrate(String),
+    Integrate(#[from] crate::integrate::IntegrateError),
     /// A table of samples (a CSV file of `routh simulate`) that cannot be used.
     #[error("{origin}: {message}")]
     Table {

@@ -1,8 +1,12 @@
-//! First integrals of (m-eq)/(mg-eq) and the density of the invariant measure (rho).
+//! First integrals of (m-eq)/(mg-eq) and the densities of invariant measures.
 //!
-//! All are written once, generic over [`Scalar`], so their gradients come from automatic
+//! Every ball ([`Ball`]) has the energy H1 and H4 = (gamma, gamma); the Routh sphere
+//! ([`Model::RouthSphere`]) adds Jellett's H3, Routh's K, H2 and the density 1/g of (rho); the
+//! Chaplygin ball ([`Model::Chaplygin`]) adds (M, M), (M, gamma) and Chaplygin's density. All
+//! are written once, generic over [`Scalar`], so their gradients come from automatic
 //! differentiation of this same code (see [`crate::differential`]).
 
+use crate::ball::{AsBall, Ball, Model};
 use crate::body::Body;
 use crate::scalar::{dot, split, Scalar};
 use serde::Serialize;
@@ -10,10 +14,11 @@ use serde::Serialize;
 /// Energy integral (int-g): `H1 = (M, omega) + 2U`, twice the total energy. With `G = 0`
 /// it is the `H1 = (M, omega)` of (int).
 #[inline]
-pub fn energy<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
+pub fn energy<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> D {
+    let ball = body.ball();
     let (gamma, m_vec) = split(x);
-    let omega = body.angular_velocity(&gamma, &m_vec);
-    dot(&m_vec, &omega) + body.potential(&gamma) * 2.0
+    let omega = ball.angular_velocity(&gamma, &m_vec);
+    dot(&m_vec, &omega) + ball.potential(&gamma) * 2.0
 }
 
 /// Jellett's integral (int): `H3 = (M, r)`.
@@ -57,60 +62,125 @@ pub fn quadratic_integral_free<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     dot(&m_vec, &m_vec) - dot(&r, &r) * dot(&m_vec, &omega) * body.m
 }
 
+/// Chaplygin's integral `(M, M)` of the ball with its centre of mass at the geometric centre
+/// ([`Model::Chaplygin`]): with `r = R gamma`, the rolling term `m dr/dt x (omega x r)` of
+/// (m-eq) is orthogonal to M there (Chaplygin 1903; Borisov, Mamaev, Regul. Chaotic Dyn. 7
+/// (2002), section 3.1).
+#[inline]
+pub fn momentum_squared<D: Scalar>(x: &[D; 6]) -> D {
+    let (_, m_vec) = split(x);
+    dot(&m_vec, &m_vec)
+}
+
+/// Chaplygin's area integral `(M, gamma)` of the Chaplygin ball (same references as
+/// [`momentum_squared`]).
+#[inline]
+pub fn area_integral<D: Scalar>(x: &[D; 6]) -> D {
+    let (gamma, m_vec) = split(x);
+    dot(&m_vec, &gamma)
+}
+
+/// Density `det(I_Q)^{-1/2}` of the invariant measure of the Chaplygin ball, with I_Q of
+/// (om-m): Chaplygin's density `(1 - D (gamma, A gamma))^{-1/2}`, `A = (I + D E)^{-1}`,
+/// `D = m R^2` (Borisov, Mamaev, Regul. Chaotic Dyn. 7 (2002), section 3.1), times the
+/// constant `det(I + D E)^{-1/2}` on `|gamma| = 1`, by the matrix determinant lemma. The
+/// condition `div(rho X) = 0` is checked by automatic differentiation in the tests.
+#[inline]
+pub fn chaplygin_density<D: Scalar>(ball: &Ball, x: &[D; 6]) -> D {
+    ball.inertia_determinant(&[x[0], x[1], x[2]]).sqrt().recip()
+}
+
 /// Density `1/g(gamma)` of the invariant measure (rho).
 #[inline]
 pub fn measure_density<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     body.routh_g(&[x[0], x[1], x[2]]).recip()
 }
 
-/// The integrals tracked along a trajectory, in the order of the CSV columns.
+/// The integrals tracked along a trajectory; the first five in the order of the CSV columns.
 ///
-/// For the Routh sphere (I1 = I2) all five are integrals. For a body with I1 != I2 (the
-/// remark after (raus-int), after [bm02]) Jellett's H3 and Routh's K are not; the quadratic
-/// integral survives without gravity in the form (int) `M^2 - m r^2 H1` (which equals the
-/// H2 of [`quadratic_integral`] when I1 = I2, claim `H2.relation` of the audit).
+/// Which are integrals is decided by [`Ball::model`]. For the Routh sphere (I1 = I2, centre of
+/// mass on e3) H1, H2, H3, H4, K. For a body with I1 != I2 (the remark after (raus-int), after
+/// \[bm02\]) Jellett's H3 and Routh's K are not; with the centre of mass on e3 the quadratic
+/// integral survives without gravity in the form (int) `M^2 - m r^2 H1` (which equals the H2
+/// of [`quadratic_integral`] when I1 = I2, claim `H2.relation` of the audit). The Chaplygin
+/// ball has (M, M) and (M, gamma) instead (its H2 of (int) is `(M, M) - m R^2 H1`, not
+/// tracked separately). Any other ball has only H1 and H4.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Integrals {
     /// Energy H1 (int-g).
     #[serde(rename = "H1")]
     pub h1: f64,
-    /// Quadratic integral H2; `None` for I1 != I2 with gravity, where there is none.
+    /// Quadratic integral H2; `None` where there is none.
     #[serde(rename = "H2")]
     pub h2: Option<f64>,
-    /// Jellett's H3; `None` for I1 != I2, where it is not an integral.
+    /// Jellett's H3; `None` unless the Routh sphere.
     #[serde(rename = "H3")]
     pub h3: Option<f64>,
     /// H4 = (gamma, gamma).
     #[serde(rename = "H4")]
     pub h4: f64,
-    /// Routh's K = g omega3; `None` for I1 != I2, where it is not an integral.
+    /// Routh's K = g omega3; `None` unless the Routh sphere.
     #[serde(rename = "K")]
     pub k: Option<f64>,
+    /// (M, M) of the Chaplygin ball ([`momentum_squared`]); `None` for other balls.
+    #[serde(rename = "MM", skip_serializing_if = "Option::is_none")]
+    pub mm: Option<f64>,
+    /// (M, gamma) of the Chaplygin ball ([`area_integral`]); `None` for other balls.
+    #[serde(rename = "Mgamma", skip_serializing_if = "Option::is_none")]
+    pub m_gamma: Option<f64>,
 }
 
-/// Names of the tracked integrals, in the order of [`Integrals::values`].
+/// Names of the integrals written as CSV columns, in the order of [`Integrals::values`].
 pub const INTEGRAL_NAMES: [&str; 5] = ["H1", "H2", "H3", "H4", "K"];
 
+/// Names of all tracked integrals, in the order of [`Integrals::all`].
+pub const ALL_INTEGRAL_NAMES: [&str; 7] = ["H1", "H2", "H3", "H4", "K", "MM", "Mgamma"];
+
 impl Integrals {
-    /// Evaluate all tracked integrals at `x`.
-    pub fn at(body: &Body, x: &[f64; 6]) -> Self {
-        let symmetric = body.is_symmetric();
-        let h2 = if symmetric {
-            Some(quadratic_integral(body, x))
-        } else {
-            (body.gravity == 0.0).then(|| quadratic_integral_free(body, x))
+    /// Evaluate the integrals of the ball's model at `x`.
+    pub fn at(body: &impl AsBall, x: &[f64; 6]) -> Self {
+        let ball = body.ball();
+        let model = ball.model();
+        let routh = match model {
+            Model::RouthSphere => ball.axial_body("Routh's integrals").ok(),
+            _ => None,
         };
+        let h2 = match &routh {
+            Some(body) => Some(quadratic_integral(body, x)),
+            None if ball.gravity == 0.0 && model == Model::General => ball
+                .axial_body("the quadratic integral (int)")
+                .ok()
+                .map(|body| quadratic_integral_free(&body, x)),
+            None => None,
+        };
+        let chaplygin = model == Model::Chaplygin;
         Integrals {
-            h1: energy(body, x),
+            h1: energy(&ball, x),
             h2,
-            h3: symmetric.then(|| jellett(body, x)),
+            h3: routh.as_ref().map(|body| jellett(body, x)),
             h4: geometric(x),
-            k: symmetric.then(|| routh_integral(body, x)),
+            k: routh.as_ref().map(|body| routh_integral(body, x)),
+            mm: chaplygin.then(|| momentum_squared(x)),
+            m_gamma: chaplygin.then(|| area_integral(x)),
         }
     }
 
-    /// The values in the order of [`INTEGRAL_NAMES`] (`None` where not an integral).
+    /// The values of the CSV columns, in the order of [`INTEGRAL_NAMES`] (`None` where not an
+    /// integral).
     pub fn values(&self) -> [Option<f64>; 5] {
         [Some(self.h1), self.h2, self.h3, Some(self.h4), self.k]
+    }
+
+    /// All values, in the order of [`ALL_INTEGRAL_NAMES`] (`None` where not an integral).
+    pub fn all(&self) -> [Option<f64>; 7] {
+        [
+            Some(self.h1),
+            self.h2,
+            self.h3,
+            Some(self.h4),
+            self.k,
+            self.mm,
+            self.m_gamma,
+        ]
     }
 }

@@ -30,6 +30,7 @@
 //! is integrated by the same field [`vector_field`] as the reduced system, so its solution is
 //! identical to the reduced one; q and (x, y) are driven by it and do not feed back.
 
+use crate::ball::AsBall;
 use crate::body::Body;
 use crate::field::vector_field;
 use crate::integrate::OdeSystem;
@@ -64,12 +65,12 @@ pub const QUATERNION_RESTORING_RATE: f64 = 1.0;
 /// The equations of motion of the full system: the reduced field (mg-eq) together with the
 /// quaternion kinematics and the horizontal velocity of the centre of mass from (rel-ch).
 #[derive(Debug, Clone, Copy)]
-pub struct FullMotion<'a> {
+pub struct FullMotion<'a, B = Body> {
     /// The rolling body.
-    pub body: &'a Body,
+    pub body: &'a B,
 }
 
-impl OdeSystem<FULL_DIM> for FullMotion<'_> {
+impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
     /// The time derivative of the extended state `y = (gamma, M, q, x, y)`.
     fn rhs(&self, _t: f64, y: &[f64; FULL_DIM]) -> [f64; FULL_DIM] {
         let x: [f64; 6] = std::array::from_fn(|i| y[i]);
@@ -79,7 +80,7 @@ impl OdeSystem<FULL_DIM> for FullMotion<'_> {
         let q = quaternion(y);
         let q_dot = q * Quaternion::new(0.0, omega[0], omega[1], omega[2]) * 0.5
             - q * (QUATERNION_RESTORING_RATE * (q.norm_squared() - 1.0));
-        let r = self.body.contact_vector(&state.gamma);
+        let r = self.body.ball().contact_vector(&state.gamma);
         let velocity = rotate(&q, &cross(&r, &omega));
         let mut dy = [0.0; FULL_DIM];
         dy[..6].copy_from_slice(&reduced);
@@ -130,9 +131,9 @@ pub fn initial_full(state: &State) -> [f64; FULL_DIM] {
 
 /// The columns added by `--full` at a sample `y`: the quaternion, the centre of mass
 /// `(x, y, z)` with `z = (r, gamma)`, and the contact point `(x, y)` on the plane.
-pub fn full_columns(body: &Body, y: &[f64; FULL_DIM]) -> [f64; 9] {
+pub fn full_columns(body: &impl AsBall, y: &[f64; FULL_DIM]) -> [f64; 9] {
     let gamma = [y[0], y[1], y[2]];
-    let r = body.contact_vector(&gamma);
+    let r = body.ball().contact_vector(&gamma);
     let height = crate::scalar::dot(&r, &gamma);
     let q = quaternion(y);
     let to_contact = rotate(&q, &r);
@@ -152,7 +153,7 @@ pub fn full_columns(body: &Body, y: &[f64; FULL_DIM]) -> [f64; 9] {
 /// The space position at `y` of the material point with body coordinates `point` (relative
 /// to the centre of mass): `X_com + Q point`, with the height of the centre of mass
 /// `(r, gamma)`.
-pub fn material_point(body: &Body, y: &[f64; FULL_DIM], point: &[f64; 3]) -> [f64; 3] {
+pub fn material_point(body: &impl AsBall, y: &[f64; FULL_DIM], point: &[f64; 3]) -> [f64; 3] {
     let columns = full_columns(body, y);
     let offset = rotate(&quaternion(y), point);
     [

@@ -1,14 +1,16 @@
 //! Projection of a state back onto the level set of the integrals, after each integration
 //! step (Hairer, Lubich, Wanner, *Geometric Numerical Integration*, section IV.4).
 //!
-//! The constraints are `H4 = (gamma, gamma)`, Jellett's `H3` and Routh's `K` (both only for
-//! I1 = I2, where they are integrals) and the energy `H1`, held at their values at the start. A simplified Newton iteration moves
+//! The constraints are `H4 = (gamma, gamma)`, Jellett's `H3` and Routh's `K` (for the Routh
+//! sphere), (M, M) and (M, gamma) (for the Chaplygin ball), and the energy `H1`, held at their values at the start. A simplified Newton iteration moves
 //! the state along the span of the constraint gradients (automatic differentiation of the
 //! functions of [`crate::integrals`]): `x <- x - J^T (J J^T)^{-1} (C(x) - c0)`.
 
-use crate::body::Body;
+use crate::ball::{AsBall, Ball, Model};
 use crate::differential::{partials, seeded, Dual6};
-use crate::integrals::{energy, geometric, jellett, routh_integral};
+use crate::integrals::{
+    area_integral, energy, geometric, jellett, momentum_squared, routh_integral,
+};
 use nalgebra::{DMatrix, DVector};
 
 /// Iterations of the simplified Newton method: the residual after one integration step is
@@ -18,15 +20,16 @@ const NEWTON_ITERATIONS: usize = 2;
 /// The level set `{C_i(x) = c_i}` of the integrals through a starting state.
 #[derive(Debug, Clone)]
 pub struct LevelSet {
-    body: Body,
+    ball: Ball,
     targets: Vec<f64>,
 }
 
 impl LevelSet {
-    /// The level set through `x0`: H4, H3 and K (when I1 = I2) and H1 at their values there.
-    pub fn through(body: &Body, x0: &[f64; 6]) -> Self {
+    /// The level set through `x0`: H4, the integrals of the ball's model and H1 at their
+    /// values there.
+    pub fn through(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let mut level = LevelSet {
-            body: *body,
+            ball: body.ball(),
             targets: Vec::new(),
         };
         level.targets = level
@@ -38,13 +41,22 @@ impl LevelSet {
     }
 
     fn constraints(&self, x: &[Dual6; 6]) -> Vec<Dual6> {
-        let body = &self.body;
+        let ball = &self.ball;
         let mut c = vec![geometric(x)];
-        if body.is_symmetric() {
-            c.push(jellett(body, x));
-            c.push(routh_integral(body, x));
+        match ball.model() {
+            Model::RouthSphere => {
+                if let Ok(body) = ball.axial_body("Routh's integrals") {
+                    c.push(jellett(&body, x));
+                    c.push(routh_integral(&body, x));
+                }
+            }
+            Model::Chaplygin => {
+                c.push(momentum_squared(x));
+                c.push(area_integral(x));
+            }
+            Model::General => {}
         }
-        c.push(energy(body, x));
+        c.push(energy(ball, x));
         c
     }
 

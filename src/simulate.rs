@@ -1,17 +1,22 @@
 //! Integration of a case along the field (mg-eq), with the integrals (int-g), (raus-int)
 //! tracked at every step, dense-output samples, and optional projection onto their level set.
 
+use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
-use crate::integrals::{Integrals, INTEGRAL_NAMES};
-use crate::integrate::{rk4, Dop853, Method, OdeSystem, Options, Stats};
+use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::{
+    drive, Control, Dop853, Drive, EventFn, IntegrateError, Method, OdeSystem, Options, Projection,
+    Rk4, Stepper, Stop,
+};
 use crate::projection::LevelSet;
 use crate::state::State;
 use serde::Serialize;
+use std::cell::RefCell;
 use std::time::Instant;
 
 /// Settings of one simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Settings {
     /// The integrator.
     pub method: Method,
@@ -58,7 +63,8 @@ pub struct Summary {
     pub initial_state: State,
     /// The state at t_end.
     pub final_state: State,
-    /// Drift of each integral, by name (H1, H2, H3, H4, K; H2 and K only for I1 = I2).
+    /// Drift of each integral of the ball's model, by name (H1, H2, H3, H4, K, MM, Mgamma;
+    /// see [`Integrals`]).
     pub integrals: std::collections::BTreeMap<&'static str, Drift>,
     /// Wall time of the integration in seconds, measured with [`std::time::Instant`] inside
     /// [`run`]: the steps, the tracking of the integrals, the projections and the samples
@@ -67,24 +73,24 @@ pub struct Summary {
 }
 
 struct DriftTracker {
-    initial: [Option<f64>; 5],
-    max: [f64; 5],
-    last: [Option<f64>; 5],
+    initial: [Option<f64>; 7],
+    max: [f64; 7],
+    last: [Option<f64>; 7],
 }
 
 impl DriftTracker {
-    fn new(body: &Body, x0: &[f64; 6]) -> Self {
-        let initial = Integrals::at(body, x0).values();
+    fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+        let initial = Integrals::at(body, x0).all();
         DriftTracker {
             initial,
-            max: [0.0; 5],
+            max: [0.0; 7],
             last: initial,
         }
     }
 
-    fn observe(&mut self, body: &Body, x: &[f64; 6]) {
-        self.last = Integrals::at(body, x).values();
-        for i in 0..5 {
+    fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+        self.last = Integrals::at(body, x).all();
+        for i in 0..7 {
             if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
                 let scale = if h0 == 0.0 { 1.0 } else { h0.abs() };
                 self.max[i] = self.max[i].max((h - h0).abs() / scale);
@@ -93,10 +99,10 @@ impl DriftTracker {
     }
 
     fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
-        (0..5)
+        (0..7)
             .filter_map(|i| {
                 Some((
-                    INTEGRAL_NAMES[i],
+                    ALL_INTEGRAL_NAMES[i],
                     Drift {
                         initial: self.initial[i]?,
                         last: self.last[i]?,
@@ -113,8 +119,24 @@ fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
     std::array::from_fn(|i| y[i])
 }
 
-/// Validate the settings; each violation names the option.
-pub fn validate(settings: &Settings) -> Result<()> {
+impl Default for Settings {
+    /// The one set of defaults of the library, the CLI and Python: DOP853 at
+    /// rtol = atol = 1e-12 over [0, 100], no projection, no samples.
+    fn default() -> Self {
+        Settings {
+            method: Method::Dop853,
+            t_end: 100.0,
+            rtol: 1e-12,
+            atol: 1e-12,
+            project: false,
+            samples: 0,
+        }
+    }
+}
+
+/// The one validation of the time span and tolerances (used by [`validate`] and by case
+/// files): t_end finite and >= 0; rtol, atol finite and > 0. Each violation names the option.
+pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
     let bad = |name: &'static str, value: f64, rule: &'static str| {
         Err(RouthError::Option {
             name,
@@ -122,21 +144,28 @@ pub fn validate(settings: &Settings) -> Result<()> {
             rule,
         })
     };
-    if !(settings.t_end.is_finite() && settings.t_end >= 0.0) {
-        return bad("t_end", settings.t_end, "must be finite and >= 0");
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return bad("t_end", t_end, "must be finite and >= 0");
     }
-    if !(settings.rtol.is_finite() && settings.rtol > 0.0) {
-        return bad("rtol", settings.rtol, "must be finite and > 0");
+    if !(rtol.is_finite() && rtol > 0.0) {
+        return bad("rtol", rtol, "must be finite and > 0");
     }
-    if !(settings.atol.is_finite() && settings.atol > 0.0) {
-        return bad("atol", settings.atol, "must be finite and > 0");
+    if !(atol.is_finite() && atol > 0.0) {
+        return bad("atol", atol, "must be finite and > 0");
     }
+    Ok(())
+}
+
+/// Validate the settings ([`validate_span`] and the sample count); each violation names the
+/// option.
+pub fn validate(settings: &Settings) -> Result<()> {
+    validate_span(settings.t_end, settings.rtol, settings.atol)?;
     if settings.samples == 1 {
-        return bad(
-            "samples",
-            1.0,
-            "must be 0 or >= 2 (the samples include both ends)",
-        );
+        return Err(RouthError::Option {
+            name: "samples",
+            value: "1".into(),
+            rule: "must be 0 or >= 2 (the samples include both ends)",
+        });
     }
     Ok(())
 }
@@ -144,14 +173,50 @@ pub fn validate(settings: &Settings) -> Result<()> {
 /// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`
 /// (further components, such as the orientation of the full motion, follow it), from
 /// `y0` over `[0, t_end]`. `on_sample(t, y)` receives the equally spaced samples; the
-/// integrals are tracked on the reduced part at every step end and sample.
+/// integrals are tracked on the reduced part at every step end and sample. A failed
+/// integration is an error ([`RouthError::Integrate`]); [`integrate_observed`] tells more.
 pub fn run<S: OdeSystem<N>, const N: usize>(
-    body: &Body,
+    body: &impl AsBall,
     sys: &S,
     y0: [f64; N],
     settings: &Settings,
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
 ) -> Result<Summary> {
+    let observed = integrate_observed(body, sys, y0, settings, None, on_sample, &mut |_| {})?;
+    match observed.failure {
+        Some(e) => Err(e.into()),
+        None => Ok(observed.summary),
+    }
+}
+
+/// What [`integrate_observed`] returns: the summary, how the run stopped, the time reached,
+/// and the integrator's failure (then the summary holds the state reached).
+#[derive(Debug, Clone)]
+pub struct Observed<const N: usize> {
+    /// The summary of the run (up to the failure, if any).
+    pub summary: Summary,
+    /// How the driver stopped (meaningless after a failure).
+    pub stop: Stop<N>,
+    /// The time reached.
+    pub t: f64,
+    /// The integrator's error, if it failed.
+    pub failure: Option<IntegrateError>,
+}
+
+/// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: as [`run`], with an
+/// optional event function and `on_step(stepper)` called after each step (for its dense
+/// output). Invalid settings and errors of `on_sample` are errors; a failure of the
+/// integrator is reported in [`Observed::failure`] with the state reached.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    y0: [f64; N],
+    settings: &Settings,
+    event: Option<EventFn<'_, N>>,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+    on_step: &mut dyn FnMut(&dyn Stepper<N>),
+) -> Result<Observed<N>> {
     validate(settings)?;
     let start = Instant::now();
     let x0 = reduced(&y0);
@@ -163,7 +228,6 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             y[..6].copy_from_slice(&x);
         }
     };
-    let mut drift = DriftTracker::new(body, &x0);
     let times: Vec<f64> = (0..settings.samples)
         .map(|i| {
             if i + 1 == settings.samples {
@@ -173,110 +237,67 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             }
         })
         .collect();
-    let mut next = 0;
-    let mut emit = |t: f64, y: &[f64; N], drift: &mut DriftTracker| -> Result<()> {
-        drift.observe(body, &reduced(y));
-        on_sample(t, y)
-    };
-    while next < times.len() && times[next] == 0.0 {
-        emit(0.0, &y0, &mut drift)?;
-        next += 1;
-    }
-    let (y_end, stats) = match settings.method {
+    let mut stepper: Box<dyn Stepper<N> + '_> = match settings.method {
         Method::Dop853 => {
             let opts = Options {
                 rtol: settings.rtol,
                 atol: settings.atol,
                 ..Options::default()
             };
-            let mut solver =
-                Dop853::new(sys, 0.0, y0, settings.t_end, &opts).map_err(integrate_error)?;
-            if settings.t_end == 0.0 {
-                (y0, Stats::default())
-            } else {
-                loop {
-                    let done = solver.step().map_err(integrate_error)?;
-                    if level.is_some() {
-                        let mut y = *solver.y();
-                        project(&mut y);
-                        solver.set_state(y);
-                    }
-                    drift.observe(body, &reduced(solver.y()));
-                    let t = solver.t();
-                    while next < times.len() && times[next] <= t {
-                        let y = if times[next] == t {
-                            *solver.y()
-                        } else {
-                            solver.dense(times[next])
-                        };
-                        emit(times[next], &y, &mut drift)?;
-                        next += 1;
-                    }
-                    if done {
-                        break (*solver.y(), solver.stats());
-                    }
-                }
-            }
+            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts)?)
         }
-        Method::Rk4 { steps } => {
-            let h = settings.t_end / steps as f64;
-            let mut y = y0;
-            let mut stats = Stats::default();
-            for n in 0..steps {
-                let t0 = n as f64 * h;
-                let t1 = if n + 1 == steps {
-                    settings.t_end
-                } else {
-                    t0 + h
-                };
-                let (mut y1, s) = rk4(sys, t0, y, t1, 1, |_, _| {});
-                project(&mut y1);
-                stats.steps += s.steps;
-                stats.rhs_evals += s.rhs_evals;
-                drift.observe(body, &reduced(&y1));
-                while next < times.len() && times[next] <= t1 {
-                    let ys = if times[next] == t1 {
-                        y1
-                    } else {
-                        rk4(sys, t0, y, times[next], 1, |_, _| {}).0
-                    };
-                    emit(times[next], &ys, &mut drift)?;
-                    next += 1;
-                }
-                y = y1;
-            }
-            (y, stats)
-        }
+        Method::Rk4 { steps } => Box::new(Rk4::new(sys, 0.0, y0, settings.t_end, steps)),
     };
-    if y_end.iter().any(|v| !v.is_finite()) {
-        return Err(RouthError::Integrate(format!(
-            "the state became non-finite before t = {}",
-            settings.t_end
-        )));
-    }
-    Ok(Summary {
-        method: settings.method.to_string(),
-        t_end: settings.t_end,
-        steps: stats.steps,
-        rejected: stats.rejected,
-        rhs_evals: stats.rhs_evals,
-        projected: settings.project,
-        initial_state: State::from_array(&x0),
-        final_state: State::from_array(&reduced(&y_end)),
-        integrals: drift.report(),
-        elapsed_s: start.elapsed().as_secs_f64(),
+    let plan = Drive {
+        samples: &times,
+        project: level.is_some().then_some(&project as Projection<'_, N>),
+        event,
+    };
+    let drift = RefCell::new(DriftTracker::new(body, &x0));
+    let outcome = drive(
+        stepper.as_mut(),
+        &plan,
+        &mut |t, y| {
+            drift.borrow_mut().observe(body, &reduced(y));
+            on_sample(t, y)
+        },
+        &mut |_, y, stepper| {
+            drift.borrow_mut().observe(body, &reduced(y));
+            on_step(stepper);
+            Ok(Control::Continue)
+        },
+    );
+    let (stop, t, y_end, failure) = match outcome {
+        Ok(o) if o.y.iter().all(|v| v.is_finite()) => (o.stop, o.t, o.y, None),
+        Ok(o) => (o.stop, o.t, o.y, Some(IntegrateError::NonFinite { t: o.t })),
+        Err(RouthError::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
+        Err(other) => return Err(other),
+    };
+    let stats = stepper.stats();
+    Ok(Observed {
+        summary: Summary {
+            method: settings.method.to_string(),
+            t_end: settings.t_end,
+            steps: stats.steps,
+            rejected: stats.rejected,
+            rhs_evals: stats.rhs_evals,
+            projected: settings.project,
+            initial_state: State::from_array(&x0),
+            final_state: State::from_array(&reduced(&y_end)),
+            integrals: drift.into_inner().report(),
+            elapsed_s: start.elapsed().as_secs_f64(),
+        },
+        stop,
+        t,
+        failure,
     })
-}
-
-fn integrate_error(e: crate::integrate::IntegrateError) -> RouthError {
-    RouthError::Integrate(e.to_string())
 }
 
 /// The reduced field (mg-eq) of a body as an [`OdeSystem`].
 #[derive(Debug, Clone, Copy)]
-pub struct ReducedSystem<'a>(pub &'a Body);
+pub struct ReducedSystem<'a, B = Body>(pub &'a B);
 
-impl OdeSystem<6> for ReducedSystem<'_> {
+impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
         crate::field::vector_field(self.0, y)

@@ -1,6 +1,6 @@
 //! Points of the reduced phase space x = (gamma, M) of (m-eq).
 
-use crate::body::Body;
+use crate::ball::AsBall;
 use crate::error::{Result, RouthError};
 use serde::Serialize;
 
@@ -39,7 +39,7 @@ impl State {
 
     /// A state from gamma and the angular velocity omega, via `M = I_Q omega` (om-m).
     pub fn from_omega(
-        body: &Body,
+        body: &impl AsBall,
         gamma: [f64; 3],
         omega: [f64; 3],
         normalise: Normalise,
@@ -48,7 +48,7 @@ impl State {
         check_finite("omega", &omega)?;
         Ok(State {
             gamma,
-            m: body.angular_momentum(&gamma, &omega),
+            m: body.ball().angular_momentum(&gamma, &omega),
         })
     }
 
@@ -73,8 +73,8 @@ impl State {
     }
 
     /// The angular velocity `omega = I_Q^{-1} M`.
-    pub fn omega(&self, body: &Body) -> [f64; 3] {
-        body.angular_velocity(&self.gamma, &self.m)
+    pub fn omega(&self, body: &impl AsBall) -> [f64; 3] {
+        body.ball().angular_velocity(&self.gamma, &self.m)
     }
 
     /// The time-reversed state (gamma, -M): the field (mg-eq) is reversible under

@@ -17,6 +17,17 @@ pub const STATE_COLUMN_NAMES: [&str; 9] = [
     "gamma1", "gamma2", "gamma3", "M1", "M2", "M3", "omega1", "omega2", "omega3",
 ];
 
+/// The CSV header of samples, shared by every command that writes them: `t`, the
+/// [`STATE_COLUMN_NAMES`], then the command's own columns `tail` (the integrals of `routh
+/// simulate`, the tilt and integrals of `routh exact`, ...).
+pub fn csv_header(tail: &[&str]) -> String {
+    std::iter::once("t")
+        .chain(STATE_COLUMN_NAMES)
+        .chain(tail.iter().copied())
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
 /// Named columns of equal length.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
@@ -144,14 +155,13 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
         project: false,
         samples,
     };
-    let names = std::iter::once("t")
-        .chain(STATE_COLUMN_NAMES)
-        .chain(INTEGRAL_NAMES)
+    let tail: Vec<&str> = INTEGRAL_NAMES
+        .into_iter()
         .chain(FULL_COLUMN_NAMES)
-        .map(str::to_string)
         .collect();
+    let names = csv_header(&tail).split(',').map(str::to_string).collect();
     let mut table = Table::new(&case.source, names);
-    let body = &case.body;
+    let body = &case.ball;
     run(
         body,
         &FullMotion { body },

@@ -22,9 +22,9 @@ fn error_of(text: &str) -> String {
 #[test]
 fn default_case_parses_and_i2_defaults_to_i1() {
     let case = Case::default_case().unwrap();
-    assert_eq!(case.body.i2, case.body.i1);
+    assert_eq!(case.ball.inertia[1], case.ball.inertia[0]);
     assert_eq!(case.integration.t_end, 100.0);
-    let omega = case.initial.omega(&case.body);
+    let omega = case.initial.omega(&case.ball);
     for (w, expected) in omega.iter().zip([0.5, 0.2, 8.0]) {
         assert!(
             (w - expected).abs() < 1e-14,

@@ -54,7 +54,7 @@ fn flow_json_has_the_keys_of_exact_and_the_library_state() {
     assert_eq!(v["motion"], "nutation");
     let case = Case::load(None).unwrap();
     let flow = Flow::new(
-        Condition::Cond2.bracket(case.body, 0.7),
+        Condition::Cond2.bracket(case.body("the flows").unwrap(), 0.7),
         Field::X2,
         &case.initial.to_array(),
     )

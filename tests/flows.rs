@@ -90,7 +90,7 @@ fn default_case_flows_agree_with_dop853() {
     let case = routh::case::Case::load(None).unwrap();
     let x0 = case.initial.to_array();
     for condition in [Condition::Cond, Condition::Cond2] {
-        let bracket = condition.bracket(case.body, 1.0);
+        let bracket = condition.bracket(case.body("the flows").unwrap(), 1.0);
         for field in [Field::X1, Field::X2, Field::XHat2] {
             let flow = Flow::new(bracket, field, &x0).unwrap();
             let step = dop853(|y| vector_field(&bracket, field, y), x0, 10.0);

@@ -5,7 +5,7 @@
 
 use routh::integrate::{
     brent, fixed_step_solve, rk4, solve, solve_dense, Dop853, IntegrateError, Method, Options,
-    Stats, Stop,
+    Stats, Stepper, Stop,
 };
 use std::f64::consts::{FRAC_PI_2, PI};
 

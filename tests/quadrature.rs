@@ -46,7 +46,7 @@ fn distance(a: &State, b: &State) -> f64 {
 
 fn default_case() -> (Body, State) {
     let case = Case::default_case().unwrap();
-    (case.body, case.initial)
+    (case.body("").unwrap(), case.initial)
 }
 
 #[test]

@@ -19,8 +19,8 @@ fn simulate(case: &Case, x0: [f64; 6], t_end: f64, project: bool) -> Summary {
         samples: 0,
     };
     run(
-        &case.body,
-        &ReducedSystem(&case.body),
+        &case.ball,
+        &ReducedSystem(&case.ball),
         x0,
         &settings,
         &mut |_, _| Ok(()),
@@ -73,8 +73,8 @@ fn default_case_to_t_1000_keeps_every_integral_within_1e_10() {
         samples: 0,
     };
     let loose = run(
-        &case.body,
-        &ReducedSystem(&case.body),
+        &case.ball,
+        &ReducedSystem(&case.ball),
         case.initial.to_array(),
         &settings,
         &mut |_, _| Ok(()),
@@ -152,8 +152,8 @@ fn rk4_converges_to_the_dop853_result_with_order_4() {
             samples: 0,
         };
         let s = run(
-            &case.body,
-            &ReducedSystem(&case.body),
+            &case.ball,
+            &ReducedSystem(&case.ball),
             x0,
             &settings,
             &mut |_, _| Ok(()),
@@ -186,8 +186,8 @@ fn samples_are_equally_spaced_and_end_at_t_end() {
     };
     let mut seen = Vec::new();
     let summary = run(
-        &case.body,
-        &ReducedSystem(&case.body),
+        &case.ball,
+        &ReducedSystem(&case.ball),
         case.initial.to_array(),
         &settings,
         &mut |t, x| {

@@ -31,6 +31,7 @@ fn python_error(e: RouthError) -> PyErr {
         RouthError::Parameter { .. }
         | RouthError::Triangle { .. }
         | RouthError::NotSymmetric { .. }
+        | RouthError::OffAxis { .. }
         | RouthError::State(_)
         | RouthError::Option { .. }
         | RouthError::Case { .. }
@@ -310,21 +311,23 @@ fn summary_dict(py: Python<'_>, summary: Summary) -> PyResult<Bound<'_, PyDict>>
 /// A case as the tuple `(Body, x0, t_end, rtol, atol)`, x0 a numpy 6-vector.
 type CaseTuple<'py> = (PyBody, Bound<'py, PyArray1<f64>>, f64, f64, f64);
 
-fn case_tuple(py: Python<'_>, case: Case) -> CaseTuple<'_> {
-    (
-        PyBody { inner: case.body },
+fn case_tuple(py: Python<'_>, case: Case) -> PyResult<CaseTuple<'_>> {
+    Ok((
+        PyBody {
+            inner: case.body("a Python Body").map_err(python_error)?,
+        },
         PyArray1::from_slice(py, &case.initial.to_array()),
         case.integration.t_end,
         case.integration.rtol,
         case.integration.atol,
-    )
+    ))
 }
 
 /// The built-in default case (`cases/default.toml`) as `(Body, x0, t_end, rtol, atol)`.
 #[pyfunction]
 fn default_case(py: Python<'_>) -> PyResult<CaseTuple<'_>> {
     let case = Case::default_case().map_err(python_error)?;
-    Ok(case_tuple(py, case))
+    case_tuple(py, case)
 }
 
 /// The case file at `path` (TOML, the schema of `routh simulate`) as
@@ -332,7 +335,7 @@ fn default_case(py: Python<'_>) -> PyResult<CaseTuple<'_>> {
 #[pyfunction]
 fn load_case(py: Python<'_>, path: PathBuf) -> PyResult<CaseTuple<'_>> {
     let case = Case::from_file(&path).map_err(python_error)?;
-    Ok(case_tuple(py, case))
+    case_tuple(py, case)
 }
 
 /// The nonholonomic Routh sphere: Python access to the Rust library `routh`.

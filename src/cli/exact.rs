@@ -5,7 +5,8 @@ use routh::case::{check_option, Case};
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{ExactSolution, Motion};
-use routh::{Result, RouthError, State};
+use routh::table::csv_header;
+use routh::{Body, Result, RouthError, State};
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
@@ -80,13 +81,11 @@ struct Summary {
     k: f64,
 }
 
-/// The CSV header of `routh exact` samples.
-pub(super) const CSV_HEADER: &str =
-    "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,theta,H1,H3,K";
+/// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
+pub(super) const EXACT_COLUMNS: [&str; 4] = ["theta", "H1", "H3", "K"];
 
-pub(super) fn csv_row(case: &Case, t: f64, state: &State) -> String {
+pub(super) fn csv_row(body: &Body, t: f64, state: &State) -> String {
     let x = state.to_array();
-    let body = &case.body;
     let omega = state.omega(body);
     let values = x.iter().chain(&omega).copied().chain([
         state.gamma[2].clamp(-1.0, 1.0).acos(),
@@ -126,7 +125,7 @@ fn summary(case: &Case, exact: &ExactSolution, t: f64) -> Summary {
         t,
         gamma: state.gamma,
         m: state.m,
-        omega: state.omega(&case.body),
+        omega: state.omega(&case.ball),
         h1: red.h1,
         h3: red.h3,
         k: red.k,
@@ -169,7 +168,8 @@ pub fn run(args: Args) -> Result<()> {
     if let Some(n) = args.samples {
         check_option("samples", n as f64, n >= 2, "must be >= 2")?;
     }
-    let exact = ExactSolution::new(&case.body, &case.initial)?;
+    let body = case.body("routh exact")?;
+    let exact = ExactSolution::new(&body, &case.initial)?;
     let samples = args
         .samples
         .or(args.out.as_ref().map(|_| DEFAULT_CSV_SAMPLES));
@@ -179,10 +179,10 @@ pub fn run(args: Args) -> Result<()> {
                 path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
                 source,
             };
-            writeln!(w, "{CSV_HEADER}").map_err(io)?;
+            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
             for i in 0..n {
                 let ti = t * i as f64 / (n - 1) as f64;
-                writeln!(w, "{}", csv_row(&case, ti, &exact.state_at(ti))).map_err(io)?;
+                writeln!(w, "{}", csv_row(&body, ti, &exact.state_at(ti))).map_err(io)?;
             }
             Ok(())
         };

@@ -2,7 +2,8 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{csv_row, Args, CSV_HEADER};
+use super::exact::{csv_row, Args, EXACT_COLUMNS};
+use routh::table::csv_header;
 use routh::case::{check_option, Case};
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
@@ -46,6 +47,7 @@ struct Summary {
 /// Run `routh exact --flow`.
 pub fn run(args: &Args, field: Field) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
+    let body = case.body("the flows of the first bracket")?;
     let t = args.time.unwrap_or(case.integration.t_end);
     check_option("t", t, t.is_finite(), "must be finite")?;
     check_option(
@@ -57,7 +59,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
     if let Some(n) = args.samples {
         check_option("samples", n as f64, n >= 2, "must be >= 2")?;
     }
-    let bracket = args.condition.bracket(case.body, args.alpha);
+    let bracket = args.condition.bracket(body, args.alpha);
     let x0 = case.initial.to_array();
     let flow = Flow::new(bracket, field, &x0)?;
     let state_at = |ti: f64| State::from_array(&flow.state_at(ti));
@@ -68,10 +70,10 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
                 path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
                 source,
             };
-            writeln!(w, "{CSV_HEADER}").map_err(io)?;
+            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
             for i in 0..n {
                 let ti = t * i as f64 / (n - 1) as f64;
-                writeln!(w, "{}", csv_row(&case, ti, &state_at(ti))).map_err(io)?;
+                writeln!(w, "{}", csv_row(&body, ti, &state_at(ti))).map_err(io)?;
             }
             Ok(())
         };
@@ -103,10 +105,10 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         t,
         gamma: state.gamma,
         m: state.m,
-        omega: state.omega(&case.body),
-        h1: energy(&case.body, &x0),
-        h3: jellett(&case.body, &x0),
-        k: routh_integral(&case.body, &x0),
+        omega: state.omega(&body),
+        h1: energy(&body, &x0),
+        h3: jellett(&body, &x0),
+        k: routh_integral(&body, &x0),
     };
     if args.json {
         super::print_json(&summary);

@@ -7,6 +7,7 @@ use routh::integrate::{Method, OdeSystem};
 use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
+use routh::table::csv_header;
 use routh::{Result, RouthError};
 use std::path::PathBuf;
 
@@ -66,19 +67,16 @@ pub fn settings(case: &Case, args: &Args, samples: usize) -> Settings {
     }
 }
 
-/// The CSV header of the reduced state and integrals.
-pub const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,H1,H2,H3,H4,K";
-
 /// One CSV row: t, gamma, M, omega and the integrals (empty where not an integral).
 pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
     let omega = case
-        .body
+        .ball
         .angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
     let mut row = format!("{t}");
     for v in x.iter().chain(&omega) {
         row.push_str(&format!(",{v}"));
     }
-    for v in Integrals::at(&case.body, x).values() {
+    for v in Integrals::at(&case.ball, x).values() {
         row.push(',');
         if let Some(v) = v {
             row.push_str(&v.to_string());
@@ -97,9 +95,9 @@ pub fn run_command(args: Args) -> Result<()> {
     };
     let settings = settings(&case, &args, samples);
     let summary = if args.full {
-        let extra = |y: &[f64; 12]| full_columns(&case.body, y).to_vec();
+        let extra = |y: &[f64; 12]| full_columns(&case.ball, y).to_vec();
         let header = FULL_COLUMN_NAMES.join(",");
-        let system = FullMotion { body: &case.body };
+        let system = FullMotion { body: &case.ball };
         execute(
             &case,
             &args,
@@ -110,7 +108,7 @@ pub fn run_command(args: Args) -> Result<()> {
             extra,
         )?
     } else {
-        let system = ReducedSystem(&case.body);
+        let system = ReducedSystem(&case.ball);
         execute(
             &case,
             &args,
@@ -142,7 +140,7 @@ fn execute<S: OdeSystem<N>, const N: usize>(
     extra: impl Fn(&[f64; N]) -> Vec<f64>,
 ) -> Result<Summary> {
     let Some(path) = &args.out else {
-        return run(&case.body, system, y0, settings, &mut |_, _| Ok(()));
+        return run(&case.ball, system, y0, settings, &mut |_, _| Ok(()));
     };
     let mut summary = None;
     write_atomic(path, |w| {
@@ -151,8 +149,9 @@ fn execute<S: OdeSystem<N>, const N: usize>(
             source,
         };
         let separator = if extra_header.is_empty() { "" } else { "," };
-        writeln!(w, "{CSV_HEADER}{separator}{extra_header}").map_err(io)?;
-        summary = Some(run(&case.body, system, y0, settings, &mut |t, y| {
+        let header = csv_header(&INTEGRAL_NAMES);
+        writeln!(w, "{header}{separator}{extra_header}").map_err(io)?;
+        summary = Some(run(&case.ball, system, y0, settings, &mut |t, y| {
             let x: [f64; 6] = std::array::from_fn(|i| y[i]);
             let mut row = csv_row(case, t, &x);
             for v in extra(y) {
@@ -167,11 +166,18 @@ fn execute<S: OdeSystem<N>, const N: usize>(
 
 fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
     println!("routh simulate: {}", case.source);
-    let b = &case.body;
-    println!(
-        "  body     m = {}, R = {}, a = {}, I = ({}, {}, {}), G = {}",
-        b.m, b.radius, b.a, b.i1, b.i2, b.i3, b.gravity
-    );
+    let b = &case.ball;
+    let [i1, i2, i3] = b.inertia;
+    match case.body("") {
+        Ok(body) => println!(
+            "  body     m = {}, R = {}, a = {}, I = ({i1}, {i2}, {i3}), G = {}",
+            b.m, b.radius, body.a, b.gravity
+        ),
+        Err(_) => println!(
+            "  body     m = {}, R = {}, com = {:?}, I = ({i1}, {i2}, {i3}), G = {}",
+            b.m, b.radius, b.com, b.gravity
+        ),
+    }
     println!(
         "  method   {}{}",
         s.method,

@@ -88,7 +88,7 @@ fn print_text(r: &Report) {
 /// Run `routh steady`.
 pub fn run(args: Args) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
-    let body = case.body;
+    let body = case.body("routh steady")?;
     let spin = case.initial.omega(&body)[2];
     let vertical = [1.0, -1.0]
         .into_iter()

@@ -4,7 +4,7 @@
 use std::cell::Cell;
 
 use super::tableau::{A, B, BHH, C, D, ER};
-use super::{IntegrateError, OdeSystem, Options, Stats};
+use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit used in the step-size-too-small test (Hairer's `UROUND`).
 const UROUND: f64 = 2.3e-16;
@@ -356,57 +356,6 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
         }
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64; N] {
-        &self.y
-    }
-
-    /// Start time of the last accepted step (`t0` before the first step).
-    pub fn t_prev(&self) -> f64 {
-        self.t_prev
-    }
-
-    /// Work counters so far.
-    pub fn stats(&self) -> Stats {
-        self.stats.get()
-    }
-
-    /// Evaluates the 7th-order continuous extension of the last accepted step
-    /// `[t_prev, t]` at `t` (extrapolates outside that interval).
-    ///
-    /// The interpolant describes the step as integrated, from the state at
-    /// `t_prev` to the step end before any [`set_state`](Self::set_state).
-    /// Its coefficients are built at the first call after a step, which costs
-    /// three right-hand-side calls (Hairer's stages 14–16); later calls on the
-    /// same step are free. Before the first step it returns the initial state.
-    pub fn dense(&self, t: f64) -> [f64; N] {
-        if self.stats.get().steps == 0 {
-            return self.y;
-        }
-        let cont = match self.cont.get() {
-            Some(c) => c,
-            None => {
-                let c = self.dense_coefficients();
-                self.cont.set(Some(c));
-                c
-            }
-        };
-        let s = (t - self.t_prev) / self.h_last;
-        let s1 = 1.0 - s;
-        let mut out = [0.0; N];
-        for i in 0..N {
-            let conpar = cont[4][i] + s * (cont[5][i] + s1 * (cont[6][i] + s * cont[7][i]));
-            out[i] =
-                cont[0][i] + s * (cont[1][i] + s1 * (cont[2][i] + s * (cont[3][i] + s1 * conpar)));
-        }
-        out
-    }
-
     /// Hairer's `CONT` array of the last accepted step (`CONTD8` coefficients).
     fn dense_coefficients(&self) -> [[f64; N]; 8] {
         let h = self.h_last;
@@ -445,17 +394,82 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
         }
         cont
     }
+}
+
+impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
+    fn step(&mut self) -> Result<bool, IntegrateError> {
+        Dop853::step(self)
+    }
+
+    /// Current time.
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn t_end(&self) -> f64 {
+        self.t_end
+    }
+
+    /// Start time of the last accepted step (`t0` before the first step).
+    fn t_prev(&self) -> f64 {
+        self.t_prev
+    }
+
+    fn h(&self) -> f64 {
+        self.h_last
+    }
+
+    /// Current state.
+    fn y(&self) -> &[f64; N] {
+        &self.y
+    }
+
+    /// Evaluates the 7th-order continuous extension of the last accepted step
+    /// `[t_prev, t]` at `t` (extrapolates outside that interval).
+    ///
+    /// The interpolant describes the step as integrated, from the state at
+    /// `t_prev` to the step end before any [`set_state`](Self::set_state).
+    /// Its coefficients are built at the first call after a step, which costs
+    /// three right-hand-side calls (Hairer's stages 14–16); later calls on the
+    /// same step are free. Before the first step it returns the initial state.
+    fn dense(&self, t: f64) -> [f64; N] {
+        if self.stats.get().steps == 0 {
+            return self.y;
+        }
+        let cont = match self.cont.get() {
+            Some(c) => c,
+            None => {
+                let c = self.dense_coefficients();
+                self.cont.set(Some(c));
+                c
+            }
+        };
+        let s = (t - self.t_prev) / self.h_last;
+        let s1 = 1.0 - s;
+        let mut out = [0.0; N];
+        for i in 0..N {
+            let conpar = cont[4][i] + s * (cont[5][i] + s1 * (cont[6][i] + s * cont[7][i]));
+            out[i] =
+                cont[0][i] + s * (cont[1][i] + s1 * (cont[2][i] + s * (cont[3][i] + s1 * conpar)));
+        }
+        out
+    }
 
     /// Replaces the current state after a step (e.g. a projection onto
     /// invariant manifolds). Recomputes the derivative used as first stage of
     /// the next step (one right-hand-side call). The dense output of the last
     /// step is unaffected and still interpolates the unprojected step.
-    pub fn set_state(&mut self, y: [f64; N]) {
+    fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.f = self.sys.rhs(self.t, &self.y);
         let mut stats = self.stats.get();
         stats.rhs_evals += 1;
         self.stats.set(stats);
+    }
+
+    /// Work counters so far.
+    fn stats(&self) -> Stats {
+        self.stats.get()
     }
 }
 

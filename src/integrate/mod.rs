@@ -4,9 +4,12 @@
 //! * [`Dop853`]: the adaptive explicit Runge–Kutta pair 8(5,3) of Dormand &
 //!   Prince with Hairer's error estimator, step-size controller and 7th-order
 //!   dense output, following `dop853.f` of Hairer & Wanner;
-//! * [`rk4`]: the classical fixed-step Runge–Kutta method of order 4;
-//! * [`solve`] and [`solve_dense`]: drivers with optional projection onto
-//!   invariant manifolds, event location and dense sampling;
+//! * [`Rk4`], [`rk4`]: the classical fixed-step Runge–Kutta method of order 4,
+//!   table-driven, with its own dense output;
+//! * [`Stepper`]: what a one-step method offers (a step, the dense output on the
+//!   last step, the state, the counters); [`drive`]: the one step loop, with dense
+//!   samples, projection onto invariant manifolds, event location and a per-step
+//!   observer that can stop the run; [`solve`] and [`solve_dense`] are two uses of it;
 //! * [`brent`]: a bracketing scalar root finder.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
@@ -21,7 +24,7 @@ use std::str::FromStr;
 
 pub use dop853::{fixed_step_solve, Dop853};
 pub use event::brent;
-pub use rk4::rk4;
+pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 
 /// A first-order system `y' = f(t, y)` of fixed dimension `N`, in plain `f64`.
 pub trait OdeSystem<const N: usize> {
@@ -78,6 +81,13 @@ impl FromStr for Method {
                 .map(|steps| Method::Rk4 { steps })
                 .ok_or_else(|| ParseMethodError(s.to_string())),
         }
+    }
+}
+
+impl serde::Serialize for Method {
+    /// As its name, `"dop853"` or `"rk4:<steps>"`.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
     }
 }
 
@@ -215,6 +225,197 @@ pub enum Stop<const N: usize> {
         /// State at the event (after projection, if any).
         y: [f64; N],
     },
+    /// The per-step observer asked to stop (e.g. on Ctrl-C) after the step ending at `t`.
+    Stopped {
+        /// Time reached.
+        t: f64,
+    },
+}
+
+/// A one-step method as the driver sees it: the taylor, Verner, DOP853 and RK4 integrators
+/// implement it. Field evaluations are counted by the stepper in [`Stats::rhs_evals`], in one
+/// place per method.
+pub trait Stepper<const N: usize> {
+    /// Performs one accepted step (rejected attempts are repeated inside); `Ok(true)` when
+    /// the step reached `t_end` (then further calls do nothing and return `Ok(true)`).
+    fn step(&mut self) -> Result<bool, IntegrateError>;
+    /// Current time (the end of the last step).
+    fn t(&self) -> f64;
+    /// The end of the integration interval.
+    fn t_end(&self) -> f64;
+    /// Start of the last accepted step (`t0` before the first step).
+    fn t_prev(&self) -> f64;
+    /// Size of the last accepted step (signed).
+    fn h(&self) -> f64;
+    /// Current state (after [`Stepper::set_state`], if called).
+    fn y(&self) -> &[f64; N];
+    /// The dense output of the last accepted step `[t_prev, t]` at `t` (the step as
+    /// integrated, before any `set_state`); before the first step, the initial state.
+    fn dense(&self, t: f64) -> [f64; N];
+    /// Replaces the current state after a step (a projection).
+    fn set_state(&mut self, y: [f64; N]);
+    /// Work counters so far.
+    fn stats(&self) -> Stats;
+}
+
+/// What the per-step observer of [`drive`] asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Control {
+    /// Go on.
+    Continue,
+    /// Stop after this step ([`Stop::Stopped`]).
+    Stop,
+}
+
+/// What [`drive`] does besides stepping: dense samples, a projection after each step, an
+/// event function.
+#[derive(Clone, Copy)]
+pub struct Drive<'a, const N: usize> {
+    /// Times where the state is reported, strictly monotone in the direction of integration,
+    /// within `[t0, t_end]` (see [`check_samples`]).
+    pub samples: &'a [f64],
+    /// Projection after each accepted step.
+    pub project: Option<Projection<'a, N>>,
+    /// The run stops at the first sign change of this function after `t0`.
+    pub event: Option<EventFn<'a, N>>,
+}
+
+impl<const N: usize> Default for Drive<'_, N> {
+    fn default() -> Self {
+        Drive {
+            samples: &[],
+            project: None,
+            event: None,
+        }
+    }
+}
+
+/// How a run of [`drive`] ended, the final time and state, and the work counters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome<const N: usize> {
+    /// Why it stopped.
+    pub stop: Stop<N>,
+    /// Final time.
+    pub t: f64,
+    /// Final state.
+    pub y: [f64; N],
+    /// Work counters.
+    pub stats: Stats,
+}
+
+/// Checks that `samples` are finite, strictly monotone in the direction from `t0` to
+/// `t_end` and within the closed interval; names the first offending sample.
+pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), IntegrateError> {
+    let dir = if t_end >= t0 { 1.0 } else { -1.0 };
+    let mut prev = None;
+    for &s in samples {
+        let inside = s.is_finite() && (s - t0) * dir >= 0.0 && (t_end - s) * dir >= 0.0;
+        let monotone = prev.is_none_or(|p: f64| (s - p) * dir > 0.0);
+        if !inside || !monotone {
+            return Err(IntegrateError::InvalidOption {
+                name: "samples",
+                value: s,
+                rule: "must be strictly monotone in the direction of integration and within [t0, t_end]",
+            });
+        }
+        prev = Some(s);
+    }
+    Ok(())
+}
+
+/// The step loop: steps `stepper` to its `t_end`.
+///
+/// After every accepted step, in this order: if `event` changes sign on the step, its zero is
+/// located on the dense output (Brent's method to about 2 ulp of `t`), the state there is
+/// projected, the samples before it are reported, `on_step` sees it and the run ends with
+/// [`Stop::Event`]; otherwise the step end is projected (`set_state`), the samples up to it
+/// are reported through `on_sample` from the dense output (a sample on the step end gets the
+/// projected state), and `on_step(t, y, stepper)` sees the step end (and the stepper, for its
+/// dense output on the step) and may stop the run. A zero of
+/// `event` exactly at `t0` is not an event; samples at `t0` are reported first. Errors of the
+/// stepper are converted into `E`; errors of the callbacks end the run.
+pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
+    stepper: &mut St,
+    run: &Drive<'_, N>,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<(), E>,
+    on_step: &mut dyn FnMut(f64, &[f64; N], &St) -> Result<Control, E>,
+) -> Result<Outcome<N>, E> {
+    let (t0, t_end, y0) = (stepper.t(), stepper.t_end(), *stepper.y());
+    let dir = if t_end >= t0 { 1.0 } else { -1.0 };
+    let samples = run.samples;
+    let mut next = 0;
+    while next < samples.len() && samples[next] == t0 {
+        on_sample(t0, &y0)?;
+        next += 1;
+    }
+    let mut g_prev = run.event.map(|g| g(t0, &y0));
+    loop {
+        let done = stepper.step()?;
+        let t = stepper.t();
+        if let (Some(g), Some(g0)) = (run.event, g_prev) {
+            let ta = stepper.t_prev();
+            let g1 = g(t, stepper.y());
+            if (g0 < 0.0 && g1 >= 0.0) || (g0 > 0.0 && g1 <= 0.0) {
+                let scale = ta.abs().max(t.abs()).max((t - ta).abs());
+                let tol = 2.0 * f64::EPSILON * scale;
+                let te = if g1 == 0.0 {
+                    t
+                } else {
+                    brent(|s| g(s, &stepper.dense(s)), ta, t, tol, 200)
+                        .ok_or(IntegrateError::NonFinite { t })?
+                };
+                let mut ye = if te == t {
+                    *stepper.y()
+                } else {
+                    stepper.dense(te)
+                };
+                if let Some(p) = run.project {
+                    p(&mut ye);
+                }
+                while next < samples.len() && (samples[next] - te) * dir < 0.0 {
+                    on_sample(samples[next], &stepper.dense(samples[next]))?;
+                    next += 1;
+                }
+                on_step(te, &ye, stepper)?;
+                return Ok(Outcome {
+                    stop: Stop::Event { t: te, y: ye },
+                    t: te,
+                    y: ye,
+                    stats: stepper.stats(),
+                });
+            }
+        }
+        if let Some(p) = run.project {
+            let mut y = *stepper.y();
+            p(&mut y);
+            stepper.set_state(y);
+        }
+        if let Some(g) = run.event {
+            g_prev = Some(g(t, stepper.y()));
+        }
+        while next < samples.len() && (samples[next] - t) * dir <= 0.0 {
+            let s = samples[next];
+            let y = if s == t {
+                *stepper.y()
+            } else {
+                stepper.dense(s)
+            };
+            on_sample(s, &y)?;
+            next += 1;
+        }
+        let control = on_step(t, stepper.y(), stepper)?;
+        let stop = match (control, done) {
+            (Control::Stop, false) => Stop::Stopped { t },
+            (_, true) => Stop::Reached,
+            (Control::Continue, false) => continue,
+        };
+        return Ok(Outcome {
+            stop,
+            t,
+            y: *stepper.y(),
+            stats: stepper.stats(),
+        });
+    }
 }
 
 /// A projection of the state onto invariant manifolds, applied in place.
@@ -223,19 +424,7 @@ pub type Projection<'p, const N: usize> = &'p dyn Fn(&mut [f64; N]);
 /// An event function `g(t, y)`; an event is a sign change of `g`.
 pub type EventFn<'e, const N: usize> = &'e dyn Fn(f64, &[f64; N]) -> f64;
 
-/// Projects the current state of `solver` with `project`, if given.
-fn apply_projection<S: OdeSystem<N>, const N: usize>(
-    solver: &mut Dop853<'_, S, N>,
-    project: Option<Projection<'_, N>>,
-) {
-    if let Some(p) = project {
-        let mut y = *solver.y();
-        p(&mut y);
-        solver.set_state(y);
-    }
-}
-
-/// Integrates from `t0` to `t_end` with DOP853.
+/// Integrates from `t0` to `t_end` with DOP853 (one use of [`drive`]).
 ///
 /// After every accepted step, `project(&mut y)` (if given) replaces the state
 /// through [`Dop853::set_state`], and `observer(t, &y)` is called with the
@@ -260,47 +449,21 @@ pub fn solve<S: OdeSystem<N>, const N: usize>(
     observer: &mut dyn FnMut(f64, &[f64; N]),
 ) -> Result<(Stop<N>, [f64; N], f64, Stats), IntegrateError> {
     let mut solver = Dop853::new(sys, t0, y0, t_end, opts)?;
-    let mut g_prev = event.map(|g| g(t0, &y0));
-    loop {
-        let done = solver.step()?;
-        if let (Some(g), Some(g0)) = (event, g_prev) {
-            let (ta, tb) = (solver.t_prev(), solver.t());
-            let g1 = g(tb, solver.y());
-            if (g0 < 0.0 && g1 >= 0.0) || (g0 > 0.0 && g1 <= 0.0) {
-                let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
-                let tol = 2.0 * f64::EPSILON * scale;
-                let te = if g1 == 0.0 {
-                    tb
-                } else {
-                    brent(|s| g(s, &solver.dense(s)), ta, tb, tol, 200)
-                        .ok_or(IntegrateError::NonFinite { t: tb })?
-                };
-                let mut ye = if te == tb {
-                    *solver.y()
-                } else {
-                    solver.dense(te)
-                };
-                if let Some(p) = project {
-                    p(&mut ye);
-                }
-                observer(te, &ye);
-                return Ok((Stop::Event { t: te, y: ye }, ye, te, solver.stats()));
-            }
-        }
-        apply_projection(&mut solver, project);
-        if let Some(g) = event {
-            g_prev = Some(g(solver.t(), solver.y()));
-        }
-        observer(solver.t(), solver.y());
-        if done {
-            return Ok((Stop::Reached, *solver.y(), solver.t(), solver.stats()));
-        }
-    }
+    let run = Drive {
+        samples: &[],
+        project,
+        event,
+    };
+    let outcome = drive(&mut solver, &run, &mut |_, _| Ok(()), &mut |t, y, _| {
+        observer(t, y);
+        Ok(Control::Continue)
+    })?;
+    Ok((outcome.stop, outcome.y, outcome.t, outcome.stats))
 }
 
 /// Integrates from `t0` to `t_end` with DOP853 and reports the solution at the
 /// prescribed `samples` through `on_sample(t, &y)`, using the dense output
-/// (a sample falling on a step end gets the projected step-end state).
+/// (a sample falling on a step end gets the projected step-end state); one use of [`drive`].
 ///
 /// `samples` must be strictly monotone in the direction of integration and lie
 /// in the closed interval between `t0` and `t_end`; otherwise an
@@ -321,38 +484,21 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
     samples: &[f64],
     on_sample: &mut dyn FnMut(f64, &[f64; N]),
 ) -> Result<([f64; N], Stats), IntegrateError> {
-    let dir = if t_end >= t0 { 1.0 } else { -1.0 };
-    let mut prev = None;
-    for &s in samples {
-        let inside = s.is_finite() && (s - t0) * dir >= 0.0 && (t_end - s) * dir >= 0.0;
-        let monotone = prev.is_none_or(|p: f64| (s - p) * dir > 0.0);
-        if !inside || !monotone {
-            return Err(IntegrateError::InvalidOption {
-                name: "samples",
-                value: s,
-                rule: "must be strictly monotone in the direction of integration and within [t0, t_end]",
-            });
-        }
-        prev = Some(s);
-    }
+    check_samples(t0, t_end, samples)?;
     let mut solver = Dop853::new(sys, t0, y0, t_end, opts)?;
-    let mut next = 0;
-    while next < samples.len() && samples[next] == t0 {
-        on_sample(t0, &y0);
-        next += 1;
-    }
-    loop {
-        let done = solver.step()?;
-        apply_projection(&mut solver, project);
-        let t = solver.t();
-        while next < samples.len() && (samples[next] - t) * dir <= 0.0 {
-            let s = samples[next];
-            let y = if s == t { *solver.y() } else { solver.dense(s) };
-            on_sample(s, &y);
-            next += 1;
-        }
-        if done {
-            return Ok((*solver.y(), solver.stats()));
-        }
-    }
+    let run = Drive {
+        samples,
+        project,
+        event: None,
+    };
+    let outcome = drive(
+        &mut solver,
+        &run,
+        &mut |t, y| {
+            on_sample(t, y);
+            Ok(())
+        },
+        &mut |_, _, _| Ok(Control::Continue),
+    )?;
+    Ok((outcome.y, outcome.stats))
 }

@@ -8,7 +8,7 @@
 use super::first::FirstBracket;
 use super::{Bivector, Matrix6, Reading};
 use crate::differential::jacobian;
-use crate::scalar::{dot, split, Scalar};
+use crate::scalar::{dot, split, Real};
 
 /// The change of momenta (p-map) with the value `c = (L, gamma)` of the e*(3) Casimir.
 ///
@@ -25,7 +25,7 @@ pub struct PoissonMap {
 
 impl PoissonMap {
     /// The image `(gamma, L)` of `x = (gamma, M)`.
-    pub fn image<D: Scalar>(&self, x: &[D; 6]) -> [D; 6] {
+    pub fn image<D: Real>(&self, x: &[D; 6]) -> [D; 6] {
         let body = &self.bracket.body;
         let (gamma, m) = split(x);
         let [g1, g2, g3] = gamma;
@@ -54,7 +54,7 @@ impl PoissonMap {
     /// `L1 gamma2 - L2 gamma1 = (gamma2 M1 - gamma1 M2)/beta` gives the horizontal component
     /// orthogonal to gamma. No division by h: the inverse is regular where the map's
     /// `1/(R gamma3 + a)` is not.
-    pub fn preimage<D: Scalar>(&self, y: &[D; 6], b: D) -> [D; 6] {
+    pub fn preimage<D: Real>(&self, y: &[D; 6], b: D) -> [D; 6] {
         let body = &self.bracket.body;
         let (gamma, l) = split(y);
         let [g1, g2, _] = gamma;

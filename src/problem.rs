@@ -1,0 +1,246 @@
+//! A problem and its solution as plain values: a [`Problem`] (the ball, the initial state,
+//! the time span [0, t_end] and the [`Settings`]) is solved into a [`Solution`] (samples,
+//! final state, work counters, the integrals and their drift, events, a status with a
+//! message) and, on request, a [`DenseSolution`] that evaluates the state at any time of
+//! the span, as SciPy's `OdeSolution`. All are `Clone + Send + Sync + Serialize`, so that
+//! thousands of them can be built, sent to threads and written out.
+
+use crate::ball::Ball;
+use crate::error::{Result, RouthError};
+use crate::integrate::{Stats, Stepper, Stop};
+use crate::simulate::{integrate_observed, Drift, ReducedSystem, Settings};
+use crate::state::State;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// An event: the run stops where the component `component` of `x = (gamma, M)` crosses
+/// `value` (a sign change of `x[component] - value`, located on the dense output).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Crossing {
+    /// Index into `x = (gamma1, gamma2, gamma3, M1, M2, M3)`, 0 to 5.
+    pub component: usize,
+    /// The level crossed.
+    pub value: f64,
+}
+
+/// A problem: integrate the field (mg-eq) of `ball` from `initial` over `[0, settings.t_end]`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Problem {
+    /// The ball.
+    pub ball: Ball,
+    /// The state at t = 0.
+    pub initial: State,
+    /// Method, tolerances, time span, projection, samples.
+    pub settings: Settings,
+    /// Stop at the first crossing, if given.
+    pub event: Option<Crossing>,
+}
+
+/// How a run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Status {
+    /// t_end was reached.
+    Reached,
+    /// The event was found.
+    Event,
+    /// The integration failed (the message says why); the solution holds what was reached.
+    Failed,
+}
+
+/// A state at a time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    /// The time.
+    pub t: f64,
+    /// The state there.
+    pub state: State,
+}
+
+/// The solution of a [`Problem`].
+#[derive(Debug, Clone, Serialize)]
+pub struct Solution {
+    /// How the run ended.
+    pub status: Status,
+    /// A sentence saying how it ended.
+    pub message: String,
+    /// The time reached.
+    pub t: f64,
+    /// The samples of the settings (equally spaced on [0, t_end], both ends included).
+    pub samples: Vec<Sample>,
+    /// The state at the end.
+    pub final_state: State,
+    /// Work counters.
+    pub stats: Stats,
+    /// The integrals of the ball's model and their drift over step ends and samples.
+    pub integrals: BTreeMap<&'static str, Drift>,
+    /// The events found (at most one: the run stops there).
+    pub events: Vec<Sample>,
+}
+
+/// The state at any time of the span covered by a run, from the dense output of each step.
+///
+/// Each step is stored as the values of its dense output at the 8 Chebyshev points of the
+/// second kind and evaluated by barycentric interpolation (Berrut, Trefethen, SIAM Rev. 46
+/// (2004)). The dense output of DOP853 (degree 7 in the step fraction) and of RK4 (degree 3)
+/// are polynomials of degree at most 7, so this reproduces them to round-off.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DenseSolution {
+    /// Step boundaries `t_0 < t_1 < ... < t_n` (or decreasing for a backward run).
+    pub times: Vec<f64>,
+    /// For step i, the states at its 8 Chebyshev points.
+    pub nodes: Vec<[[f64; 6]; DENSE_NODES]>,
+}
+
+/// Number of interpolation nodes per step.
+pub const DENSE_NODES: usize = 8;
+
+/// The Chebyshev points of the second kind on [0, 1], `(1 - cos(pi j / 7)) / 2`.
+fn chebyshev_fraction(j: usize) -> f64 {
+    0.5 * (1.0 - (std::f64::consts::PI * j as f64 / (DENSE_NODES - 1) as f64).cos())
+}
+
+impl DenseSolution {
+    fn record(&mut self, stepper: &dyn Stepper<6>) {
+        let (ta, tb) = (stepper.t_prev(), stepper.t());
+        if self.times.is_empty() {
+            self.times.push(ta);
+        }
+        self.times.push(tb);
+        self.nodes.push(std::array::from_fn(|j| {
+            stepper.dense(ta + (tb - ta) * chebyshev_fraction(j))
+        }));
+    }
+
+    /// The state at `t`, which must lie in the span covered (else an
+    /// [`RouthError::Option`] naming `t`).
+    pub fn at(&self, t: f64) -> Result<[f64; 6]> {
+        let (first, last) = match (self.times.first(), self.times.last()) {
+            (Some(&a), Some(&b)) if self.times.len() > 1 => (a, b),
+            _ => return Err(self.outside(t)),
+        };
+        let dir = if last >= first { 1.0 } else { -1.0 };
+        if !((t - first) * dir >= 0.0 && (last - t) * dir >= 0.0) {
+            return Err(self.outside(t));
+        }
+        let i = self.times[1..]
+            .partition_point(|&b| (b - t) * dir < 0.0)
+            .min(self.nodes.len() - 1);
+        let (ta, tb) = (self.times[i], self.times[i + 1]);
+        let s = (t - ta) / (tb - ta);
+        let nodes = &self.nodes[i];
+        let mut num = [0.0; 6];
+        let mut den = 0.0;
+        for (j, node) in nodes.iter().enumerate() {
+            let d = s - chebyshev_fraction(j);
+            if d == 0.0 {
+                return Ok(*node);
+            }
+            let sign = if j % 2 == 0 { 1.0 } else { -1.0 };
+            let half = if j == 0 || j == DENSE_NODES - 1 {
+                0.5
+            } else {
+                1.0
+            };
+            let w = sign * half / d;
+            den += w;
+            for c in 0..6 {
+                num[c] += w * node[c];
+            }
+        }
+        Ok(num.map(|v| v / den))
+    }
+
+    fn outside(&self, t: f64) -> RouthError {
+        RouthError::Option {
+            name: "t",
+            value: t.to_string(),
+            rule: "must lie within the span of the solution",
+        }
+    }
+}
+
+impl Problem {
+    /// Solve the problem; see [`Problem::solve_dense`].
+    pub fn solve(&self) -> Result<Solution> {
+        self.run(None)
+    }
+
+    /// Solve the problem and keep the dense output of every step.
+    ///
+    /// Invalid settings are an error; a failed integration is a [`Solution`] with
+    /// [`Status::Failed`] and the message, holding what was reached.
+    pub fn solve_dense(&self) -> Result<(Solution, DenseSolution)> {
+        let mut dense = DenseSolution {
+            times: Vec::new(),
+            nodes: Vec::new(),
+        };
+        let solution = self.run(Some(&mut dense))?;
+        Ok((solution, dense))
+    }
+
+    fn run(&self, mut dense: Option<&mut DenseSolution>) -> Result<Solution> {
+        if let Some(c) = self.event {
+            if c.component >= 6 || !c.value.is_finite() {
+                return Err(RouthError::Option {
+                    name: "event",
+                    value: format!("{c:?}"),
+                    rule: "component must be 0 to 5 and value finite",
+                });
+            }
+        }
+        let event = self
+            .event
+            .map(|c| move |_: f64, x: &[f64; 6]| x[c.component] - c.value);
+        let event_ref = event.as_ref().map(|g| g as &dyn Fn(f64, &[f64; 6]) -> f64);
+        let mut samples = Vec::new();
+        let run = integrate_observed(
+            &self.ball,
+            &ReducedSystem(&self.ball),
+            self.initial.to_array(),
+            &self.settings,
+            event_ref,
+            &mut |t, x| {
+                samples.push(Sample {
+                    t,
+                    state: State::from_array(x),
+                });
+                Ok(())
+            },
+            &mut |stepper| {
+                if let Some(d) = dense.as_deref_mut() {
+                    d.record(stepper);
+                }
+            },
+        )?;
+        let (status, message, events) = match (&run.failure, run.stop) {
+            (Some(e), _) => (Status::Failed, e.to_string(), Vec::new()),
+            (None, Stop::Event { t, y }) => (
+                Status::Event,
+                format!("the event was found at t = {t}"),
+                vec![Sample {
+                    t,
+                    state: State::from_array(&y),
+                }],
+            ),
+            (None, _) => (
+                Status::Reached,
+                format!("t_end = {} was reached", self.settings.t_end),
+                Vec::new(),
+            ),
+        };
+        Ok(Solution {
+            status,
+            message,
+            t: run.t,
+            samples,
+            final_state: run.summary.final_state,
+            stats: Stats {
+                steps: run.summary.steps,
+                rejected: run.summary.rejected,
+                rhs_evals: run.summary.rhs_evals,
+            },
+            integrals: run.summary.integrals,
+            events,
+        })
+    }
+}
