@@ -9,7 +9,7 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error)]
 pub enum RouthError {
     /// A body parameter breaks a rule (non-finite, non-positive, |a| >= R, ...).
-    #[error("invalid body parameter {name} = {value}: {rule}")]
+    #[error("invalid body parameter {name} = {value:?}: {rule}")]
     Parameter {
         /// The parameter's name as in the paper (m, R, a, I1, I2, I3, G).
         name: &'static str,
@@ -79,6 +79,19 @@ pub enum RouthError {
         u_max: f64,
         /// What shows it (a double root of Q, or a series that does not converge).
         reason: String,
+    },
+    /// A time beyond the range where the quadrature keeps its accuracy: the phase error grows
+    /// like t times the error of the period (or exponentially near an unstable equilibrium).
+    #[error("t = {t:e} is beyond the range |t| <= {horizon:e} where the quadrature keeps an error below {tolerance:e}: its estimated relative error at t is {error:e} (the phase error grows like t times the error of the period)")]
+    Horizon {
+        /// The time asked for.
+        t: f64,
+        /// The largest |t| with the error below the tolerance.
+        horizon: f64,
+        /// The tolerance.
+        tolerance: f64,
+        /// The estimated relative error at t.
+        error: f64,
     },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
