@@ -9,7 +9,7 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error)]
 pub enum RouthError {
     /// A body parameter breaks a rule (non-finite, non-positive, |a| >= R, ...).
-    #[error("invalid body parameter {name} = {value:?}: {rule}")]
+    #[error("invalid body parameter {name} = {value}: {rule}")]
     Parameter {
         /// The parameter's name as in the paper (m, R, a, I1, I2, I3, G).
         name: &'static str,
