@@ -91,6 +91,19 @@ pub enum RouthError {
         /// What shows it (a double root of Q, or a series that does not converge).
         reason: String,
     },
+    /// A time beyond the range where the quadrature keeps its accuracy: the phase error grows
+    /// like t times the error of the period (or exponentially near an unstable equilibrium).
+    #[error("t = {t:e} is beyond the range |t| <= {horizon:e} where the quadrature keeps an error below {tolerance:e}: its estimated relative error at t is {error:e} (the phase error grows like t times the error of the period)")]
+    Horizon {
+        /// The time asked for.
+        t: f64,
+        /// The largest |t| with the error below the tolerance.
+        horizon: f64,
+        /// The tolerance.
+        tolerance: f64,
+        /// The estimated relative error at t.
+        error: f64,
+    },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(#[from] crate::integrate::IntegrateError),

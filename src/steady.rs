@@ -50,6 +50,9 @@ pub struct VerticalSpin {
     pub gamma3: f64,
     /// Whether the centre of mass is above the geometric centre (`a gamma3 > 0`).
     pub centre_of_mass_above: bool,
+    /// Where the centre of mass is, from the sign of `a gamma3`: "above" or "below" the
+    /// geometric centre, or "at the geometric centre" when a = 0.
+    pub centre_of_mass: &'static str,
     /// The spin rate omega3.
     pub spin: f64,
     /// Routh's threshold |omega3| above which the spin is stable (0 when the centre of mass is
@@ -143,6 +146,34 @@ fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
     })
 }
 
+/// Where the centre of mass of the vertical spin at `gamma3 = pole` lies: "above" or
+/// "below" the geometric centre (the sign of `a pole`), or "at the geometric centre" (a = 0).
+pub fn centre_of_mass(body: &Body, pole: f64) -> &'static str {
+    match (body.a * pole).partial_cmp(&0.0) {
+        Some(std::cmp::Ordering::Greater) => "above",
+        Some(std::cmp::Ordering::Less) => "below",
+        _ => "at the geometric centre",
+    }
+}
+
+/// Fail with the parameter named when the inertia about the contact point `I_Q = I + m r^2 -
+/// m r r^T` (om-m) of `body` overflows: its determinant is of the size of `(m R^2)^3` times
+/// the moments, and `omega = I_Q^{-1} M` would come out NaN.
+pub fn require_finite_inertia(body: &Body) -> Result<()> {
+    let omega: [f64; 3] = body.angular_velocity(&[0.6, 0.0, 0.8], &[1.0, 1.0, 1.0]);
+    if omega.iter().all(|w: &f64| w.is_finite()) {
+        Ok(())
+    } else {
+        Err(RouthError::Parameter {
+            name: "m",
+            value: body.m,
+            rule: "too large for the size of the ball: the inertia about the contact point \
+                   I_Q = I + m |r|^2 - m r r^T overflows (its determinant is of the size of \
+                   (m R^2)^3 I1 I2 I3)",
+        })
+    }
+}
+
 /// The state of the vertical spin at `gamma3 = pole` (+1 or -1) with spin rate `spin`.
 pub fn vertical_spin_state(body: &Body, pole: f64, spin: f64) -> Result<State> {
     State::from_omega(body, [0.0, 0.0, pole], [0.0, 0.0, spin], Normalise::Reject)
@@ -151,6 +182,7 @@ pub fn vertical_spin_state(body: &Body, pole: f64, spin: f64) -> Result<State> {
 /// The vertical spin at `gamma3 = pole` with spin rate `spin`, and its stability.
 pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> {
     body.require_symmetric("the stationary motions")?;
+    require_finite_inertia(body)?;
     if pole.abs() != 1.0 {
         return Err(RouthError::Option {
             name: "pole",
@@ -162,6 +194,7 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
     Ok(VerticalSpin {
         gamma3: pole,
         centre_of_mass_above: body.a * pole > 0.0,
+        centre_of_mass: centre_of_mass(body, pole),
         spin,
         threshold_spin: routh_threshold(body, pole),
         stability: stability(body, &state, 0.0)?,
@@ -179,6 +212,7 @@ fn tilted_state(body: &Body, theta: f64, omega_t: f64, spin: f64) -> Result<Stat
 /// the quadratic `Q'(cos theta) = 0` (zero, one or two), each with its stability.
 pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<SteadyPrecession>> {
     body.require_symmetric("the stationary motions")?;
+    require_finite_inertia(body)?;
     if !(theta > 0.0 && theta < std::f64::consts::PI) {
         return Err(RouthError::Option {
             name: "theta",

@@ -87,3 +87,121 @@ fn bad_input_exits_2_with_a_message() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A case file of the default body with the given body line changed and initial state.
+fn case_file(name: &str, body_edit: (&str, &str), gamma: &str, omega: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("routh-exact-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("case.toml");
+    let body = "m = 1.0\nR = 1.0\na = 0.3\nI1 = 0.4\nI3 = 0.5\nG = 9.81\n"
+        .replace(body_edit.0, body_edit.1);
+    std::fs::write(
+        &path,
+        format!(
+            "[body]\n{body}[initial]\ngamma = {gamma}\nomega = {omega}\nnormalize = true\n\
+             [integration]\nt_end = 10.0\nrtol = 1e-12\natol = 1e-12\n"
+        ),
+    )
+    .unwrap();
+    path
+}
+
+#[test]
+fn exact_does_not_call_a_nutation_near_the_axis_steady() {
+    // Issue 10: called "steady" on ded9944 while it nutates.
+    let path = case_file(
+        "nutates",
+        ("", ""),
+        "[0.001, 0.0, 0.9999995]",
+        "[0.0, 0.0, 5.0]",
+    );
+    let v = json(&routh(&[
+        "exact",
+        "--case",
+        path.to_str().unwrap(),
+        "--t",
+        "10",
+        "--json",
+    ]));
+    assert_eq!(v["motion"], "nutation");
+    assert!(
+        v["theta_max"].as_f64().unwrap() > 0.00119,
+        "{}",
+        v["theta_max"]
+    );
+    // The state at t = 10 by DOP853 (simulate, rtol 1e-12): gamma1 = -0.000801508955813.
+    let g1 = v["gamma"][0].as_f64().unwrap();
+    assert!((g1 + 0.000801508955813).abs() < 1e-10, "{g1}");
+}
+
+#[test]
+fn exact_json_is_json_with_samples_inside() {
+    // Issue 10: `exact --samples 3 --json` printed CSV.
+    let v = json(&routh(&["exact", "--t", "1", "--samples", "3", "--json"]));
+    let samples = v["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 3);
+    assert_eq!(samples[2]["t"], 1.0);
+    assert_eq!(samples[2]["gamma"], v["gamma"]);
+}
+
+#[test]
+fn exact_refuses_times_beyond_its_horizon() {
+    // Issue 10: `exact --t 1e300` printed a 301-digit t and a pinned state.
+    let out = routh(&["exact", "--t", "1e300"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("t = 1e300 is beyond the range"), "{err}");
+    assert!(!err.contains("000000000000"), "{err}");
+    // Negative control: t = 100 is well inside the horizon.
+    assert!(routh(&["exact", "--t", "100"]).status.success());
+}
+
+#[test]
+fn steady_names_an_overflowing_mass_and_labels_poles_by_the_sign_of_a() {
+    // Issue 10: m = 1e300 printed omega = [0, 0, NaN]; a = 0 called both poles "centre of
+    // mass below".
+    let big = case_file(
+        "big",
+        ("m = 1.0", "m = 1e300"),
+        "[0.0, 0.6, 0.8]",
+        "[0.1, 0.2, 3.0]",
+    );
+    assert_exit_2(
+        &["steady", "--case", big.to_str().unwrap()],
+        "inertia about the contact point",
+    );
+    let centred = case_file(
+        "centred",
+        ("a = 0.3", "a = 0.0"),
+        "[0.0, 0.6, 0.8]",
+        "[0.1, 0.2, 3.0]",
+    );
+    let v = json(&routh(&[
+        "steady",
+        "--case",
+        centred.to_str().unwrap(),
+        "--json",
+    ]));
+    for spin in v["vertical"].as_array().unwrap() {
+        assert_eq!(spin["centre_of_mass"], "at the geometric centre");
+    }
+    let flipped = case_file(
+        "flipped",
+        ("a = 0.3", "a = -0.3"),
+        "[0.0, 0.6, 0.8]",
+        "[0.1, 0.2, 3.0]",
+    );
+    let v = json(&routh(&[
+        "steady",
+        "--case",
+        flipped.to_str().unwrap(),
+        "--json",
+    ]));
+    let labels: Vec<_> = v["vertical"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| (s["gamma3"].as_f64().unwrap(), s["centre_of_mass"].clone()))
+        .collect();
+    assert_eq!(labels, vec![(1.0, "below".into()), (-1.0, "above".into())]);
+}

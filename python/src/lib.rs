@@ -37,6 +37,7 @@ fn python_error(e: RouthError) -> PyErr {
         | RouthError::Case { .. }
         | RouthError::Singular { .. }
         | RouthError::Separatrix { .. }
+        | RouthError::Horizon { .. }
         | RouthError::Table { .. } => PyValueError::new_err(message),
     }
 }

@@ -4,15 +4,17 @@
 use routh::case::{check_option, Case};
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
-use routh::quadrature::{ExactSolution, Motion};
+use routh::quadrature::{Accuracy, ExactSolution, Motion};
 use routh::table::csv_header;
 use routh::{Body, Result, RouthError, State};
 use serde::Serialize;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Samples written to CSV when `--out` is given without `--samples`.
 const DEFAULT_CSV_SAMPLES: usize = 1001;
+/// The estimated relative error of a reported state above which `routh exact` warns.
+const ACCURACY_TOLERANCE: f64 = Accuracy::WARNING;
 
 /// Options of `routh exact`.
 #[derive(clap::Args, Debug)]
@@ -29,7 +31,7 @@ pub struct Args {
     /// CSV file for the samples (written atomically).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Print the summary as JSON.
+    /// Print the summary as JSON (with `--samples` and no `--out`, the samples inside it).
     #[arg(long)]
     pub json: bool,
     /// Instead of the motion, the flow of a Hamiltonian field of the first bracket (p-br):
@@ -79,6 +81,24 @@ struct Summary {
     h3: f64,
     #[serde(rename = "K")]
     k: f64,
+    /// Estimated relative error of the state at t (see `Accuracy`).
+    error_estimate: f64,
+    /// The largest |t| at which the estimated error stays below `ACCURACY_TOLERANCE` (None:
+    /// no limit).
+    horizon: Option<f64>,
+    /// The samples on [0, t] when asked for with `--json` and without `--out`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    samples: Option<Vec<Sample>>,
+}
+
+/// One sample of `routh exact --samples N --json`.
+#[derive(Serialize)]
+struct Sample {
+    t: f64,
+    gamma: [f64; 3],
+    #[serde(rename = "M")]
+    m: [f64; 3],
+    omega: [f64; 3],
 }
 
 /// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
@@ -96,7 +116,7 @@ pub(super) fn csv_row(body: &Body, t: f64, state: &State) -> String {
     values.fold(t.to_string(), |row, v| format!("{row},{v}"))
 }
 
-fn summary(case: &Case, exact: &ExactSolution, t: f64) -> Summary {
+fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
     let state = exact.state_at(t);
     let (u_min, u_max) = exact.turning_points();
     let red = &exact.reduction;
@@ -125,10 +145,13 @@ fn summary(case: &Case, exact: &ExactSolution, t: f64) -> Summary {
         t,
         gamma: state.gamma,
         m: state.m,
-        omega: state.omega(&case.ball),
+        omega: state.omega(body),
         h1: red.h1,
         h3: red.h3,
         k: red.k,
+        error_estimate: exact.accuracy.error_at(t),
+        horizon: Some(exact.accuracy.horizon(ACCURACY_TOLERANCE)).filter(|h| h.is_finite()),
+        samples: None,
     }
 }
 
@@ -151,7 +174,13 @@ fn print_text(s: &Summary) {
         println!("the motion passes through the symmetry axis (sin theta = 0) once per period");
     }
     println!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k);
-    println!("state at t = {}:", s.t);
+    println!(
+        "estimated relative error at t: {:.1e} (below {ACCURACY_TOLERANCE:e} for |t| <= {})",
+        s.error_estimate,
+        s.horizon
+            .map_or("any t".to_string(), |h| format!("{h:.6e}"))
+    );
+    println!("state at t = {:?}:", s.t);
     println!("  gamma = {:?}", s.gamma);
     println!("  M     = {:?}", s.m);
     println!("  omega = {:?}", s.omega);
@@ -170,35 +199,73 @@ pub fn run(args: Args) -> Result<()> {
     }
     let body = case.body("routh exact")?;
     let exact = ExactSolution::new(&body, &case.initial)?;
+    let error = exact.accuracy.checked_error_at(t)?;
+    if error > ACCURACY_TOLERANCE {
+        eprintln!(
+            "warning: the estimated relative error at t = {t:e} is {error:.1e}, above \
+             {ACCURACY_TOLERANCE:e} (for |t| <= {:.6e}); the phase error grows like t times the \
+             error of the period",
+            exact.accuracy.horizon(ACCURACY_TOLERANCE)
+        );
+    }
     let samples = args
         .samples
         .or(args.out.as_ref().map(|_| DEFAULT_CSV_SAMPLES));
-    if let Some(n) = samples {
-        let write_rows = |w: &mut dyn Write| -> Result<()> {
-            let io = |source| RouthError::Io {
-                path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
-                source,
-            };
-            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
-            for i in 0..n {
-                let ti = t * i as f64 / (n - 1) as f64;
-                writeln!(w, "{}", csv_row(&body, ti, &exact.state_at(ti))).map_err(io)?;
-            }
-            Ok(())
-        };
-        match &args.out {
-            Some(path) => write_atomic(path, write_rows)?,
-            None => write_rows(&mut std::io::stdout().lock())?,
+    let times = |n: usize| (0..n).map(move |i| t * i as f64 / (n - 1) as f64);
+    let mut s = summary(&case, &body, &exact, t);
+    match (samples, &args.out) {
+        (Some(n), Some(path)) => write_atomic(path, |w: &mut dyn Write| {
+            write_csv(w, &body, &exact, times(n), path)
+        })?,
+        (Some(n), None) if args.json => {
+            s.samples = Some(
+                times(n)
+                    .map(|ti| {
+                        let state = exact.state_at(ti);
+                        Sample {
+                            t: ti,
+                            gamma: state.gamma,
+                            m: state.m,
+                            omega: state.omega(&body),
+                        }
+                    })
+                    .collect(),
+            );
         }
-        if args.out.is_none() {
-            return Ok(());
+        (Some(n), None) => {
+            return write_csv(
+                &mut std::io::stdout().lock(),
+                &body,
+                &exact,
+                times(n),
+                Path::new("<stdout>"),
+            );
         }
+        (None, _) => {}
     }
-    let s = summary(&case, &exact, t);
     if args.json {
         super::print_json(&s);
     } else {
         print_text(&s);
+    }
+    Ok(())
+}
+
+/// The samples at `times` as CSV rows after the header.
+fn write_csv(
+    w: &mut dyn Write,
+    body: &Body,
+    exact: &ExactSolution,
+    times: impl Iterator<Item = f64>,
+    path: &Path,
+) -> Result<()> {
+    let io = |source| RouthError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
+    for ti in times {
+        writeln!(w, "{}", csv_row(body, ti, &exact.state_at(ti))).map_err(io)?;
     }
     Ok(())
 }

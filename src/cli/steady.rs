@@ -58,11 +58,7 @@ fn print_text(r: &Report) {
             "  gamma3 = {:+}: centre of mass {}, threshold |omega3| = {}; {} by Q'' = {:.6e}, \
              {} by the Jacobian (max Re lambda = {:.3e})",
             v.gamma3,
-            if v.centre_of_mass_above {
-                "above"
-            } else {
-                "below"
-            },
+            v.centre_of_mass,
             v.threshold_spin,
             stable(v.stability.stable_by_q),
             v.stability.q_second_derivative,

@@ -10,5 +10,5 @@ pub mod gauss;
 pub mod nutation;
 pub mod reduction;
 
-pub use nutation::{ExactSolution, Motion, Nutation};
+pub use nutation::{Accuracy, ExactSolution, Motion, Nutation};
 pub use reduction::Reduction;

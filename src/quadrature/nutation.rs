@@ -13,46 +13,65 @@
 //! integral of `dpsi/dt f(sigma)` in the same way, with advance `pi b0` per period.
 
 use crate::body::Body;
+use crate::differential::jacobian;
 use crate::error::{Result, RouthError};
+use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::gauss::GaussLegendre;
 use crate::quadrature::reduction::Reduction;
 use crate::state::State;
+use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
+use nalgebra::SMatrix;
 use num_dual::first_derivative;
 use std::f64::consts::{PI, TAU};
 
 /// First number of Chebyshev nodes tried for the series of `dt/dsigma`.
 const FIRST_NODES: usize = 32;
-/// Most nodes tried; a series that needs more is taken as a sign of a separatrix.
+/// Most nodes tried; a series that needs more passes so close to a separatrix (or to the
+/// axis) that the quadrature refuses it rather than spend seconds on it.
 const MAX_NODES: usize = 8192;
-/// A series has converged when its last quarter of coefficients is below this, relative to c0.
+/// A series has converged when its last quarter of coefficients is below this, relative to its
+/// largest coefficient, or below the round-off floor of its samples (whichever is larger).
 const SERIES_TOLERANCE: f64 = 2e-14;
 /// Turning points closer than this to a pole are snapped to it (a motion through the axis).
 const POLE_SNAP: f64 = 1e-12;
-/// A nutation with `u2 - u1` below this is reported as a steady motion: the round-off of Q
-/// (relative 1e-16 of its terms) leaves no accuracy in the shape of so small a nutation.
-pub const STEADY_AMPLITUDE: f64 = 1e-6;
 /// Gauss-Legendre nodes for the divided differences of Q (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
 /// First step of the outward search for the turning points.
 const FIRST_SEARCH_STEP: f64 = 1e-8;
 /// Largest step of that search (Q is smooth; a pair of roots closer than this is not sought).
 const MAX_SEARCH_STEP: f64 = 1.0 / 128.0;
+/// A state is a relative equilibrium when the part of the field (mg-eq) not tangent to the
+/// rotations about e3 is below this many machine epsilons of `|J| |x|` (the round-off scale of
+/// the field: J is its Jacobian, x the state).
+const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
+/// Absolute round-off of the integrals H1, H3, K computed from a state, in machine epsilons of
+/// the sum of the magnitudes of their terms. Here and below the round-off is estimated, not
+/// bounded: a few epsilons per sum of terms, errors of independent samples adding in
+/// quadrature (docs/quadrature.md, section 5).
+const INTEGRAL_EPSILONS: f64 = 2.0;
 
 /// A cosine series `c0/2 + sum_k c_k cos(k sigma)` and its integral from 0.
 #[derive(Debug, Clone, PartialEq)]
 struct CosineSeries(Vec<f64>);
 
 impl CosineSeries {
-    /// The series interpolating `samples` at the nodes `(j + 1/2) pi / n` (a DCT-II).
+    /// The series interpolating `samples` at the nodes `(j + 1/2) pi / n` (a DCT-II). The
+    /// cosines come from a table of `cos(m pi / (2n))` indexed by `k (2j + 1) mod 4n`, exact
+    /// integer arithmetic: computing `cos(k (j + 1/2) pi / n)` directly rounds an argument of
+    /// size `n^2`, and that error (1e-9 at n = 8192) would raise the noise of the coefficients
+    /// with n instead of letting them fall.
     fn from_samples(samples: &[f64]) -> Self {
         let n = samples.len();
+        let table: Vec<f64> = (0..4 * n)
+            .map(|m| (m as f64 * PI / (2 * n) as f64).cos())
+            .collect();
         let coef = (0..n)
             .map(|k| {
                 let sum: f64 = samples
                     .iter()
                     .enumerate()
-                    .map(|(j, v)| v * (k as f64 * (j as f64 + 0.5) * PI / n as f64).cos())
+                    .map(|(j, v)| v * table[(k * (2 * j + 1)) % (4 * n)])
                     .sum();
                 2.0 * sum / n as f64
             })
@@ -60,13 +79,20 @@ impl CosineSeries {
         CosineSeries(coef)
     }
 
-    /// Whether the last quarter of the coefficients is negligible against `c0`.
-    fn converged(&self) -> bool {
+    /// The largest magnitude of the last quarter of the coefficients.
+    fn tail(&self) -> f64 {
         let n = self.0.len();
-        let tail = self.0[3 * n / 4..]
+        self.0[3 * n / 4..]
             .iter()
-            .fold(0.0_f64, |m, c| m.max(c.abs()));
-        tail <= SERIES_TOLERANCE * self.0[0].abs()
+            .fold(0.0_f64, |m, c| m.max(c.abs()))
+    }
+
+    /// Whether the tail is negligible: below `SERIES_TOLERANCE` of the largest coefficient, or
+    /// below `floor`, the noise of the coefficients that the round-off of the samples leaves
+    /// (it does not fall with n, so asking for less would never end).
+    fn converged(&self, floor: f64) -> bool {
+        let largest = self.0.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        self.tail() <= SERIES_TOLERANCE * largest + floor
     }
 
     /// The mean over one period, `c0 / 2`.
@@ -108,11 +134,20 @@ pub struct Nutation {
     pub advance: f64,
     /// Number of Chebyshev nodes used.
     pub nodes: usize,
+    /// Estimated relative error of the period: the truncation and round-off of its series and
+    /// the round-off of the turning points.
+    pub period_error: f64,
+    /// Estimated absolute error of the advance per period (radians).
+    pub advance_error: f64,
     time: CosineSeries,
     angle: CosineSeries,
     rule: GaussLegendre,
     /// Phase sigma of the initial state.
     sigma0: f64,
+    /// The poles `p = +-1` the motion does not pass through, each with the strength
+    /// `c_p = p N(p) f(p) / (2 A R)` of the part of `dpsi/dsigma` singular there (see
+    /// `pole_angle`).
+    poles: Vec<(f64, f64)>,
     /// psi - Psi(sigma) on the initial period.
     psi_ref: f64,
 }
@@ -143,6 +178,90 @@ pub struct ExactSolution {
     pub reduction: Reduction,
     /// Steady motion or nutation.
     pub motion: Motion,
+    /// How the error of the computed state grows with t.
+    pub accuracy: Accuracy,
+}
+
+/// The estimated relative error of the state at time t,
+/// `(initial + drift |t|) exp(growth |t|)`.
+///
+/// A nutation: the period and the advance carry relative errors (truncation, round-off of the
+/// samples, round-off of the turning points), so the phase error grows like `|t| / T` times
+/// the period's error: per period the state is off by its speed times `T dT/T` plus its
+/// horizontal size times the error of the advance, and `drift` is that divided by T. A stable relative equilibrium: its distance from
+/// the state (`initial`) and the error of its rate. An unstable one: that distance times
+/// `exp(lambda |t|)`, lambda the largest real part of the eigenvalues of the linearisation.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Accuracy {
+    /// Relative error at t = 0 and for |t| within one period.
+    pub initial: f64,
+    /// Growth of the relative error per unit time.
+    pub drift: f64,
+    /// Exponential growth rate (unstable relative equilibria).
+    pub growth: f64,
+}
+
+impl Accuracy {
+    /// The estimated relative error above which a state is reported with a warning.
+    pub const WARNING: f64 = 1e-8;
+    /// The estimated relative error above which a state is refused (`RouthError::Horizon`).
+    /// The estimate is conservative: on the test cases the measured error is 3 to 30 times
+    /// smaller (docs/quadrature.md, section 5).
+    pub const REFUSAL: f64 = 1e-6;
+
+    /// The estimated relative error at `t`, or `RouthError::Horizon` if it exceeds
+    /// [`Accuracy::REFUSAL`].
+    pub fn checked_error_at(&self, t: f64) -> Result<f64> {
+        let error = self.error_at(t);
+        if error <= Self::REFUSAL {
+            Ok(error)
+        } else {
+            Err(RouthError::Horizon {
+                t,
+                horizon: self.horizon(Self::REFUSAL),
+                tolerance: Self::REFUSAL,
+                error,
+            })
+        }
+    }
+
+    /// The estimated relative error of the state at time `t`.
+    pub fn error_at(&self, t: f64) -> f64 {
+        let e = (self.initial + self.drift * t.abs()) * (self.growth * t.abs()).exp();
+        if e.is_nan() {
+            f64::INFINITY
+        } else {
+            e
+        }
+    }
+
+    /// The largest |t| at which the estimated error stays below `tolerance` (bisection on the
+    /// monotone `error_at`).
+    pub fn horizon(&self, tolerance: f64) -> f64 {
+        if self.error_at(0.0) > tolerance {
+            return 0.0;
+        }
+        if self.drift == 0.0 && self.growth == 0.0 {
+            return f64::INFINITY;
+        }
+        let mut hi = 1.0;
+        while self.error_at(hi) <= tolerance {
+            hi *= 2.0;
+            if hi > 1e300 {
+                return f64::INFINITY;
+            }
+        }
+        let mut lo = 0.0;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if self.error_at(mid) <= tolerance {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
 }
 
 /// Rotation of a state about e3 by `angle` (a symmetry of (mg-eq) when I1 = I2).
@@ -185,39 +304,100 @@ fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
     }
 }
 
+/// How far a state is from a relative equilibrium (a steady motion rotating about e3 at a
+/// constant rate Omega, `X(x) = Omega L x`, `L x = (e3 x gamma, e3 x M)`): the component of the
+/// field (mg-eq) orthogonal to `L x`, relative to `|J| |x|`, with the fitted Omega.
+fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64, SMatrix<f64, 6, 6>) {
+    let x = state.to_array();
+    let (field, jac) = jacobian(|y| vector_field(body, y), &x);
+    let lx = [-x[1], x[0], 0.0, -x[4], x[3], 0.0];
+    let ll: f64 = lx.iter().map(|v| v * v).sum();
+    let along: f64 = field.iter().zip(&lx).map(|(a, b)| a * b).sum();
+    let omega = if ll > 0.0 { along / ll } else { 0.0 };
+    let residual = field
+        .iter()
+        .zip(&lx)
+        .map(|(f, l)| (f - omega * l).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let size = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+    (
+        residual / (jac.norm() * size).max(f64::MIN_POSITIVE),
+        omega,
+        jac,
+    )
+}
+
+/// The absolute round-off of H1, H3, K computed from `state` (`INTEGRAL_EPSILONS` machine
+/// epsilons of the sum of the magnitudes of the terms of each).
+fn integral_errors(body: &Body, state: &State, red: &Reduction) -> [f64; 3] {
+    let norm = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let omega = state.omega(body);
+    let r = body.contact_vector(&state.gamma);
+    let (mm, w) = (norm(state.m), norm(omega));
+    let potential = body.m * body.gravity * (body.radius + body.a.abs());
+    let e = INTEGRAL_EPSILONS * f64::EPSILON;
+    [
+        e * (mm * w + 2.0 * potential),
+        e * mm * norm(r),
+        e * (red.k.abs() + red.routh_g(state.gamma[2]) * omega[2].abs()),
+    ]
+}
+
 impl ExactSolution {
     /// Solve the motion through `initial` by quadrature (body with I1 = I2).
+    ///
+    /// Decisions, each from a test that scales with the problem (docs/quadrature.md, section 5):
+    /// * a relative equilibrium to round-off (the field orthogonal to the rotations about e3
+    ///   below `RELATIVE_EQUILIBRIUM_EPSILONS` of its round-off scale) is steady, stable or not;
+    /// * otherwise the nutation between the turning points of Q is solved; if the whole of it
+    ///   lies within the round-off of Q (the tilt oscillation cannot be resolved) it is steady
+    ///   when Q'' < 0 there (a stable relative equilibrium, the error bounded by the unresolved
+    ///   amplitude), and a separatrix when Q'' >= 0;
+    /// * a turning point that the round-off of Q (from its own terms and from the integrals)
+    ///   moves by more than its distance to the next root of the local quadratic of Q
+    ///   (`Q'^2 <= noise |Q''|`) is a double root: a separatrix.
     pub fn new(body: &Body, initial: &State) -> Result<Self> {
+        require_finite_inertia(body)?;
         let red = Reduction::of_state(body, initial)?;
-        let omega = initial.omega(body);
-        let g = initial.gamma;
-        let u0 = g[2];
-        let udot0 = g[0] * omega[1] - g[1] * omega[0];
-        let norm_omega = omega.iter().map(|w| w * w).sum::<f64>().sqrt();
-        let (_, dq0, _) = red.q_derivatives(u0);
-        let slope_scale = red.q_slope_scale(u0).max(f64::MIN_POSITIVE);
-        let steady = |u: f64| {
-            Ok(ExactSolution {
-                body: *body,
-                reduction: red,
-                motion: Motion::Steady {
-                    u,
-                    precession: if u.abs() < 1.0 {
-                        red.precession_rate(u)
-                    } else {
-                        0.0
-                    },
-                    initial: *initial,
-                },
-            })
+        let errors = integral_errors(body, initial, &red);
+        let u0 = initial.gamma[2];
+        let steady = |u: f64, precession: f64, accuracy: Accuracy| ExactSolution {
+            body: *body,
+            reduction: red,
+            motion: Motion::Steady {
+                u,
+                precession,
+                initial: *initial,
+            },
+            accuracy,
         };
-        if udot0.abs() <= 1e-12 * norm_omega && dq0.abs() <= 1e-10 * slope_scale {
-            return steady(u0);
+        let (deviation, omega_fit, _) = relative_equilibrium_residual(body, initial);
+        if deviation <= RELATIVE_EQUILIBRIUM_EPSILONS * f64::EPSILON {
+            let (lambda, norm) = max_real_eigenvalue(body, initial, omega_fit)?;
+            let unstable = lambda > EIGENVALUE_TOLERANCE * norm.max(1.0);
+            let accuracy = if unstable {
+                Accuracy {
+                    initial: deviation,
+                    drift: 0.0,
+                    growth: lambda,
+                }
+            } else {
+                Accuracy {
+                    initial: deviation,
+                    drift: (deviation + f64::EPSILON) * omega_fit.abs(),
+                    growth: 0.0,
+                }
+            };
+            return Ok(steady(u0, omega_fit, accuracy));
         }
         let mut u1 = turning_point(&red, u0, -1.0)?;
         let mut u2 = turning_point(&red, u0, 1.0)?;
-        if u2 - u1 <= STEADY_AMPLITUDE {
-            return steady(u0);
+        let mid = 0.5 * (u1 + u2);
+        let noise_mid = red.q_noise(mid, errors).max(red.q_noise(u0, errors));
+        if red.q(mid).max(red.q(u0)) <= 4.0 * noise_mid {
+            return Self::unresolved_nutation(&red, u0, u2 - u1, noise_mid)
+                .map(|(rate, accuracy)| steady(u0, rate, accuracy));
         }
         let through_top = 1.0 - u2 <= POLE_SNAP;
         let through_bottom = u1 + 1.0 <= POLE_SNAP;
@@ -227,24 +407,163 @@ impl ExactSolution {
         if through_bottom {
             u1 = -1.0;
         }
+        let mut root_error = 0.0;
         for u in [u1, u2] {
-            let (_, dq, _) = red.q_derivatives(u);
-            if dq.abs() * (u2 - u1) <= 1e-12 * red.q_scale(u) {
+            let (_, dq, q2) = red.q_derivatives(u);
+            let noise = red.q_noise(u, errors);
+            let shift = noise / dq.abs();
+            // Near u_i, Q = Q' (u - u_i) + Q''/2 (u - u_i)^2 has its other root at
+            // -2 Q'/Q'' from u_i; when the round-off of Q moves u_i by more than that
+            // (Q'^2 <= noise |Q''|) the two roots are one double root within the accuracy of
+            // the integrals: the level set is a separatrix, and which side the motion lies on
+            // is not decided by the integrals.
+            if !(dq * dq > noise * q2.abs()) {
                 return Err(RouthError::Separatrix {
                     u_min: u1,
                     u_max: u2,
                     reason: format!(
-                        "Q has a double root at the turning point {u} (dQ/du = {dq:e})"
+                        "Q has a double root at the turning point {u} within the accuracy of \
+                         the integrals (dQ/du = {dq:e}, d2Q/du2 = {q2:e}, round-off of Q \
+                         {noise:e})"
                     ),
                 });
             }
+            root_error += shift / (u2 - u1);
         }
-        let nutation = Nutation::new(red, u1, u2, through_top, through_bottom, initial, udot0)?;
+        let omega = initial.omega(body);
+        let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
+        let mut nutation = Nutation::new(red, u1, u2, through_top, through_bottom, initial, udot0)?;
+        match Self::sensitivity(&nutation, mid, errors, initial, udot0) {
+            Some((period, advance)) => {
+                nutation.period_error += period;
+                nutation.advance_error += advance;
+            }
+            None => {
+                nutation.period_error += root_error;
+                nutation.advance_error += root_error * nutation.advance.abs();
+            }
+        }
+        // The state moves at `velocity` (relative sizes: gamma against 1, M against |M|), so a
+        // time error dt = T dT/T per period moves it by `velocity dt`; an error of psi rotates
+        // its horizontal part.
+        let x = initial.to_array();
+        let field = vector_field(body, &x);
+        let m_size = x[3..]
+            .iter()
+            .map(|v| v * v)
+            .sum::<f64>()
+            .sqrt()
+            .max(f64::MIN_POSITIVE);
+        let size = |v: &[f64], scale: f64| v.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
+        let velocity = size(&field[..3], 1.0) + size(&field[3..], m_size);
+        let horizontal = size(&x[..2], 1.0) + size(&x[3..5], m_size);
+        let per_period = velocity * nutation.period * nutation.period_error
+            + horizontal * nutation.advance_error;
+        let accuracy = Accuracy {
+            initial: per_period,
+            drift: per_period / nutation.period,
+            growth: 0.0,
+        };
         Ok(ExactSolution {
             body: *body,
             reduction: red,
             motion: Motion::Nutation(nutation),
+            accuracy,
         })
+    }
+
+    /// How much the round-off of the integrals changes the period and the advance: the
+    /// nutation is solved again with H1, H3, K moved by `k` times their round-off, each in the
+    /// direction that raises Q at the middle of the nutation, and the changes divided by `k`
+    /// (`k` up to 1e4, so that they stand above the round-off of the quadrature, and small
+    /// enough that the move stays below a tenth of Q there). The relative change of T and the
+    /// absolute change of the advance, or `None` if the moved level set cannot be solved.
+    fn sensitivity(
+        nutation: &Nutation,
+        mid: f64,
+        errors: [f64; 3],
+        initial: &State,
+        udot0: f64,
+    ) -> Option<(f64, f64)> {
+        let red = &nutation.reduction;
+        let grad = red.q_integral_gradient(mid);
+        let shift: f64 = grad.iter().zip(errors).map(|(g, e)| g.abs() * e).sum();
+        let k = (0.1 * red.q(mid) / shift).min(1e4);
+        if !(k > 0.0) {
+            return None;
+        }
+        let moved = |i: usize, v: f64| v + k * errors[i] * grad[i].signum();
+        let other = Reduction::new(
+            &red.body,
+            moved(0, red.h1),
+            moved(1, red.h3),
+            moved(2, red.k),
+        )
+        .ok()?;
+        let lo = turning_point(&other, mid, -1.0).ok()?;
+        let hi = turning_point(&other, mid, 1.0).ok()?;
+        let (lo, hi) = (
+            if nutation.through_bottom && lo + 1.0 <= POLE_SNAP {
+                -1.0
+            } else {
+                lo
+            },
+            if nutation.through_top && 1.0 - hi <= POLE_SNAP {
+                1.0
+            } else {
+                hi
+            },
+        );
+        let alt = Nutation::new(other, lo, hi, lo == -1.0, hi == 1.0, initial, udot0).ok()?;
+        Some((
+            (alt.period - nutation.period).abs() / (k * nutation.period),
+            (alt.advance - nutation.advance).abs() / k,
+        ))
+    }
+
+    /// A nutation whose whole amplitude lies within the round-off `noise` of Q near `u0`: a
+    /// stable relative equilibrium when `Q''(u0) < 0` (the rate `dpsi/dt` at u0, the error
+    /// bounded by the amplitude that Q cannot resolve, `sqrt(8 noise / |Q''|)`, seen in gamma);
+    /// otherwise the state lies on a separatrix within that round-off.
+    fn unresolved_nutation(
+        red: &Reduction,
+        u0: f64,
+        amplitude: f64,
+        noise: f64,
+    ) -> Result<(f64, Accuracy)> {
+        let (_, _, q2) = red.q_derivatives(u0);
+        let du = amplitude + (8.0 * noise / q2.abs()).sqrt();
+        if !(q2 < 0.0) {
+            return Err(RouthError::Separatrix {
+                u_min: u0 - du,
+                u_max: u0 + du,
+                reason: format!(
+                    "the state is within the round-off of Q ({noise:e}) of an unstable \
+                     relative equilibrium (Q'' = {q2:e} >= 0)"
+                ),
+            });
+        }
+        let s = (1.0 - u0 * u0).max(0.0).sqrt();
+        // A change du of gamma3 moves gamma by du / sin(theta), at most sqrt(2 du) at a pole.
+        let gamma_error = (du / s).min((2.0 * du).sqrt());
+        let rate = |u: f64| {
+            if u.abs() < 1.0 {
+                red.precession_rate(u)
+            } else {
+                0.0
+            }
+        };
+        let lo = (u0 - du).max(-1.0 + f64::EPSILON);
+        let hi = (u0 + du).min(1.0 - f64::EPSILON);
+        let rate_error = (rate(hi) - rate(lo)).abs() + f64::EPSILON * rate(u0).abs();
+        Ok((
+            rate(u0),
+            Accuracy {
+                initial: gamma_error,
+                drift: rate_error,
+                growth: 0.0,
+            },
+        ))
     }
 
     /// The state at time `t` (any real t; the cost does not depend on t).
@@ -302,21 +621,41 @@ impl Nutation {
             period: 0.0,
             advance: 0.0,
             nodes: 0,
+            period_error: 0.0,
+            advance_error: 0.0,
             time: CosineSeries(vec![]),
             angle: CosineSeries(vec![]),
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             sigma0: 0.0,
             psi_ref: 0.0,
+            poles: vec![],
         };
+        // The rate `dpsi/dt = N(u) / (2 A R) [1/(1 - u) - 1/(1 + u)] - omega3` has poles at
+        // u = +-1, outside the nutation but close to it when the motion passes near the axis:
+        // they would make psi turn too fast for a cosine series. Their parts
+        // `c_p / (1 - p u)` with `c_p = p N(p) f(p) / (2 A R)` are subtracted from the samples
+        // and integrated in closed form (`pole_angle`); the remainder is smooth.
+        for (pole, through) in [(1.0, through_top), (-1.0, through_bottom)] {
+            let (p, _) = nut.cofactor_with_noise(pole);
+            if !through && p > 0.0 && p.is_finite() {
+                let strength = pole * red.jellett_remainder(pole)
+                    / (2.0 * red.body.i1 * red.body.radius)
+                    / p.sqrt();
+                nut.poles.push((pole, strength));
+            }
+        }
         let half = 0.5 * (u2 - u1);
+        let eps = f64::EPSILON;
         let mut n = FIRST_NODES;
         loop {
             let mut dt = Vec::with_capacity(n);
             let mut dpsi = Vec::with_capacity(n);
+            let (mut noise_dt, mut noise_dpsi) = (0.0, 0.0);
+            let (mut square_dt, mut square_dpsi) = (0.0, 0.0);
             for j in 0..n {
                 let sigma = (j as f64 + 0.5) * PI / n as f64;
                 let phase = nut.phase(sigma, false);
-                let p = nut.cofactor(phase.u);
+                let (p, p_noise) = nut.cofactor_with_noise(phase.u);
                 if p.is_nan() || p <= 0.0 {
                     return Err(RouthError::Singular {
                         formula: "the reduced equation (du/dt)^2 = Q(u)",
@@ -329,36 +668,76 @@ impl Nutation {
                 }
                 let f = p.sqrt().recip();
                 let quotient = nut.jellett_quotient(phase.u);
+                let rate = red.precession_from_quotient(phase.u, quotient);
+                // Round-off of the rate: its two terms, and Jellett's remainder N, a difference
+                // of H3 and C h omega3, divided by 1 - u^2.
+                let b = &red.body;
+                let spin = red.spin(phase.u);
+                let remainder_noise =
+                    red.h3.abs() + (b.i3 * (b.radius * phase.u + b.a) * spin).abs();
+                let rate_noise = eps
+                    * ((phase.u * quotient).abs() / (b.i1 * b.radius)
+                        + spin.abs()
+                        + remainder_noise / ((1.0 - phase.u * phase.u) * b.i1 * b.radius));
+                let f_noise = 0.5 * f * p_noise;
                 dt.push(f);
-                dpsi.push(red.precession_from_quotient(phase.u, quotient) * f);
+                let singular: f64 = nut
+                    .poles
+                    .iter()
+                    .map(|(pole, c)| c / (1.0 - pole * phase.u))
+                    .sum();
+                dpsi.push(rate * f - singular);
+                let dpsi_noise = rate.abs() * f_noise + rate_noise * f;
+                noise_dt += f_noise;
+                noise_dpsi += dpsi_noise;
+                square_dt += f_noise * f_noise;
+                square_dpsi += dpsi_noise * dpsi_noise;
             }
+            // The coefficients are sums of n samples times 2/n: their noise is at most twice
+            // the mean noise of a sample.
+            let floor_dt = 2.0 * noise_dt / n as f64;
+            let floor_dpsi = 2.0 * noise_dpsi / n as f64;
             let time = CosineSeries::from_samples(&dt);
             let angle = CosineSeries::from_samples(&dpsi);
-            if time.converged() && angle.converged() {
+            let (time_ok, angle_ok) = (time.converged(floor_dt), angle.converged(floor_dpsi));
+            if time_ok && angle_ok {
                 nut.nodes = n;
                 nut.period = TAU * time.mean();
-                nut.advance = TAU * angle.mean();
+                nut.advance = TAU * angle.mean() + nut.pole_angle(TAU);
+                // T = pi c0 and the advance pi b0: their errors are those of the means c0 and
+                // b0 of the samples, the truncation (bounded by the tail) plus the round-off of
+                // the samples, independent from sample to sample, so adding in quadrature.
+                let mean_noise = |square: f64| 2.0 * square.sqrt() / n as f64;
+                nut.period_error = (time.tail() + mean_noise(square_dt)) / time.0[0].abs();
+                nut.advance_error = PI * (angle.tail() + mean_noise(square_dpsi));
                 nut.time = time;
                 nut.angle = angle;
                 break;
             }
-            if n >= MAX_NODES && time.converged() {
-                return Err(RouthError::Singular {
-                    formula: "the precession angle psi",
-                    reason: format!(
-                        "the motion passes so close to the axis (gamma3 up to {u2}, down to \
-                         {u1}) that psi turns too fast to resolve with {n} nodes"
-                    ),
-                });
-            }
             if n >= MAX_NODES {
-                return Err(RouthError::Separatrix {
-                    u_min: u1,
-                    u_max: u2,
-                    reason: format!(
-                        "the series of dt/dsigma does not converge with {n} nodes (period > {:.6e})",
+                let reason = if time_ok {
+                    format!(
+                        "the motion passes so close to the axis (gamma3 up to {u2}, down to {u1}) \
+                         that psi turns too fast to resolve with {n} nodes"
+                    )
+                } else {
+                    format!(
+                        "the series of dt/dsigma needs more than {n} nodes (period > {:.6e}): the \
+                         level set is within the resolution of the quadrature of a separatrix",
                         TAU * time.mean()
-                    ),
+                    )
+                };
+                return Err(if time_ok {
+                    RouthError::Singular {
+                        formula: "the precession angle psi",
+                        reason,
+                    }
+                } else {
+                    RouthError::Separatrix {
+                        u_min: u1,
+                        u_max: u2,
+                        reason,
+                    }
                 });
             }
             n *= 2;
@@ -403,15 +782,23 @@ impl Nutation {
     /// divided out exactly: `Q(u) / (u - u1) = int_0^1 Q'(u1 + tau (u - u1)) d tau` (as
     /// `Q(u1) = 0`), by Gauss-Legendre quadrature of the derivative from automatic
     /// differentiation. Dividing Q itself would lose the digits that cancel in Q near a root.
-    fn cofactor(&self, u: f64) -> f64 {
+    /// Also returns the relative round-off of P: that of Q' (`eps` times the sum of the
+    /// magnitudes of the slopes of the terms of Q, at both ends) against the mean slope.
+    fn cofactor_with_noise(&self, u: f64) -> (f64, f64) {
+        let red = &self.reduction;
         let slope = |from: f64| {
-            self.rule
-                .integrate(|tau| self.reduction.q_derivatives(from + tau * (u - from)).1)
+            let mean = self
+                .rule
+                .integrate(|tau| red.q_derivatives(from + tau * (u - from)).1);
+            let scale = red.q_slope_scale(from).max(red.q_slope_scale(u));
+            (mean, f64::EPSILON * scale / mean.abs())
         };
         if u - self.u1 <= self.u2 - u {
-            slope(self.u1) / (self.u2 - u)
+            let (mean, noise) = slope(self.u1);
+            (mean / (self.u2 - u), noise)
         } else {
-            -slope(self.u2) / (u - self.u1)
+            let (mean, noise) = slope(self.u2);
+            (-mean / (u - self.u1), noise)
         }
     }
 
@@ -431,6 +818,28 @@ impl Nutation {
             first_derivative(|v| red.jellett_remainder(v), pole + tau * (u - pole)).1
         });
         -slope / (u + pole)
+    }
+
+    /// The part of psi from the poles subtracted from the series: `sum_p c_p J_p(sigma)` with
+    /// `J_p(sigma) = int_0^sigma dsigma' / (1 - p u(sigma'))`, `1 - p u = a + b cos sigma`,
+    /// `a = 1 - p mid`, `b = p half`, in closed form
+    /// `J = 2 / sqrt(a^2 - b^2) atan(sqrt((a - b)/(a + b)) tan(sigma/2))` (plus pi past
+    /// sigma = pi), with `a - b = 1 - p u2`, `a + b = 1 - p u1` computed without cancellation.
+    fn pole_angle(&self, sigma: f64) -> f64 {
+        self.poles
+            .iter()
+            .map(|&(pole, c)| {
+                let (minus, plus) = (1.0 - pole * self.u2, 1.0 - pole * self.u1);
+                let root = (minus * plus).sqrt();
+                let turns = (sigma / TAU).floor();
+                let local = sigma - turns * TAU;
+                let mut j = ((minus / plus).sqrt() * (0.5 * local).tan()).atan();
+                if local > PI {
+                    j += PI;
+                }
+                c * 2.0 * (j + turns * PI) / root
+            })
+            .sum()
     }
 
     /// The tilt at phase `sigma` (in `[0, 2 pi)`); `odd` says the phase is in an odd
@@ -474,6 +883,7 @@ impl Nutation {
         let phase = self.phase(local, odd);
         let (f, _) = self.time.value_and_integral(local);
         let (_, psi) = self.angle.value_and_integral(local);
+        let psi = psi + self.pole_angle(local);
         let psi = psi_shift + psi + (turns * self.advance).rem_euclid(TAU);
         self.reduction.omega(
             phase.u,

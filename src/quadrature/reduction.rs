@@ -29,7 +29,7 @@ use crate::error::Result;
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Scalar};
 use crate::state::State;
-use num_dual::{first_derivative, second_derivative};
+use num_dual::{first_derivative, second_derivative, Dual64};
 
 /// The values of the three integrals that fix a nutation: energy H1 (int-g), Jellett's H3
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
@@ -87,8 +87,14 @@ impl Reduction {
 
     /// Jellett's remainder `N(u) = H3 - C (R u + a) omega3 = A R s omega_t`.
     pub fn jellett_remainder<D: Scalar>(&self, u: D) -> D {
+        self.remainder_at(u, lift(self.h3), lift(self.k))
+    }
+
+    /// `N(u)` at given values of H3 and K (generic, so that its dependence on the integrals can
+    /// be differentiated).
+    fn remainder_at<D: Scalar>(&self, u: D, h3: D, k: D) -> D {
         let b = &self.body;
-        lift::<D>(self.h3) - self.spin(u) * (u * b.radius + b.a) * b.i3
+        h3 - k / self.routh_g(u) * (u * b.radius + b.a) * b.i3
     }
 
     /// `Q(u) = (du/dt)^2`, the reduced equation of the tilt (module docs).
@@ -100,20 +106,59 @@ impl Reduction {
 
     /// The terms whose sum is `Q(u)`; their magnitudes set the round-off scale of `Q`.
     pub fn q_terms<D: Scalar>(&self, u: D) -> [D; 4] {
+        self.q_terms_at(u, [lift(self.h1), lift(self.h3), lift(self.k)])
+    }
+
+    /// The terms of `Q(u)` at given values `[H1, H3, K]` of the integrals.
+    fn q_terms_at<D: Scalar>(&self, u: D, integrals: [D; 3]) -> [D; 4] {
         let b = &self.body;
+        let [h1, h3, k] = integrals;
         let (ai, r) = (b.i1, b.radius);
         let s2 = lift::<D>(1.0) - u * u;
         let h = u * r + b.a;
-        let w3 = self.spin(u);
-        let n = self.jellett_remainder(u);
+        let w3 = k / self.routh_g(u);
+        let n = self.remainder_at(u, h3, k);
         let inertia = (s2 * (r * r) + h * h) * b.m + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
-            s2 * (lift::<D>(self.h1) - (u * b.a + r) * (2.0 * b.m * b.gravity)) / inertia,
+            s2 * (h1 - (u * b.a + r) * (2.0 * b.m * b.gravity)) / inertia,
             -(s2 * w3 * w3 * b.i3) / inertia,
             -(n * n) / (ai * r * r) / inertia,
             -(rolling * rolling * b.m) / inertia,
         ]
+    }
+
+    /// The partial derivatives `dQ/dH1, dQ/dH3, dQ/dK` at `u`, by automatic differentiation.
+    pub fn q_integral_gradient(&self, u: f64) -> [f64; 3] {
+        let values = [self.h1, self.h3, self.k];
+        std::array::from_fn(|i| {
+            first_derivative(
+                |x| {
+                    let mut at = values.map(lift);
+                    at[i] = x;
+                    self.q_terms_at(lift(u), at)
+                        .iter()
+                        .fold(lift::<Dual64>(0.0), |acc, &t| acc + t)
+                },
+                values[i],
+            )
+            .1
+        })
+    }
+
+    /// The round-off bound of `Q(u)` computed from integrals that carry the absolute errors
+    /// `integral_errors` (of H1, H3, K): the rounding of its own terms,
+    /// `eps sum |terms|`, plus `sum |dQ/dH_i| err_i`. Near a pole the terms of Q vanish like
+    /// `1 - u^2` while Jellett's remainder N is a difference of O(1) numbers: this second part
+    /// is what decides how well the integrals fix a motion that passes near the axis.
+    pub fn q_noise(&self, u: f64, integral_errors: [f64; 3]) -> f64 {
+        let grad = self.q_integral_gradient(u);
+        f64::EPSILON * self.q_scale(u)
+            + grad
+                .iter()
+                .zip(integral_errors)
+                .map(|(g, e)| g.abs() * e)
+                .sum::<f64>()
     }
 
     /// `Q(u)`, `Q'(u)`, `Q''(u)` by automatic differentiation.

@@ -1,0 +1,276 @@
+//! When `exact` may call a state steady, when it must solve the motion, and when it must
+//! refuse: the reproducers of issue 10 (wrong "steady" verdicts near the vertical spin) and of
+//! issue 14 (false "near a separatrix" refusals of regular nutations near the axis), and a
+//! property test over 500 random states against DOP853.
+
+use routh::body::Body;
+use routh::field::vector_field;
+use routh::integrate::{solve, Options};
+use routh::quadrature::{ExactSolution, Motion};
+use routh::state::{Normalise, State};
+use routh::steady::routh_threshold;
+use routh::RouthError;
+
+/// DOP853 at rtol 1e-13 (atol 1e-15) from `x0` to `t`: at t = 10 its global error on these
+/// motions is below 1e-10 (docs/quadrature.md, section 7), far below the 1e-7 compared here.
+fn dop853(body: &Body, x0: &State, t: f64) -> State {
+    let opts = Options {
+        rtol: 1e-13,
+        atol: 1e-15,
+        ..Options::default()
+    };
+    let field = |_t: f64, x: &[f64; 6]| vector_field(body, x);
+    let (_, y, _, _) = solve(
+        &field,
+        0.0,
+        x0.to_array(),
+        t,
+        &opts,
+        None,
+        None,
+        &mut |_, _| {},
+    )
+    .expect("integration");
+    State::from_array(&y)
+}
+
+/// Largest component difference, relative to the size of gamma (1) and of M.
+fn distance(a: &State, b: &State) -> f64 {
+    let m = a.m.iter().fold(0.0_f64, |s, v| s.max(v.abs())).max(1e-300);
+    let dg = (0..3).fold(0.0_f64, |s, i| s.max((a.gamma[i] - b.gamma[i]).abs()));
+    let dm = (0..3).fold(0.0_f64, |s, i| s.max((a.m[i] - b.m[i]).abs()));
+    dg.max(dm / m)
+}
+
+fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {
+    State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
+}
+
+fn tilt(theta: f64) -> [f64; 3] {
+    [theta.sin(), 0.0, theta.cos()]
+}
+
+#[test]
+fn below_routh_threshold_a_small_tilt_is_not_steady() {
+    // Issue 10: gamma = (sin 1e-6, 0, cos 1e-6), omega = (0, 0, 2) (below the threshold
+    // 2.7557) was called steady; DOP853 leaves the axis: gamma = (0.5187, -0.1501, 0.8417) at
+    // t = 20. The quadrature must not call it steady. This state lies so close to the
+    // homoclinic orbit that the integrals (round-off 1e-16) fix its distance from it only to
+    // 1e-4 relative: a refusal naming the separatrix is the honest answer; a solution must
+    // agree with DOP853.
+    let body = Body::default();
+    let x0 = state(&body, tilt(1e-6), [0.0, 0.0, 2.0]);
+    let reference = dop853(&body, &x0, 20.0);
+    assert!(
+        (reference.gamma[2] - 0.8417).abs() < 1e-3,
+        "{:?}",
+        reference.gamma
+    );
+    match ExactSolution::new(&body, &x0) {
+        Ok(exact) => {
+            assert!(!matches!(exact.motion, Motion::Steady { .. }));
+            let d = distance(&exact.state_at(20.0), &reference);
+            assert!(
+                d < 1e-6 || exact.accuracy.checked_error_at(20.0).is_err(),
+                "{d:e}"
+            );
+        }
+        Err(e) => assert!(matches!(e, RouthError::Separatrix { .. }), "{e}"),
+    }
+}
+
+#[test]
+fn above_routh_threshold_a_small_nutation_is_solved_not_steady() {
+    // Issue 10: gamma = (0.001, 0, 0.9999995), omega = (0, 0, 5) was called steady while it
+    // nutates (theta from 0.0010 to 0.0012), 1.8e-3 off at t = 10.
+    let body = Body::default();
+    let x0 = state(&body, [0.001, 0.0, 0.9999995], [0.0, 0.0, 5.0]);
+    let exact = ExactSolution::new(&body, &x0).unwrap();
+    let Motion::Nutation(nut) = &exact.motion else {
+        panic!("a nutation expected, got {:?}", exact.motion);
+    };
+    let theta_max = nut.u1.acos();
+    assert!((theta_max - 0.0012).abs() < 1e-4, "{theta_max}");
+    let d = distance(&exact.state_at(10.0), &dop853(&body, &x0, 10.0));
+    // The nutation's amplitude in gamma is 2e-4: 1e-9 shows that it is resolved.
+    assert!(d < 1e-9, "{d:e}");
+    // Negative control: the old verdict, a uniform rotation, is 1e-4 off.
+    let Motion::Nutation(_) = exact.motion else {
+        unreachable!()
+    };
+    let rate = exact.reduction.precession_rate(x0.gamma[2]);
+    let (s, c) = (10.0 * rate).sin_cos();
+    let g = x0.gamma;
+    let rotated = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
+    let steady_error = (0..3).fold(0.0_f64, |m, i| {
+        m.max((rotated[i] - dop853(&body, &x0, 10.0).gamma[i]).abs())
+    });
+    assert!(steady_error > 1e-5, "{steady_error:e}");
+}
+
+#[test]
+fn regular_nutations_near_the_axis_are_solved_in_few_nodes() {
+    // Issue 14: the default case at tilts 0.02, 0.0357, 0.05, 0.1, 0.15 was refused as "near a
+    // separatrix" after seconds: the convergence test asked the series of dpsi/dsigma for a
+    // tail below 2e-14 |b0|, below the round-off floor of its samples (1.3e-14, with |b0| =
+    // 0.41 < |b1| = 0.50), and the DCT's own round-off grew with n. DOP853 shows a regular
+    // nutation, period 0.96858 at tilt 0.1.
+    let body = Body::default();
+    for theta in [0.02, 0.0357, 0.05, 0.1, 0.15] {
+        let x0 = state(&body, tilt(theta), [0.5, 0.2, 8.0]);
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let Motion::Nutation(nut) = &exact.motion else {
+            panic!("tilt {theta}: a nutation expected");
+        };
+        assert!(nut.nodes <= 1024, "tilt {theta}: {} nodes", nut.nodes);
+        if theta == 0.1 {
+            assert!((nut.period - 0.96858).abs() < 1e-5, "{}", nut.period);
+        }
+        let d = distance(&exact.state_at(10.0), &dop853(&body, &x0, 10.0));
+        println!(
+            "tilt {theta}: T = {}, {} nodes, {d:.1e}",
+            nut.period, nut.nodes
+        );
+        assert!(d < 1e-9, "tilt {theta}: {d:e}");
+    }
+}
+
+#[test]
+fn huge_times_are_refused_with_the_horizon() {
+    // Issue 10: `exact --t 1e300` printed a pinned state. The phase error grows like t times
+    // the period's error: beyond the horizon the state is refused.
+    let body = Body::default();
+    let x0 = state(&body, tilt(0.3), [0.5, 0.2, 8.0]);
+    let exact = ExactSolution::new(&body, &x0).unwrap();
+    let horizon = exact.accuracy.horizon(routh::quadrature::Accuracy::REFUSAL);
+    assert!(horizon > 1e3 && horizon < 1e12, "{horizon:e}");
+    assert!(exact.accuracy.checked_error_at(0.5 * horizon).is_ok());
+    for t in [2.0 * horizon, 1e300, -1e300] {
+        assert!(matches!(
+            exact.accuracy.checked_error_at(t),
+            Err(RouthError::Horizon { .. })
+        ));
+    }
+}
+
+/// SplitMix64: a small deterministic generator for the property test.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn between(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+    fn unit(&mut self) -> [f64; 3] {
+        let z = self.between(-1.0, 1.0);
+        let phi = self.between(0.0, std::f64::consts::TAU);
+        let s = (1.0 - z * z).sqrt();
+        [s * phi.cos(), s * phi.sin(), z]
+    }
+}
+
+#[test]
+fn exact_agrees_with_dop853_or_refuses_on_500_random_states() {
+    // 400 states: random bodies (gravity or not, centre of mass up or down), gamma uniform on
+    // the sphere, omega with components log-uniform from 0.03 to 30; 100 states within 1e-3
+    // of the top-heavy vertical spin, 50 above and 50 below Routh's threshold. At t = 10 the
+    // quadrature must agree with DOP853 to 1e-7, or refuse with a reason (a separatrix or a
+    // horizon), never give a wrong state.
+    let mut rng = Random(20261123);
+    let mut cases = vec![];
+    for _ in 0..400 {
+        let radius = rng.between(0.5, 2.0);
+        let a = rng.between(-0.6, 0.6) * radius;
+        let i1 = rng.between(0.2, 1.0);
+        let i3 = rng.between(0.2, 1.9) * i1;
+        let gravity = if rng.next() < 0.25 { 0.0 } else { 9.81 };
+        let body = Body::new(
+            rng.between(0.5, 2.0),
+            radius,
+            a,
+            i1,
+            i1,
+            i3.min(2.0 * i1),
+            gravity,
+        )
+        .unwrap();
+        let size = 10f64.powf(rng.between(-1.5, 1.5));
+        let omega = rng.unit().map(|w| w * size);
+        cases.push((body, state(&body, rng.unit(), omega), "random"));
+    }
+    let body = Body::default();
+    let threshold = routh_threshold(&body, 1.0);
+    for i in 0..100 {
+        let spin = if i < 50 {
+            threshold * rng.between(1.01, 4.0)
+        } else {
+            threshold * rng.between(0.05, 0.99)
+        };
+        let offset = rng.unit().map(|v| v * 1e-3 * rng.next());
+        let gamma = [offset[0], offset[1], 1.0];
+        let omega = [
+            1e-3 * rng.between(-1.0, 1.0),
+            1e-3 * rng.between(-1.0, 1.0),
+            spin,
+        ];
+        let label = if i < 50 {
+            "above threshold"
+        } else {
+            "below threshold"
+        };
+        cases.push((body, state(&body, gamma, omega), label));
+    }
+    let (mut agreed, mut refused, mut worst) = (0, vec![], 0.0_f64);
+    for (body, x0, label) in &cases {
+        let outcome = ExactSolution::new(body, x0).and_then(|exact| {
+            exact.accuracy.checked_error_at(10.0)?;
+            Ok(exact.state_at(10.0))
+        });
+        match outcome {
+            Ok(q) => {
+                let d = distance(&q, &dop853(body, x0, 10.0));
+                assert!(d < 1e-7, "{label}: {body:?} {x0:?}: {d:e}");
+                worst = worst.max(d);
+                agreed += 1;
+            }
+            Err(e) => {
+                // A separatrix, a horizon, or a motion passing so near the axis (without
+                // crossing it) that psi turns faster than 8192 nodes resolve.
+                let axis =
+                    matches!(&e, RouthError::Singular { reason, .. } if reason.contains("axis"));
+                assert!(
+                    axis || matches!(
+                        e,
+                        RouthError::Separatrix { .. } | RouthError::Horizon { .. }
+                    ),
+                    "{label}: {e}"
+                );
+                refused.push(format!("{label}: {e}"));
+            }
+        }
+    }
+    println!(
+        "agreed {agreed}, worst {worst:.1e}; refused {}:",
+        refused.len()
+    );
+    for r in &refused {
+        println!("  {r}");
+    }
+    let count = |label: &str| refused.iter().filter(|r| r.starts_with(label)).count();
+    // Measured (seed 20261123): 1 of 400 random states refused (a motion passing within 1e-4
+    // of the axis), none above the threshold, 49 of 50 below it: those lie within 1e-3 of
+    // the unstable vertical spin, so near its homoclinic orbit, where the cosine series of
+    // dt/dsigma needs more than 8192 nodes (docs/quadrature.md, section 5: not yet solved).
+    assert!(count("random") <= 4, "{} random refusals", count("random"));
+    assert_eq!(count("above threshold"), 0);
+    assert!(refused
+        .iter()
+        .filter(|r| r.starts_with("below threshold"))
+        .all(|r| r.contains("separatrix")));
+}
