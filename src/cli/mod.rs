@@ -4,6 +4,7 @@
 mod animate;
 mod audit;
 mod exact;
+mod flow;
 mod plot;
 mod simulate;
 mod steady;
