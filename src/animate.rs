@@ -184,6 +184,7 @@ pub fn html(table: &Table) -> Result<String> {
     let rows = frame_rows(table)?;
     let (radius, a) = geometry(&rows, &table.origin)?;
     let column = |j: usize| f32_column(rows.iter().map(|r| r[j]));
+    // gamma (columns 1 to 3) is embedded at the first sample only, as `gamma0`.
     let mut columns: BTreeMap<&'static str, String> = frame_names()
         .enumerate()
         .filter(|(j, _)| !(1..4).contains(j))
@@ -194,6 +195,7 @@ pub fn html(table: &Table) -> Result<String> {
         "theta",
         f32_column(theta.series[0].points.iter().map(|p| p.1)),
     );
+    // A CSV without integral columns still animates; the page says the drift is missing.
     let drift = drift_plot(table)
         .map(|plot| plot.series)
         .unwrap_or_default()
@@ -290,6 +292,23 @@ mod tests {
             out.push_row(&cells).unwrap();
         }
         out
+    }
+
+    #[test]
+    fn samples_without_integrals_still_animate() {
+        let case = crate::case::Case::default_case().unwrap();
+        let full = crate::table::simulate_full(&case, 1.0, 5).unwrap();
+        let mut table = Table::new("frames.csv", frame_names().map(str::to_string).collect());
+        for i in 0..full.len() {
+            let row: Vec<f64> = frame_names().map(|n| full.column(n).unwrap()[i]).collect();
+            table.push_row(&row).unwrap();
+        }
+        let page = html(&table).unwrap();
+        assert!(page.contains("\"drift\":[]"), "no drift series");
+        assert!(
+            html(&full).unwrap().contains("\"drift\":[[\"H1\","),
+            "drift series"
+        );
     }
 
     #[test]
