@@ -89,7 +89,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         case: case.source.clone(),
         flow: field.name(),
         condition: args.condition.name(),
-        alpha: args.alpha,
+        alpha: bracket.alpha.at(&case.initial.gamma),
         motion: if shape.period.is_some() {
             "nutation"
         } else {
