@@ -1,13 +1,13 @@
 //! The class `Body`: the ball's parameters, and the field (mg-eq), omega (om-m) and the
 //! integrals (int-g), (raus-int) at phase-space points.
 
-use crate::convert::{bad_argument, columns, phase_point, python_error, states, vector};
+use crate::convert::{bad_argument, columns, python_error, states, vector};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use routh_core::field::vector_field;
 use routh_core::integrals::{Integrals, INTEGRAL_NAMES};
-use routh_core::state::{Normalise, State};
+use routh_core::state::{Normalise, State, UNIT_TOLERANCE};
 
 /// The rolling ball (SI units or any consistent set): mass `m`, radius `R`, offset `a` of the
 /// centre of mass (the centre of mass is at `-a e3` from the geometric centre, |a| < R),
@@ -31,24 +31,57 @@ impl PyBody {
         &self,
         py: Python<'py>,
         x: &Bound<'py, PyAny>,
+        unit_tolerance: Option<f64>,
         f: impl Fn(&[f64; 6]) -> [f64; M],
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (points, single) = checked_points(x)?;
+        let (points, single) = checked_points(x, unit_tolerance)?;
         let out: Vec<[f64; M]> = points.iter().map(f).collect();
         columns(py, &out, single)
     }
 }
 
-/// The points of the argument `x`, each a valid state (finite, |gamma| = 1 within 1e-12).
-fn checked_points(x: &Bound<'_, PyAny>) -> PyResult<(Vec<[f64; 6]>, bool)> {
+/// The points of the argument `x`, each finite and, unless `unit_tolerance` is None, with
+/// `||gamma| - 1| <= unit_tolerance`.
+fn checked_points(
+    x: &Bound<'_, PyAny>,
+    unit_tolerance: Option<f64>,
+) -> PyResult<(Vec<[f64; 6]>, bool)> {
     let (points, single) = states::<6>("x", x)?;
+    if let Some(tol) = unit_tolerance {
+        if !(tol.is_finite() && tol >= 0.0) {
+            return Err(bad_argument(
+                "unit_tolerance",
+                format!("{tol} must be finite and >= 0"),
+            ));
+        }
+    }
     for (j, p) in points.iter().enumerate() {
-        let name = if single {
-            "x".to_string()
-        } else {
-            format!("x[:, {j}]")
+        let name = || {
+            if single {
+                "x".to_string()
+            } else {
+                format!("x[:, {j}]")
+            }
         };
-        phase_point(&name, p)?;
+        if let Some(i) = p.iter().position(|v| !v.is_finite()) {
+            return Err(bad_argument(
+                &name(),
+                format!("component {i} = {} is not finite", p[i]),
+            ));
+        }
+        let norm = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        if let Some(tol) = unit_tolerance.filter(|&tol| (norm - 1.0).abs() > tol) {
+            return Err(bad_argument(
+                &name(),
+                format!(
+                    "gamma = {:?} is not a unit vector: |gamma| - 1 = {:.3e} exceeds \
+                     unit_tolerance = {tol:e} (pass a looser unit_tolerance, or None, to evaluate \
+                     off the sphere, e.g. at the stages of another integrator)",
+                    [p[0], p[1], p[2]],
+                    norm - 1.0
+                ),
+            ));
+        }
     }
     Ok((points, single))
 }
@@ -137,29 +170,48 @@ impl PyBody {
     }
 
     /// The vector field (mg-eq) `dx/dt` at `x` (shape `(6,)` or `(6, k)`; result the same
-    /// shape), in units of x per unit time. `x` must be finite with |gamma| = 1 (within 1e-12):
-    /// `ValueError` naming the column otherwise.
-    fn field<'py>(&self, py: Python<'py>, x: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        self.map_points(py, x, |p| vector_field(&self.inner, p))
+    /// shape), in units of x per unit time. `x` must be finite with `||gamma| - 1|` at most
+    /// `unit_tolerance` (default 1e-12, as a state of the library; `None`: not checked; the
+    /// field is defined off the sphere, and another integrator's stages need a looser value
+    /// such as 1e-3): `ValueError` naming the column otherwise.
+    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
+    fn field<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        unit_tolerance: Option<f64>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.map_points(py, x, unit_tolerance, |p| vector_field(&self.inner, p))
     }
 
     /// The angular velocity `omega = I_Q^{-1} M` of (om-m) at `x` (rad per unit time, body
-    /// frame), shape `(3,)` or `(3, k)`.
-    fn omega<'py>(&self, py: Python<'py>, x: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        self.map_points(py, x, |p| State::from_array(p).omega(&self.inner))
+    /// frame), shape `(3,)` or `(3, k)`; `unit_tolerance` as in `field`.
+    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
+    fn omega<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        unit_tolerance: Option<f64>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.map_points(py, x, unit_tolerance, |p| {
+            State::from_array(p).omega(&self.inner)
+        })
     }
 
     /// The integrals at `x` as a dict `{H1, H2, H3, H4, K}`: energy H1 (int-g, twice the
     /// kinetic plus potential energy), the quadratic integral H2, Jellett's H3 = (M, r),
     /// H4 = |gamma|^2 and Routh's K (raus-int). H3 and K are `None` unless I1 = I2; H2 is
     /// `M^2 - m r^2 H1` for I1 != I2 without gravity and `None` for I1 != I2 with gravity.
-    /// For `x` of shape `(6, k)` each value is an array of k numbers.
+    /// For `x` of shape `(6, k)` each value is an array of k numbers; `unit_tolerance` as in
+    /// `field`.
+    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
     fn integrals<'py>(
         &self,
         py: Python<'py>,
         x: &Bound<'py, PyAny>,
+        unit_tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let (points, single) = checked_points(x)?;
+        let (points, single) = checked_points(x, unit_tolerance)?;
         let values: Vec<[Option<f64>; 5]> = points
             .iter()
             .map(|p| Integrals::at(&self.inner, p).values())
