@@ -89,7 +89,11 @@ impl DenseOutput {
                     return self.knot(after);
                 }
                 let i = (after - 1).min(self.knots_t.len() - 2);
-                if current.as_ref().is_none_or(|(j, _)| *j != i) {
+                // The step of a previous time serves if it is step i taken whole (as always,
+                // unless the controller rejected the stored size: then start again for t).
+                let reusable =
+                    matches!(&current, Some((j, s)) if *j == i && s.t() == self.knots_t[i + 1]);
+                if !reusable {
                     let (ta, tb) = (self.knots_t[i], self.knots_t[i + 1]);
                     // One RK4 step of the stored size, or the DOP853 step of that size.
                     let method = match self.method {
@@ -106,9 +110,10 @@ impl DenseOutput {
                         self.atol,
                         Some(tb - ta),
                     );
-                    current = stepper.ok().map(|mut s| {
+                    current = stepper.ok().and_then(|mut s| {
                         while (s.t() - t) * dir < 0.0 && s.step().is_ok_and(|done| !done) {}
-                        (i, s)
+                        // A step that failed again leaves no extension covering t.
+                        ((s.t() - t) * dir >= 0.0).then_some((i, s))
                     });
                 }
                 match &mut current {
