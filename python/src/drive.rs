@@ -101,11 +101,15 @@ pub enum Output<'a> {
     Times(&'a [f64]),
 }
 
+/// An event function `g_i(t, y)`, called with the event's index.
+pub type EventFunction<'h, const N: usize> =
+    &'h mut dyn FnMut(usize, f64, &[f64; N]) -> PyResult<f64>;
+
 /// The hooks of a run into Python: event functions and the Ctrl-C check. Their errors (an
 /// exception in an event function, `KeyboardInterrupt`) end the run and are raised.
 pub struct Hooks<'h, const N: usize> {
     /// `g_i(t, y)` of event `i`.
-    pub event: &'h mut dyn FnMut(usize, f64, &[f64; N]) -> PyResult<f64>,
+    pub event: EventFunction<'h, N>,
     /// The counting rule of each event.
     pub rules: &'h [EventRule],
     /// Called every [`SIGNAL_CHECK_STEPS`] steps.
@@ -233,10 +237,9 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
     if keep_knots {
         run.knots.push((t0, y0));
     }
-    let mut g_prev = Vec::with_capacity(n_events);
-    for i in 0..n_events {
-        g_prev.push((hooks.event)(i, t0, &y0)?);
-    }
+    let mut g_prev = (0..n_events)
+        .map(|i| (hooks.event)(i, t0, &y0))
+        .collect::<PyResult<Vec<f64>>>()?;
     let mut stepper = match Stepper::new(
         sys,
         settings.method,
@@ -271,9 +274,9 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         let y_raw = stepper.y();
         // Events on the unprojected step, in the order of time.
         let mut found: Vec<(f64, usize)> = vec![];
-        for i in 0..n_events {
+        for (i, (g0, rule)) in g_prev.iter_mut().zip(hooks.rules).enumerate() {
             let g1 = (hooks.event)(i, tb, &y_raw)?;
-            if crosses(g_prev[i], g1, hooks.rules[i].direction) {
+            if crosses(*g0, g1, rule.direction) {
                 let te = if g1 == 0.0 {
                     tb
                 } else {
@@ -311,7 +314,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
                 };
                 found.push((te, i));
             }
-            g_prev[i] = g1;
+            *g0 = g1;
         }
         if matches!(run.ending, Ending::Failed(_)) {
             break;

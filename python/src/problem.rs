@@ -238,6 +238,7 @@ fn read_span(obj: &Bound<'_, PyAny>) -> PyResult<(f64, f64)> {
 }
 
 impl PyProblem {
+    #[allow(clippy::too_many_arguments)]
     fn solve_with<S: OdeSystem<N> + Sync, const N: usize>(
         &self,
         py: Python<'_>,

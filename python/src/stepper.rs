@@ -29,6 +29,7 @@ pub struct Rk4<'a, S, const N: usize> {
 impl<'a, S: OdeSystem<N>, const N: usize> Stepper<'a, S, N> {
     /// A stepper from `(t0, y0)` towards `t_end` (either direction). `h_init` is the first
     /// step of DOP853 (`None`: Hairer's guess).
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         sys: &'a S,
         method: Method,
