@@ -8,7 +8,7 @@
 //! all the requested times that fall in the same step.
 
 use crate::body::PyBody;
-use crate::convert::{bad_argument, columns, times};
+use crate::convert::{bad_argument, check_size, columns, times};
 use crate::drive::Projector;
 use crate::stepper::Stepper;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
@@ -214,6 +214,7 @@ impl DenseOutput {
     /// The state at `t` (a number or a 1-D array of times within `[t_min, t_max]`).
     fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         let (ts, single) = times("t", t)?;
+        check_size("t", ts.len() as u128, self.dim)?;
         let (lo, hi) = (self.t_min(), self.t_max());
         if let Some(bad) = ts.iter().find(|&&s| s < lo || s > hi) {
             return Err(bad_argument(

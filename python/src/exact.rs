@@ -2,7 +2,7 @@
 //! `quadrature::ExactSolution`), the state at any array of times.
 
 use crate::body::PyBody;
-use crate::convert::{columns, phase_point, python_error, times, vector};
+use crate::convert::{check_size, columns, phase_point, python_error, times, vector};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -57,6 +57,7 @@ impl PyExact {
     /// The state at `t` (a number or a 1-D array of times).
     fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         let (ts, single) = times("t", t)?;
+        check_size("t", ts.len() as u128, 6)?;
         let mut rows = Vec::with_capacity(ts.len());
         for chunk in ts.chunks(CHUNK) {
             py.detach(|| rows.extend(chunk.iter().map(|&t| self.inner.state_at(t).to_array())));

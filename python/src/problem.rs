@@ -84,7 +84,8 @@ enum What {
 /// `direction=-1` finds the maxima of theta, `+1` its minima), `"gamma3=<value>"`
 /// (`g = gamma3 - value`), `"theta=<radians>"` (`g = arccos(gamma3) - value`). `terminal`:
 /// `False`, `True` (stop at the first occurrence) or a count n (stop at the n-th);
-/// `direction`: as in SciPy (> 0: only crossings from negative to positive). A plain string
+/// `direction`: as in SciPy (> 0: only crossings from negative to positive, in the order of
+/// integration, so backward in time the maxima of theta have direction +1). A plain string
 /// or callable may be given to `simulate` instead; a callable's `terminal` and `direction`
 /// attributes are read as in SciPy. Picklable (a callable if pickle can pickle it).
 #[pyclass(name = "Event", module = "routh", frozen)]

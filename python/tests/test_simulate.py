@@ -213,3 +213,51 @@ def test_drift_and_counters(case):
     again = problem.solve(samples=11)
     np.testing.assert_array_equal(again.y, result.y)
     assert routh.Problem.from_case().t_span == (0.0, routh.default_case()[2])
+
+
+def test_theta_event_is_the_gamma3_event(case):
+    # theta = c and gamma3 = cos(c) are the same crossings (arccos is monotone).
+    body, x0 = case
+    c = 0.25
+    by_theta = routh.simulate(body, x0, 5.0, events=f"theta={c}")
+    by_gamma3 = routh.simulate(body, x0, 5.0, events=f"gamma3={np.cos(c)}")
+    assert len(by_theta.t_events[0]) >= 8
+    np.testing.assert_allclose(by_theta.t_events[0], by_gamma3.t_events[0], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(np.arccos(by_theta.y_events[0][:, 2]), c, atol=1e-12)
+
+
+def test_projection_keeps_every_reported_state_on_the_level_set(case):
+    # With project=True the samples, the events and the dense output are projected: the
+    # integrals stay at their initial values to rounding (1e-13) even at a loose tolerance,
+    # where the unprojected run drifts by ~1e-6.
+    body, x0 = case
+    h0 = body.integrals(x0)
+    t = np.linspace(0.0, 50.0, 333)
+    runs = {p: routh.simulate(body, x0, 50.0, rtol=1e-6, atol=1e-6, project=p, dense_output=True,
+                              events="theta_dot", samples=101) for p in (True, False)}
+
+    def drift(states):
+        values = body.integrals(states, unit_tolerance=None)
+        return max(np.max(np.abs(values[k] - h0[k])) / abs(h0[k]) for k in ("H1", "H3", "K"))
+
+    projected = runs[True]
+    assert projected.projected
+    assert drift(projected.y) < 1e-13
+    assert drift(projected.sol(t)) < 1e-13
+    assert drift(projected.y_events[0].T) < 1e-13
+    # Negative control: without projection the same tolerance drifts.
+    assert drift(runs[False].y) > 1e-9
+
+
+def test_rk4_events_and_backward(case):
+    # RK4 with fixed steps: events are located on its continuous extension; backward runs
+    # take negative steps. 20000 steps over t = 5 (h = 2.5e-4): global error ~1e-11.
+    body, x0 = case
+    exact = routh.ExactSolution(body, x0)
+    result = routh.simulate(body, x0, (0.0, -5.0), method="rk4:20000",
+                            events=routh.Event("theta_dot", direction=-1.0))
+    assert result.method == "rk4:20000" and result.steps == 20000 and result.success
+    assert np.max(np.abs(result.y_final - exact(-5.0))) < 1e-9
+    # As in SciPy, the direction of a crossing follows the integration: backward in time,
+    # g = -d(gamma3)/dt going from + to - marks the minima of theta (gamma3 at its maximum).
+    np.testing.assert_allclose(result.y_events[0][:, 2], exact.turning_points[1], atol=1e-9)
