@@ -179,3 +179,29 @@ def test_ctrl_c_interrupts_a_long_integration():
     elapsed = time.perf_counter() - start
     timer.cancel()
     assert elapsed < 5.0, elapsed
+
+
+def test_a_real_sigint_stops_a_python_process():
+    # The signal a terminal sends on Ctrl-C, to a separate interpreter that runs a long
+    # integration: it ends with KeyboardInterrupt within seconds (else it would run ~6 minutes).
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    code = ("import routh, sys\n"
+            "b, x, *_ = routh.default_case()\n"
+            "print('running', flush=True)\n"
+            "routh.simulate(b, x, 1e6)\n")
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().strip() == "running"
+    time.sleep(0.3)
+    start = time.perf_counter()
+    os.kill(proc.pid, signal.SIGINT)
+    try:
+        _, err = proc.communicate(timeout=10)
+    finally:
+        proc.kill()
+    assert time.perf_counter() - start < 5.0
+    assert proc.returncode != 0 and "KeyboardInterrupt" in err, err
