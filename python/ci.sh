@@ -16,8 +16,8 @@ rm -rf "$venv"
 python3 -m venv "$venv"
 pip() { "$venv/bin/pip" --disable-pip-version-check "$@"; }
 # Test and example dependencies: SciPy is the independent integrator of the tests, matplotlib
-# draws the example's figure.
-pip install --quiet pytest numpy scipy matplotlib
+# draws the example's figure, mypy checks the type stub.
+pip install --quiet pytest numpy scipy matplotlib mypy
 # The wheel: `pip wheel` runs the build backend declared in python/pyproject.toml (maturin,
 # fetched into an isolated environment), exactly as `pip install ./python` does.
 rm -rf "$wheels"
@@ -34,6 +34,10 @@ for wanted in ("routh/__init__.pyi", "routh/py.typed"):
         sys.exit(f"{wanted} missing from the wheel: {names}")
 print("wheel holds", ", ".join(n for n in names if n.startswith("routh/")))
 PY
+# The stub agrees with the module (mypy's stubtest: every name, signature and default), and
+# the example type-checks against it.
+(cd "$root/target" && "$venv/bin/python" -m mypy.stubtest routh --allowlist "$root/python/stubtest-allowlist.txt")
+"$venv/bin/python" -m mypy --ignore-missing-imports "$root/python/examples/nutation.py"
 # The audit test compares with the command-line tool's JSON.
 (cd "$root" && cargo build --release --bin routh)
 status=0

@@ -36,6 +36,7 @@ theta = np.arccos(np.clip(result.y[2], -1.0, 1.0))
 
 # %%
 exact = routh.ExactSolution(body, x0)
+assert exact.period is not None and exact.precession_advance is not None  # a nutation
 theta_min, theta_max = exact.theta_range
 print(f"period T = {exact.period:.12f}, precession per period = {exact.precession_advance:.12f} rad")
 print(f"maxima of theta found by the event: {result.t_events[0][:3]} ...")
@@ -66,6 +67,7 @@ ax.set_xlabel("t")
 ax.set_ylabel("max |x_simulate - x_exact|")
 ax.set_title("Simulation against the quadrature")
 ax = axes[2]
+assert result.space is not None  # full=True
 contact = result.space["contact"]
 ax.plot(contact[0], contact[1], lw=0.8)
 ax.plot(contact[0, 0], contact[1, 0], "o", ms=4, label="start")
