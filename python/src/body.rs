@@ -26,16 +26,16 @@ pub struct PyBody {
 
 impl PyBody {
     /// Apply `f` to each checked point of `x` (`(6,)` or `(6, k)`), returning `(6,)`-shaped
-    /// or `(3,)`-shaped results stacked the same way.
+    /// or `(3,)`-shaped results stacked the same way; the interpreter lock is released meanwhile.
     fn map_points<'py, const M: usize>(
         &self,
         py: Python<'py>,
         x: &Bound<'py, PyAny>,
         unit_tolerance: Option<f64>,
-        f: impl Fn(&[f64; 6]) -> [f64; M],
+        f: impl Fn(&[f64; 6]) -> [f64; M] + Sync,
     ) -> PyResult<Bound<'py, PyAny>> {
         let (points, single) = checked_points(x, unit_tolerance)?;
-        let out: Vec<[f64; M]> = points.iter().map(f).collect();
+        let out: Vec<[f64; M]> = py.detach(|| points.iter().map(&f).collect());
         columns(py, &out, single)
     }
 }
