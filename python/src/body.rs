@@ -212,10 +212,13 @@ impl PyBody {
         unit_tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let (points, single) = checked_points(x, unit_tolerance)?;
-        let values: Vec<[Option<f64>; 5]> = points
-            .iter()
-            .map(|p| Integrals::at(&self.inner, p).values())
-            .collect();
+        let body = self.inner;
+        let values: Vec<[Option<f64>; 5]> = py.detach(|| {
+            points
+                .iter()
+                .map(|p| Integrals::at(&body, p).values())
+                .collect()
+        });
         let dict = PyDict::new(py);
         for (i, name) in INTEGRAL_NAMES.iter().enumerate() {
             let column: Option<Vec<f64>> = values.iter().map(|v| v[i]).collect();
