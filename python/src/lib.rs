@@ -7,7 +7,8 @@
 //! arguments and results, releases the interpreter lock while the library computes, and turns
 //! the library's errors into `ValueError` (bad input, naming the argument) or `RuntimeError`.
 //! One file per topic: the body, the problem and `simulate` (with its step loop, stepper,
-//! dense output and solution), the exact solution, the steady motions, the audit.
+//! dense output and solution), the exact solution, the Hamiltonian flows of the first
+//! bracket, the steady motions, the audit.
 
 mod audit;
 mod body;
@@ -15,6 +16,7 @@ mod convert;
 mod dense;
 mod drive;
 mod exact;
+mod flows;
 mod problem;
 mod solution;
 mod steady;
@@ -33,6 +35,7 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_class::<solution::Solution>()?;
     module.add_class::<dense::DenseOutput>()?;
     module.add_class::<exact::PyExact>()?;
+    module.add_class::<flows::PyFlow>()?;
     module.add_function(wrap_pyfunction!(problem::simulate, module)?)?;
     module.add_function(wrap_pyfunction!(problem::default_case, module)?)?;
     module.add_function(wrap_pyfunction!(problem::load_case, module)?)?;

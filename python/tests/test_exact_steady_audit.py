@@ -3,11 +3,13 @@ the symmetry of the nutation, the field at a steady motion, simulations near the
 spin, and the JSON of the command-line tool."""
 
 import json
+import pickle
 import pathlib
 import subprocess
 
 import numpy as np
 import pytest
+from scipy.integrate import solve_ivp
 
 import routh
 
@@ -128,3 +130,33 @@ def test_audit_matches_the_command_line_tool():
             assert ours["residual"] == pytest.approx(theirs["residual"], rel=1e-12, abs=1e-300)
     assert {r["status"] for r in records} <= {"OK", "FAIL", "NOT-CHECKED"}
     assert any(r["status"] == "OK" for r in records)
+
+
+@pytest.mark.parametrize("flow, condition", [("X1", "cond"), ("X2", "cond2"), ("X1", "conformal")])
+def test_hamiltonian_flows_agree_with_scipy_on_their_field(flow, condition):
+    # The quadrature of a flow of the first bracket against SciPy's DOP853 on the same field
+    # P dH (automatic differentiation): a second, step-by-step method. Both ~1e-10 over t = 2.
+    body, x0, _, _, _ = routh.default_case()
+    f = routh.HamiltonianFlow(body, x0, flow, condition=condition, alpha=1.0)
+    t = np.linspace(0.0, 2.0, 21)
+    ref = solve_ivp(lambda _, x: f.field(x), (0.0, 2.0), x0, method="DOP853", t_eval=t,
+                    rtol=1e-12, atol=1e-12)
+    assert ref.success
+    assert np.max(np.abs(f(t) - ref.y)) < 1e-8
+    assert np.max(np.abs(f(t[5]) - ref.y[:, 5])) < 1e-8
+    # Negative control: the flow is not the motion of (mg-eq) (a different field).
+    assert np.max(np.abs(f(t) - routh.ExactSolution(body, x0)(t))) > 1e-3
+    copy = pickle.loads(pickle.dumps(f))
+    np.testing.assert_array_equal(copy(t), f(t))
+    lo, hi = f.theta_range
+    assert 0.0 <= lo <= hi <= np.pi
+    assert f.energy == pytest.approx(body.integrals(x0)["H1"], rel=1e-14)
+
+
+def test_hamiltonian_flow_bad_arguments():
+    body, x0, _, _, _ = routh.default_case()
+    for kwargs, pattern in [(dict(flow="X3"), "^flow: unknown flow"),
+                            (dict(flow="X1", condition="c"), "^condition: unknown condition"),
+                            (dict(flow="X1", alpha=0.0), "^alpha: 0 must be finite and nonzero")]:
+        with pytest.raises(ValueError, match=pattern):
+            routh.HamiltonianFlow(body, x0, **kwargs)
