@@ -1,24 +1,57 @@
 #!/usr/bin/env bash
-# CI for the Python bindings: a fresh virtual environment under target/, maturin, a release
-# build of the extension installed into it, then the pytest suite. Exits non-zero on any
-# failure, including pytest's exit code 5 ("no tests collected").
+# CI for the Python bindings: a fresh virtual environment under target/; the wheel built the way
+# `pip install ./python` builds it on a fresh machine (maturin as the PEP 517 backend, in an
+# isolated build environment) and installed from the file; the pytest suite; the example script
+# of python/examples run to its figure. Exits non-zero on any failure, including pytest's exit
+# code 5 ("no tests collected").
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 venv="$root/target/python-venv"
+wheels="$root/target/wheels"
 command -v python3 >/dev/null || { echo "python3 not found: CPython >= 3.9 is required" >&2; exit 1; }
 command -v cargo >/dev/null || { echo "cargo not found: the machine's Rust toolchain is required" >&2; exit 1; }
 python3 --version
 cargo --version
 rm -rf "$venv"
 python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --disable-pip-version-check maturin pytest numpy
-"$venv/bin/maturin" --version
-# maturin develop installs into the environment named by VIRTUAL_ENV.
-(cd "$root/python" && VIRTUAL_ENV="$venv" PATH="$venv/bin:$PATH" "$venv/bin/maturin" develop --release)
+pip() { "$venv/bin/pip" --disable-pip-version-check "$@"; }
+# Test and example dependencies: SciPy is the independent integrator of the tests, matplotlib
+# draws the example's figure, mypy checks the type stub.
+pip install --quiet pytest numpy scipy matplotlib mypy
+# The wheel: `pip wheel` runs the build backend declared in python/pyproject.toml (maturin,
+# fetched into an isolated environment), exactly as `pip install ./python` does.
+rm -rf "$wheels"
+pip wheel --no-deps --wheel-dir "$wheels" "$root/python"
+wheel=$(ls "$wheels"/routh-*.whl)
+echo "built $wheel"
+pip install --force-reinstall --no-deps "$wheel"
+# The stub and the marker of a typed package are in the wheel.
+"$venv/bin/python" - "$wheel" <<'PY'
+import sys, zipfile
+names = zipfile.ZipFile(sys.argv[1]).namelist()
+for wanted in ("routh/__init__.pyi", "routh/py.typed"):
+    if wanted not in names:
+        sys.exit(f"{wanted} missing from the wheel: {names}")
+print("wheel holds", ", ".join(n for n in names if n.startswith("routh/")))
+PY
+# The stub agrees with the module (mypy's stubtest: every name, signature and default), and
+# the example type-checks against it.
+(cd "$root/target" && "$venv/bin/python" -m mypy.stubtest routh --allowlist "$root/python/stubtest-allowlist.txt")
+"$venv/bin/python" -m mypy --ignore-missing-imports "$root/python/examples/nutation.py"
+# The audit test compares with the command-line tool's JSON.
+(cd "$root" && cargo build --release --bin routh)
 status=0
 (cd "$root" && "$venv/bin/python" -m pytest -p no:cacheprovider -q python/tests) || status=$?
 if [ "$status" -eq 5 ]; then
     echo "pytest collected no tests: failing" >&2
     exit 1
 fi
-exit "$status"
+if [ "$status" -ne 0 ]; then
+    exit "$status"
+fi
+# The example script, run as a script (its cells in order), writes its figure.
+figure="$root/target/python-example.png"
+rm -f "$figure"
+(cd "$root/python/examples" && ROUTH_EXAMPLE_FIGURE="$figure" "$venv/bin/python" nutation.py)
+test -s "$figure" || { echo "the example wrote no figure" >&2; exit 1; }
+echo "example figure: $figure"

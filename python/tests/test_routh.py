@@ -210,10 +210,13 @@ def test_projection_keeps_integrals_to_rounding():
         assert drift["max_rel_drift"] < 1e-13, (name, drift)
 
 
-def test_no_samples_means_no_arrays():
+def test_no_samples_means_the_step_ends():
+    # As SciPy's solve_ivp without t_eval: the start and every step end.
     body, x0, _, _, _ = routh.default_case()
     result = routh.simulate(body, x0, 1.0)
-    assert "t" not in result and "x" not in result
+    assert result.t.shape == (result.steps + 1,) and result.y.shape == (6, result.steps + 1)
+    assert result.t[0] == 0.0 and result.t[-1] == 1.0
+    assert np.all(np.diff(result.t) > 0)
 
 
 @pytest.mark.parametrize(
@@ -266,7 +269,8 @@ def test_non_unit_gamma_raises_value_error():
 @pytest.mark.parametrize(
     "kwargs, pattern",
     [
-        (dict(t_end=-1.0), "t_end"),
+        (dict(t_end=float("nan")), "t_span"),
+        (dict(t_end=(0.0, 1.0, 2.0)), "t_span"),
         (dict(rtol=0.0), "rtol"),
         (dict(atol=float("nan")), "atol"),
         (dict(samples=1), "samples"),
@@ -291,11 +295,15 @@ def test_wrong_length_raises_value_error():
         routh.simulate(body, x0[:5], 1.0)
 
 
-def test_integration_failure_raises_runtime_error():
-    # RK4 with 10 steps of h = 10 on a top spinning at omega3 = 8 overflows.
+def test_integration_failure_is_reported_as_in_scipy():
+    # RK4 with 10 steps of h = 10 on a top spinning at omega3 = 8 overflows: status -1 and the
+    # message, as SciPy's solve_ivp reports a failure (no exception).
     body, x0, _, _, _ = routh.default_case()
-    with pytest.raises(RuntimeError, match="non-finite"):
-        routh.simulate(body, x0, 100.0, method="rk4:10")
+    result = routh.simulate(body, x0, 100.0, method="rk4:10")
+    assert result.status == -1 and not result.success
+    assert "non-finite" in result.message
+    # Negative control: enough steps succeed.
+    assert routh.simulate(body, x0, 1.0, method="rk4:1000").status == 0
 
 
 def test_load_case_round_trip(tmp_path):

@@ -1,0 +1,239 @@
+"""Type stubs of the extension module `routh` (the nonholonomic Routh sphere).
+
+Conventions: a phase-space point is x = (gamma1, gamma2, gamma3, M1, M2, M3), gamma the unit
+normal of the plane pointing into it (downwards), M the angular momentum about the contact
+point, both in the body frame; several points are the columns of an array (6, k), as in
+SciPy. Units are those of the body's parameters (SI if they are SI); angles in radians.
+"""
+
+from os import PathLike
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, final
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = [
+    "__version__", "MAX_VALUES", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
+    "audit", "default_case", "load_case", "routh_threshold", "simulate", "steady_precessions",
+    "vertical_spin",
+]
+__version__: str
+MAX_VALUES: int
+
+_ArrayLike = npt.ArrayLike
+_FloatArray = npt.NDArray[np.float64]
+_EventFunction = Callable[[float, _FloatArray], float]
+_EventLike = Union["Event", str, _EventFunction]
+_Record = dict[str, Any]
+
+@final
+class Body:
+    """The rolling ball: mass m, radius R, offset a of the centre of mass (at -a e3 from the
+    geometric centre, |a| < R), principal moments I1, I2 (default I1), I3, gravity G >= 0."""
+
+    def __new__(
+        cls, m: float, R: float, a: float, I1: float, I3: float, G: float = 9.81,
+        I2: Optional[float] = None,
+    ) -> "Body": ...
+    @property
+    def m(self) -> float: ...
+    @property
+    def R(self) -> float: ...
+    @property
+    def a(self) -> float: ...
+    @property
+    def I1(self) -> float: ...
+    @property
+    def I2(self) -> float: ...
+    @property
+    def I3(self) -> float: ...
+    @property
+    def G(self) -> float: ...
+    @property
+    def is_symmetric(self) -> bool: ...
+    def field(self, x: _ArrayLike, unit_tolerance: Optional[float] = ...) -> _FloatArray:
+        """dx/dt of (mg-eq) at x, shape (6,) or (6, k)."""
+    def omega(self, x: _ArrayLike, unit_tolerance: Optional[float] = ...) -> _FloatArray:
+        """omega = I_Q^{-1} M (rad per unit time, body frame), shape (3,) or (3, k)."""
+    def integrals(
+        self, x: _ArrayLike, unit_tolerance: Optional[float] = ...
+    ) -> dict[str, Union[float, _FloatArray, None]]:
+        """{H1, H2, H3, H4, K} at x (None where the body has no such integral)."""
+    def state_from_omega(
+        self, gamma: _ArrayLike, omega: _ArrayLike, normalize: bool = False
+    ) -> _FloatArray:
+        """The point (gamma, I_Q omega), shape (6,)."""
+
+@final
+class Event:
+    """A named event ("theta_dot", "gamma3=<value>", "theta=<radians>") or a callable
+    g(t, y); terminal: False, True or a count; direction as in SciPy."""
+
+    def __new__(
+        cls, what: Union[str, _EventFunction], terminal: Union[bool, int, None] = None,
+        direction: float = 0.0,
+    ) -> "Event": ...
+    @property
+    def terminal(self) -> int: ...
+    @property
+    def direction(self) -> float: ...
+
+@final
+class DenseOutput:
+    """The state at any time of the span, as SciPy's OdeSolution."""
+
+    def __new__(
+        cls, body: Body, method: str, rtol: float, atol: float, level: Optional[Sequence[float]],
+        knots_t: Sequence[float], knots_y: Sequence[float], t_last: float,
+    ) -> "DenseOutput":
+        """Rebuild from pickled fields (used by pickle)."""
+
+    @property
+    def t_min(self) -> float: ...
+    @property
+    def t_max(self) -> float: ...
+    @property
+    def ts(self) -> _FloatArray: ...
+    @property
+    def ys(self) -> _FloatArray: ...
+    def __call__(self, t: _ArrayLike) -> _FloatArray: ...
+
+@final
+class Solution:
+    """The result of simulate, with the attributes of SciPy's solve_ivp result."""
+
+    t: _FloatArray
+    y: _FloatArray
+    sol: Optional[DenseOutput]
+    t_events: list[_FloatArray]
+    y_events: list[_FloatArray]
+    nfev: int
+    njev: int
+    nlu: int
+    status: Literal[-1, 0, 1]
+    message: str
+    success: bool
+    steps: int
+    rejected: int
+    method: str
+    projected: bool
+    elapsed_s: float
+    integrals: dict[str, dict[str, float]]
+    t_span: Tuple[float, float]
+    y0: _FloatArray
+    y_final: _FloatArray
+    space: Optional[dict[str, _FloatArray]]
+    def __new__(
+        cls, t: Any, y: Any, sol: Any, t_events: Any, y_events: Any, nfev: int, status: int,
+        message: str, steps: int, rejected: int, method: str, projected: bool,
+        elapsed_s: float, integrals: Any, t_span: Tuple[float, float], y0: Any,
+        y_final: Any, space: Any,
+    ) -> "Solution":
+        """Rebuild from pickled fields (used by pickle)."""
+    def __getitem__(self, key: str, /) -> Any: ...
+
+@final
+class Problem:
+    """An initial-value problem: body, x0, t_span and the integration settings."""
+
+    def __new__(
+        cls, body: Body, x0: _ArrayLike, t_span: Union[float, Sequence[float]],
+        rtol: float = 1e-12, atol: float = 1e-12, method: str = "dop853",
+        project: bool = False, full: bool = False,
+    ) -> "Problem": ...
+    @staticmethod
+    def from_case(
+        path: Union[str, PathLike[str], None] = None, full: bool = False
+    ) -> "Problem": ...
+    @property
+    def body(self) -> Body: ...
+    @property
+    def x0(self) -> _FloatArray: ...
+    @property
+    def t_span(self) -> Tuple[float, float]: ...
+    @property
+    def rtol(self) -> float: ...
+    @property
+    def atol(self) -> float: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def project(self) -> bool: ...
+    @property
+    def full(self) -> bool: ...
+    def solve(
+        self, t_eval: Optional[_ArrayLike] = None, samples: int = 0,
+        events: Union[_EventLike, Sequence[_EventLike], None] = None,
+        dense_output: bool = False,
+    ) -> Solution: ...
+
+def simulate(
+    body: Body, x0: _ArrayLike, t_span: Union[float, Sequence[float], None] = None,
+    rtol: float = 1e-12, atol: float = 1e-12, method: str = "dop853",
+    project: bool = False, samples: int = 0, *, t_eval: Optional[_ArrayLike] = None,
+    events: Union[_EventLike, Sequence[_EventLike], None] = None,
+    dense_output: bool = False, full: bool = False,
+    t_end: Union[float, Sequence[float], None] = None,
+) -> Solution:
+    """Integrate (mg-eq) from x0 over t_span (see the module README)."""
+
+@final
+class ExactSolution:
+    """The exact solution through x0 by quadrature (Routh sphere, I1 = I2)."""
+
+    def __new__(cls, body: Body, x0: _ArrayLike) -> "ExactSolution": ...
+    def __call__(self, t: _ArrayLike) -> _FloatArray: ...
+    @property
+    def body(self) -> Body: ...
+    @property
+    def x0(self) -> _FloatArray: ...
+    @property
+    def motion(self) -> Literal["steady", "nutation"]: ...
+    @property
+    def turning_points(self) -> Tuple[float, float]: ...
+    @property
+    def theta_range(self) -> Tuple[float, float]: ...
+    @property
+    def period(self) -> Optional[float]: ...
+    @property
+    def precession_advance(self) -> Optional[float]: ...
+    @property
+    def precession_rate(self) -> float: ...
+    @property
+    def passes_through_axis(self) -> bool: ...
+    @property
+    def nodes(self) -> Optional[int]: ...
+    @property
+    def integrals(self) -> dict[str, float]: ...
+
+@final
+class HamiltonianFlow:
+    """The flow of X1, X2 or Xhat2 of the first bracket (p-br) by quadrature (I1 = I2)."""
+
+    def __new__(
+        cls, body: Body, x0: _ArrayLike, flow: Literal["X1", "X2", "Xhat2"],
+        condition: Literal["cond", "cond2", "conformal"] = "cond", alpha: float = 1.0,
+    ) -> "HamiltonianFlow": ...
+    def __call__(self, t: _ArrayLike) -> _FloatArray: ...
+    def field(self, x: _ArrayLike) -> _FloatArray: ...
+    @property
+    def theta_range(self) -> Tuple[float, float]: ...
+    @property
+    def period(self) -> Optional[float]: ...
+    @property
+    def precession_advance(self) -> Optional[float]: ...
+    @property
+    def precession_rate(self) -> Optional[float]: ...
+    @property
+    def b(self) -> float: ...
+    @property
+    def energy(self) -> float: ...
+
+def vertical_spin(body: Body, pole: float, spin: float) -> _Record: ...
+def steady_precessions(body: Body, theta: float, spin: float) -> list[_Record]: ...
+def routh_threshold(body: Body, pole: float) -> float: ...
+def audit(points: int = 20, seed: int = 1) -> list[_Record]: ...
+def default_case() -> Tuple[Body, _FloatArray, float, float, float]: ...
+def load_case(
+    path: Union[str, PathLike[str]]
+) -> Tuple[Body, _FloatArray, float, float, float]: ...
