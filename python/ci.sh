@@ -11,7 +11,7 @@ python3 --version
 cargo --version
 rm -rf "$venv"
 python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --disable-pip-version-check maturin pytest numpy
+"$venv/bin/pip" install --quiet --disable-pip-version-check maturin pytest numpy pyarrow pandas "dask[distributed]"
 "$venv/bin/maturin" --version
 # maturin develop installs into the environment named by VIRTUAL_ENV.
 (cd "$root/python" && VIRTUAL_ENV="$venv" PATH="$venv/bin:$PATH" "$venv/bin/maturin" develop --release)

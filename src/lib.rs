@@ -23,6 +23,7 @@ pub mod scalar;
 pub mod simulate;
 pub mod state;
 pub mod steady;
+pub mod sweep;
 pub mod table;
 
 pub use body::Body;

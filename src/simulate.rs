@@ -152,6 +152,33 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     settings: &Settings,
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
 ) -> Result<Summary> {
+    run_observed(body, sys, y0, settings, on_sample, &mut |_| {})
+}
+
+/// One accepted step of [`run_observed`]: from `t0` to `t1`, the state `y1` at `t1` (after
+/// projection, if any) and the step's dense output on `[t0, t1]`.
+pub struct StepView<'a, const N: usize> {
+    /// Start of the step.
+    pub t0: f64,
+    /// End of the step.
+    pub t1: f64,
+    /// The state at `t1`.
+    pub y1: &'a [f64; N],
+    /// The state at any time of `[t0, t1]`: DOP853's 7th-order dense output, or one RK4
+    /// step from `t0` for the fixed-step method.
+    pub dense: &'a dyn Fn(f64) -> [f64; N],
+}
+
+/// [`run`], with `on_step` called after every accepted step (for event detection along the
+/// trajectory). The numbers are those of [`run`]: observing a step changes nothing.
+pub fn run_observed<S: OdeSystem<N>, const N: usize>(
+    body: &Body,
+    sys: &S,
+    y0: [f64; N],
+    settings: &Settings,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+    on_step: &mut dyn FnMut(&StepView<N>),
+) -> Result<Summary> {
     validate(settings)?;
     let start = Instant::now();
     let x0 = reduced(&y0);
@@ -203,6 +230,12 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
                     }
                     drift.observe(body, &reduced(solver.y()));
                     let t = solver.t();
+                    on_step(&StepView {
+                        t0: solver.t_prev(),
+                        t1: t,
+                        y1: solver.y(),
+                        dense: &|s| solver.dense(s),
+                    });
                     while next < times.len() && times[next] <= t {
                         let y = if times[next] == t {
                             *solver.y()
@@ -234,6 +267,12 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
                 stats.steps += s.steps;
                 stats.rhs_evals += s.rhs_evals;
                 drift.observe(body, &reduced(&y1));
+                on_step(&StepView {
+                    t0,
+                    t1,
+                    y1: &y1,
+                    dense: &|s| rk4(sys, t0, y, s, 1, |_, _| {}).0,
+                });
                 while next < times.len() && times[next] <= t1 {
                     let ys = if times[next] == t1 {
                         y1

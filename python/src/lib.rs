@@ -19,6 +19,7 @@ use routh_core::simulate::{run, Drift, ReducedSystem, Settings, Summary};
 use routh_core::state::{Normalise, State};
 use routh_core::RouthError;
 use std::path::PathBuf;
+mod sweep;
 
 /// The Python exception for a library error: the integration or a figure failing at run time
 /// is a `RuntimeError`, a file that cannot be accessed an `OSError`, everything else (parameters,
@@ -343,5 +344,6 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(simulate, module)?)?;
     module.add_function(wrap_pyfunction!(default_case, module)?)?;
     module.add_function(wrap_pyfunction!(load_case, module)?)?;
+    module.add_function(wrap_pyfunction!(sweep::sweep, module)?)?;
     Ok(())
 }
