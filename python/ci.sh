@@ -17,7 +17,7 @@ python3 -m venv "$venv"
 pip() { "$venv/bin/pip" --disable-pip-version-check "$@"; }
 # Test and example dependencies: SciPy is the independent integrator of the tests, matplotlib
 # draws the example's figure, mypy checks the type stub.
-pip install --quiet pytest numpy scipy matplotlib mypy
+pip install --quiet pytest numpy scipy matplotlib mypy pyarrow pandas "dask[distributed]"
 # The wheel: `pip wheel` runs the build backend declared in python/pyproject.toml (maturin,
 # fetched into an isolated environment), exactly as `pip install ./python` does.
 rm -rf "$wheels"

@@ -138,7 +138,19 @@ impl Case {
 
     /// Parse and validate case text; `source` names the file in error messages.
     pub fn parse(text: &str, source: &str) -> Result<Self> {
-        Self::parse_unlabelled(text, source).map_err(|e| match e {
+        let document: toml::Table =
+            text.parse()
+                .map_err(|e: toml::de::Error| RouthError::Case {
+                    file: source.to_string(),
+                    message: format!("malformed TOML: {e}"),
+                })?;
+        Self::from_document(document, source)
+    }
+
+    /// Validate a parsed case document (as [`Case::parse`] does with text); `source` names
+    /// the file in error messages.
+    pub fn from_document(document: toml::Table, source: &str) -> Result<Self> {
+        Self::from_document_unlabelled(document, source).map_err(|e| match e {
             RouthError::Case { .. } => e,
             other => RouthError::Case {
                 file: source.to_string(),
@@ -147,14 +159,11 @@ impl Case {
         })
     }
 
-    fn parse_unlabelled(text: &str, source: &str) -> Result<Self> {
+    fn from_document_unlabelled(document: toml::Table, source: &str) -> Result<Self> {
         let err = |message: String| RouthError::Case {
             file: source.to_string(),
             message,
         };
-        let document: toml::Table = text
-            .parse()
-            .map_err(|e: toml::de::Error| err(format!("malformed TOML: {e}")))?;
         let body: BodyTable = table(&document, "body").map_err(&err)?;
         let initial: InitialTable = table(&document, "initial").map_err(&err)?;
         let integration: Integration = table(&document, "integration").map_err(&err)?;

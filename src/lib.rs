@@ -54,6 +54,8 @@ pub mod scalar;
 pub mod simulate;
 pub mod state;
 pub mod steady;
+#[cfg(feature = "sweep")]
+pub mod sweep;
 #[cfg(feature = "io")]
 pub mod table;
 

@@ -21,6 +21,7 @@ mod problem;
 mod solution;
 mod steady;
 mod stepper;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -43,5 +44,6 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(steady::steady_precessions, module)?)?;
     module.add_function(wrap_pyfunction!(steady::routh_threshold, module)?)?;
     module.add_function(wrap_pyfunction!(audit::audit, module)?)?;
+    module.add_function(wrap_pyfunction!(sweep::sweep, module)?)?;
     Ok(())
 }

@@ -8,6 +8,7 @@ mod flow;
 mod plot;
 mod simulate;
 mod steady;
+mod sweep;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -35,6 +36,9 @@ enum Command {
     Exact(exact::Args),
     /// The stationary motions of the case's body and their stability (Routh's threshold).
     Steady(steady::Args),
+    /// Many runs of a case over the quantities of its [sweep] table (grid or random design),
+    /// one row per run, written to CSV or Parquet.
+    Sweep(sweep::Args),
 }
 
 /// Print `value` as pretty JSON on stdout.
@@ -55,6 +59,7 @@ pub fn main() -> ExitCode {
         Command::Audit(args) => audit::run(args),
         Command::Exact(args) => exact::run(args),
         Command::Steady(args) => steady::run(args),
+        Command::Sweep(args) => sweep::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

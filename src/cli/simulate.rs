@@ -50,7 +50,7 @@ pub struct Args {
     pub json: bool,
 }
 
-fn parse_method(s: &str) -> std::result::Result<Method, String> {
+pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
     s.parse()
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }

@@ -1,0 +1,113 @@
+//! `routh.sweep`: the runs of a case's `[sweep]` table (all, or the slice `start:stop`, so
+//! that a sweep can be split into chunks for Dask or another engine), as a pyarrow Table
+//! with the columns of `routh sweep`, computed with the GIL released.
+
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use routh_core::integrate::Method;
+use routh_core::sweep::record::{columns, Cell, Kind};
+use routh_core::sweep::{Overrides, Sweep};
+use std::path::PathBuf;
+
+/// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853",
+/// threads=None, start=0, stop=None)`: run the runs `start <= run < stop` of the sweep in the
+/// case file `path` (or the case text `text`), in parallel on `threads` threads (default: one
+/// per core), and return a `pyarrow.Table`, one row per run in the order of `run` (call
+/// `.to_pandas()` for a DataFrame). The schema's metadata holds the case text
+/// (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
+/// `routh simulate` on its case, whatever the thread count or the slicing.
+#[pyfunction]
+#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853", threads=None, start=0, stop=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep<'py>(
+    py: Python<'py>,
+    path: Option<PathBuf>,
+    text: Option<String>,
+    t_end: Option<f64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    method: &str,
+    threads: Option<usize>,
+    start: u64,
+    stop: Option<u64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (text, source) = match (path, text) {
+        (Some(p), None) => (
+            std::fs::read_to_string(&p).map_err(|e| {
+                pyo3::exceptions::PyOSError::new_err(format!("{}: {e}", p.display()))
+            })?,
+            p.display().to_string(),
+        ),
+        (None, Some(t)) => (t, "<text>".to_string()),
+        _ => {
+            return Err(PyValueError::new_err(
+                "give exactly one of `path` (a case file) and `text` (its contents)",
+            ))
+        }
+    };
+    let method: Method = method
+        .parse()
+        .map_err(|e: routh_core::integrate::ParseMethodError| {
+            PyValueError::new_err(e.to_string())
+        })?;
+    let overrides = Overrides {
+        method,
+        t_end,
+        rtol,
+        atol,
+    };
+    if threads == Some(0) {
+        return Err(PyValueError::new_err("threads must be >= 1"));
+    }
+    let (names, rows, settings, case_text) = py
+        .detach(|| -> Result<_, String> {
+            let sweep = Sweep::new(&text, &source, overrides).map_err(|e| e.to_string())?;
+            let stop = stop.unwrap_or(sweep.runs());
+            let rows = sweep
+                .rows(start, stop, threads.unwrap_or(0))
+                .map_err(|e| e.to_string())?;
+            Ok((
+                columns(&sweep.names()),
+                rows,
+                sweep.run_settings(),
+                sweep.case_text.clone(),
+            ))
+        })
+        .map_err(PyValueError::new_err)?;
+    let pa = py.import("pyarrow").map_err(|e| {
+        PyRuntimeError::new_err(format!(
+            "routh.sweep needs pyarrow (pip install pyarrow): {e}"
+        ))
+    })?;
+    let cells: Vec<Vec<Cell>> = rows.iter().map(|r| r.cells(&settings)).collect();
+    let arrays = PyList::empty(py);
+    let mut labels = Vec::with_capacity(names.len());
+    for (i, (name, kind)) in names.into_iter().enumerate() {
+        let values = PyList::empty(py);
+        for row in &cells {
+            match &row[i] {
+                Cell::Int(v) => values.append(*v)?,
+                Cell::Float(v) => values.append(*v)?,
+                Cell::Text(s) => values.append(s)?,
+            }
+        }
+        let arrow_type = match kind {
+            Kind::Int => pa.call_method0("uint64")?,
+            Kind::Float => pa.call_method0("float64")?,
+            Kind::Text => pa.call_method0("string")?,
+        };
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("type", arrow_type)?;
+        arrays.append(pa.call_method("array", (values,), Some(&kwargs))?)?;
+        labels.push(name);
+    }
+    let metadata = PyDict::new(py);
+    metadata.set_item("routh.case", case_text)?;
+    metadata.set_item("routh.version", env!("CARGO_PKG_VERSION"))?;
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("names", labels)?;
+    kwargs.set_item("metadata", metadata)?;
+    pa.getattr("Table")?
+        .call_method("from_arrays", (arrays,), Some(&kwargs))
+}

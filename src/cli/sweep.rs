@@ -1,0 +1,211 @@
+//! `routh sweep`: many runs of a case over the quantities of its `[sweep]` table, one row per
+//! run, written as the runs finish; Ctrl-C or SIGTERM stop it cleanly and `--resume` goes on.
+
+use routh::integrate::Method;
+use routh::sweep::record::{columns, Row};
+use routh::sweep::table::{open, TableWriter};
+use routh::sweep::{Completion, Overrides, Sweep};
+use routh::{Result, RouthError};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// The exit code of a sweep stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's
+/// convention), after its table is written.
+const STOPPED_EXIT_CODE: i32 = 130;
+
+/// Runs per chunk (each chunk is run in parallel and written as one row group): about a
+/// hundredth of the sweep, at least 64 and at most 4096 runs.
+fn chunk(runs: u64) -> usize {
+    (runs / 100).clamp(64, 4096) as usize
+}
+
+/// Options of `routh sweep`; the tolerances and t_end override the case file for every run.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Case file (TOML) with a [sweep] table.
+    #[arg(long)]
+    pub case: PathBuf,
+    /// Final time.
+    #[arg(long, allow_hyphen_values = true)]
+    pub t_end: Option<f64>,
+    /// Relative tolerance of DOP853.
+    #[arg(long, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance of DOP853.
+    #[arg(long, allow_hyphen_values = true)]
+    pub atol: Option<f64>,
+    /// Integrator: `dop853` or `rk4` / `rk4:<steps>`.
+    #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
+    pub method: Method,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// The table: FILE.parquet (build with `--features parquet`) or FILE.csv; without it the
+    /// rows go to stdout as CSV (or in the JSON).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Continue a stopped sweep: keep the rows of `--out` and run only the missing runs.
+    #[arg(long)]
+    pub resume: bool,
+    /// Print the summary and every row as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Writes the rows to stdout as CSV.
+struct Stdout {
+    settings: routh::sweep::record::RunSettings,
+}
+
+impl TableWriter for Stdout {
+    fn write(&mut self, rows: &[Row]) -> Result<()> {
+        for row in rows {
+            println!("{}", row.csv_line(&self.settings));
+        }
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>) -> Result<()> {
+        Ok(())
+    }
+}
+
+/// Run `routh sweep`.
+pub fn run(args: Args) -> Result<()> {
+    let text = std::fs::read_to_string(&args.case).map_err(|e| RouthError::Case {
+        file: args.case.display().to_string(),
+        message: format!("cannot read: {e}"),
+    })?;
+    let source = args.case.display().to_string();
+    if let Some(n) = args.threads {
+        routh::case::check_option("threads", n as f64, n >= 1, "must be >= 1")?;
+    }
+    if args.resume && args.out.is_none() {
+        return Err(RouthError::Option {
+            name: "resume",
+            value: "true".into(),
+            rule: "needs --out FILE (the table to continue)",
+        });
+    }
+    let overrides = Overrides {
+        method: args.method,
+        t_end: args.t_end,
+        rtol: args.rtol,
+        atol: args.atol,
+    };
+    let sweep = Sweep::new(&text, &source, overrides)?;
+    let (mut writer, done): (Box<dyn TableWriter>, _) = match &args.out {
+        Some(path) => open(path, &sweep, args.resume)?,
+        None => {
+            if !args.json {
+                let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
+                println!("{}", names.join(","));
+            }
+            (
+                Box::new(Stdout {
+                    settings: sweep.run_settings(),
+                }),
+                Default::default(),
+            )
+        }
+    };
+    let todo: Vec<u64> = (0..sweep.runs()).filter(|k| !done.contains(k)).collect();
+    let stop = Arc::new(AtomicBool::new(false));
+    let flag = stop.clone();
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .map_err(|e| RouthError::Io {
+            path: "<signal handler>".into(),
+            source: std::io::Error::other(e),
+        })?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0))
+        .build()
+        .map_err(|e| RouthError::Option {
+            name: "threads",
+            value: format!("{:?} ({e})", args.threads),
+            rule: "the thread pool must start",
+        })?;
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new(sweep.runs());
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} runs, {per_sec}, ETA {eta}",
+            )
+            .expect("a valid template"),
+        );
+        bar.set_position(done.len() as u64);
+        bar
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let start = Instant::now();
+    let mut json_rows = Vec::new();
+    let (mut ran, mut failed) = (0u64, 0u64);
+    let settings_row = sweep.run_settings();
+    let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
+    let completion = pool.install(|| {
+        sweep.execute(&todo, chunk(sweep.runs()), &stop, &mut |rows| {
+            if args.out.is_some() || !args.json {
+                writer.write(rows)?;
+            }
+            ran += rows.len() as u64;
+            failed += rows
+                .iter()
+                .filter(|r| r.status == routh::sweep::record::Status::Failed)
+                .count() as u64;
+            if args.json {
+                json_rows.extend(rows.iter().map(|r| {
+                    let cells = r.cells(&settings_row);
+                    names
+                        .iter()
+                        .cloned()
+                        .zip(cells.iter().map(|c| c.to_json()))
+                        .collect::<serde_json::Map<_, _>>()
+                }));
+            }
+            bar.inc(rows.len() as u64);
+            Ok(())
+        })
+    })?;
+    bar.finish_and_clear();
+    writer.finish()?;
+    let elapsed = start.elapsed().as_secs_f64();
+    let stopped = completion == Completion::Stopped;
+    if args.json {
+        super::print_json(&serde_json::json!({
+            "case": source,
+            "runs": sweep.runs(),
+            "resumed": done.len(),
+            "ran": ran,
+            "failed": failed,
+            "stopped": stopped,
+            "elapsed_s": elapsed,
+            "out": args.out,
+            "rows": json_rows,
+        }));
+    } else if args.out.is_some() {
+        println!("routh sweep: {source}");
+        println!(
+            "  {ran} runs in {elapsed:.3} s ({:.1} runs/s), {failed} failed, {} resumed, of {}",
+            ran as f64 / elapsed.max(1e-9),
+            done.len(),
+            sweep.runs()
+        );
+        if let Some(path) = &args.out {
+            println!("  table written to {}", path.display());
+        }
+    }
+    if stopped {
+        eprintln!(
+            "routh sweep: stopped after {} of {} runs; the finished rows are in the table: run \
+             again with --resume to complete it",
+            done.len() as u64 + ran,
+            sweep.runs()
+        );
+        std::process::exit(STOPPED_EXIT_CODE);
+    }
+    Ok(())
+}
