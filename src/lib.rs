@@ -17,6 +17,7 @@ pub mod motion;
 pub mod output;
 pub mod plot;
 pub mod projection;
+pub mod range;
 pub mod quadrature;
 pub mod sampling;
 pub mod scalar;

@@ -23,9 +23,16 @@ pub struct Settings {
     pub atol: f64,
     /// Project onto the level set of the integrals after each step.
     pub project: bool,
-    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends).
+    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),
+    /// at most [`MAX_SAMPLES`].
     pub samples: usize,
+    /// Most steps DOP853 may attempt (accepted and rejected), and most steps of RK4.
+    pub max_steps: usize,
 }
+
+/// The largest number of samples of one run (their times take 8 bytes each in memory, the
+/// CSV about 300 bytes each on disk: 3 GB).
+pub const MAX_SAMPLES: usize = 10_000_000;
 
 /// The drift of one integral along the trajectory.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -131,6 +138,22 @@ pub fn validate(settings: &Settings) -> Result<()> {
     if !(settings.atol.is_finite() && settings.atol > 0.0) {
         return bad("atol", settings.atol, "must be finite and > 0");
     }
+    if settings.samples > MAX_SAMPLES {
+        return Err(RouthError::Option {
+            name: "samples",
+            value: settings.samples.to_string(),
+            rule: "must be at most 10000000 (MAX_SAMPLES)",
+        });
+    }
+    if let Method::Rk4 { steps } = settings.method {
+        if steps > settings.max_steps {
+            return Err(RouthError::Option {
+                name: "method rk4:<steps>",
+                value: steps.to_string(),
+                rule: "must not exceed max_steps (--max-steps, default 10000000)",
+            });
+        }
+    }
     if settings.samples == 1 {
         return bad(
             "samples",
@@ -187,6 +210,7 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
             let opts = Options {
                 rtol: settings.rtol,
                 atol: settings.atol,
+                max_steps: settings.max_steps,
                 ..Options::default()
             };
             let mut solver =
@@ -269,7 +293,12 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
 }
 
 fn integrate_error(e: crate::integrate::IntegrateError) -> RouthError {
-    RouthError::Integrate(e.to_string())
+    match e {
+        crate::integrate::IntegrateError::TooManySteps { .. } => RouthError::Integrate(format!(
+            "{e} (raise the limit with --max-steps or max_steps in [integration])"
+        )),
+        _ => RouthError::Integrate(e.to_string()),
+    }
 }
 
 /// The reduced field (mg-eq) of a body as an [`OdeSystem`].

@@ -234,6 +234,7 @@ fn simulate<'py>(
         atol,
         project,
         samples,
+        max_steps: routh::case::DEFAULT_MAX_STEPS,
     };
     let body = body.inner;
     let (summary, times, states) = py

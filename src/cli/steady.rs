@@ -58,10 +58,10 @@ fn print_text(r: &Report) {
             "  gamma3 = {:+}: centre of mass {}, threshold |omega3| = {}; {} by Q'' = {:.6e}, \
              {} by the Jacobian (max Re lambda = {:.3e})",
             v.gamma3,
-            if v.centre_of_mass_above {
-                "above"
-            } else {
-                "below"
+            match (r.body.a == 0.0, v.centre_of_mass_above) {
+                (true, _) => "at the geometric centre (a = 0)",
+                (false, true) => "above",
+                (false, false) => "below",
             },
             v.threshold_spin,
             stable(v.stability.stable_by_q),
