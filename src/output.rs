@@ -72,10 +72,20 @@ pub fn write_bytes_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
 }
 
 /// Install a handler that removes the temporary files in progress on SIGINT, SIGTERM and
-/// SIGHUP, then ends the process as the signal would have (exit status 128 + signal).
-/// Meant for the command-line tool; a library user keeps its own signal handling.
+/// SIGHUP, then ends the process as the signal would have (exit status 128 + signal). SIGXFSZ
+/// (a file size limit, `ulimit -f`) is caught too, so that the write fails with an error and
+/// the temporary file is removed like on a full disk. Meant for the command-line tool; a
+/// library user keeps its own signal handling.
 pub fn remove_temporaries_on_signal() -> Result<()> {
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
+    signal_hook::flag::register(
+        SIGXFSZ,
+        std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)),
+    )
+    .map_err(|source| RouthError::Io {
+        path: PathBuf::from("<signal handler>"),
+        source,
+    })?;
     let mut signals =
         signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]).map_err(|source| {
             RouthError::Io {
