@@ -205,12 +205,36 @@ fn animate_writes_a_self_contained_page() {
         dir.to_str().unwrap(),
         "--t-end",
         "2",
+        "--samples",
+        "3001",
         "--json",
     ]);
     let files = written(&ok(&out), &dir, &["animation"], "html");
     let page = std::fs::read_to_string(&files[0]).unwrap();
-    assert!(page.len() > 10_000, "{} bytes", page.len());
-    for needle in ["<canvas", "\"q\":[[", "requestAnimationFrame"] {
+    // three.js (~570 kB) and 3001 samples of 16 columns as base64 float32 (~5.3 bytes each):
+    // every sample is embedded (the page used to keep at most 1500).
+    assert!(page.contains("(3001 samples"), "all samples embedded");
+    let t_column = page
+        .split("\"t\":\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("the t column is embedded");
+    assert_eq!(
+        t_column.len(),
+        (4 * 3001usize).div_ceil(3) * 4,
+        "3001 float32"
+    );
+    assert!(
+        (570_000..1_000_000).contains(&page.len()),
+        "{} bytes",
+        page.len()
+    );
+    for needle in [
+        "<canvas",
+        "WebGLRenderer",
+        "\"columns\":{",
+        "requestAnimationFrame",
+    ] {
         assert!(page.contains(needle), "page lacks {needle}");
     }
     // The radius recovered from the samples is the default case's R = 1.
@@ -220,10 +244,11 @@ fn animate_writes_a_self_contained_page() {
         .expect("the radius is embedded");
     let radius: f64 = after.split(',').next().unwrap().parse().unwrap();
     assert!((radius - 1.0).abs() < 1e-9, "R = {radius}");
-    assert!(
-        !page.contains("__DATA__") && !page.contains("http"),
-        "self-contained"
-    );
+    // Self-contained: no external script, style sheet or image (the browser test in
+    // tests/browser checks that the page makes no request at all).
+    for needle in ["__DATA__", "__SOURCE__", "<script src", "<link", "<img"] {
+        assert!(!page.contains(needle), "page contains {needle}");
+    }
 }
 
 #[test]

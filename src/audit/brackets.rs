@@ -1,11 +1,11 @@
 //! The claims of sections 2.1 to 4 about the Poisson brackets: (p-br), (p-bv), (cond),
 //! (cond2), (g-eq1), (g-eq2), (p-map), (int-sph), (int-sph2), P_f, (p-bv2), (g-eq3), P'',
-//! (eq-cf). See [`super::claims`] for the points, the residuals and the threshold.
+//! (eq-cf). See [`super::claim`] for the points, the residuals and the threshold.
 
 use super::checks::{self, Function};
-use super::claims::{
+use super::claim::{
     body, field_of, free_body, generic_first, generic_firsts, h4, of, Claim, Outcome, Sample,
-    CONSTANT_ALPHA, GENERIC_BETA,
+    CONSTANT_ALPHA, GENERIC_ALPHA, GENERIC_BETA,
 };
 use crate::body::Body;
 use crate::differential::{jacobian, Dual6};
@@ -246,7 +246,7 @@ pub fn claims() -> Vec<Claim> {
                 let b = body();
                 let pts = s.points(&b);
                 let at_alpha0 = checks::casimirs(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), &[&gamma3], &pts);
-                let at_beta0 = checks::casimirs(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&ratio], &pts);
+                let at_beta0 = checks::casimirs(&FirstBracket::new(b, GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&ratio], &pts);
                 Outcome::checked(at_alpha0.max(at_beta0), format!("max |P dC|/(|P||dC|): alpha = 0, C = gamma3: {at_alpha0:.1e}; beta = 0, C = gamma1/gamma2: {at_beta0:.1e}"))
             },
         },
@@ -258,9 +258,9 @@ pub fn claims() -> Vec<Claim> {
                 let b = body();
                 let pts = s.points(&b);
                 let at_alpha0 = checks::casimirs(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), &[&ratio, &h4, &of(b, jellett)], &pts);
-                let at_beta0 = checks::casimirs(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&gamma3, &h4, &of(b, jellett)], &pts);
+                let at_beta0 = checks::casimirs(&FirstBracket::new(b, GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), &[&gamma3, &h4, &of(b, jellett)], &pts);
                 let ranks = checks::rank(&FirstBracket::new(b, Alpha::constant(0.0), GENERIC_BETA), 2, &pts)
-                    .max(checks::rank(&FirstBracket::new(b, super::claims::GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), 2, &pts));
+                    .max(checks::rank(&FirstBracket::new(b, GENERIC_ALPHA, Beta::Gamma3([0.0; 3])), 2, &pts));
                 Outcome::checked(at_alpha0.max(at_beta0).max(ranks), format!("max |P dC|/(|P||dC|) with C = H4, H3 and the extra Casimir: alpha = 0, C = gamma1/gamma2: {at_alpha0:.1e}; beta = 0, C = gamma3: {at_beta0:.1e}; rank 2 in both cases (s3/s1 <= {ranks:.1e})"))
             },
         },

@@ -1,7 +1,7 @@
 //! Rendering of the audit: a plain-text table and a markdown report that follows the paper
 //! equation by equation.
 
-use super::claims::{body, Sample, Status, Verdict, THRESHOLD};
+use super::claim::{body, Sample, Status, Verdict, THRESHOLD};
 use std::fmt::Write;
 
 /// The residual as printed: scientific notation, or `-` when not checked.

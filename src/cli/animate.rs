@@ -1,5 +1,6 @@
-//! `routh animate`: a self-contained HTML page animating the rolling ball, from a simulation
-//! of a case or from a CSV file of `routh simulate --full`.
+//! `routh animate`: the 3D viewer of the rolling ball, one self-contained HTML page (WebGL,
+//! no network at view time), from a simulation of a case or from a CSV file of
+//! `routh simulate --full`.
 
 use super::plot::{create_dir, report, Source, Written};
 use routh::animate::html;

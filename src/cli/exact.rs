@@ -31,6 +31,26 @@ pub struct Args {
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Instead of the motion, the flow of a Hamiltonian field of the first bracket (p-br):
+    /// X1 = P dH1, X2 = P dH2 or Xhat2 = P dK (section 3.2; docs/flows.md).
+    #[arg(long, value_name = "X1|X2|Xhat2")]
+    pub flow: Option<routh::poisson::flows::Field>,
+    /// With --flow: the beta of the bracket, (cond), (cond2) or the conformal P_f (cham-vp).
+    #[arg(
+        long,
+        value_name = "cond|cond2|conformal",
+        default_value = "cond",
+        requires = "flow"
+    )]
+    pub condition: routh::poisson::flows::Condition,
+    /// With --flow: the constant alpha of the bracket.
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        requires = "flow",
+        allow_negative_numbers = true
+    )]
+    pub alpha: f64,
 }
 
 /// The summary printed by `routh exact`.
@@ -61,9 +81,10 @@ struct Summary {
 }
 
 /// The CSV header of `routh exact` samples.
-const CSV_HEADER: &str = "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,theta,H1,H3,K";
+pub(super) const CSV_HEADER: &str =
+    "t,gamma1,gamma2,gamma3,M1,M2,M3,omega1,omega2,omega3,theta,H1,H3,K";
 
-fn csv_row(case: &Case, t: f64, state: &State) -> String {
+pub(super) fn csv_row(case: &Case, t: f64, state: &State) -> String {
     let x = state.to_array();
     let body = &case.body;
     let omega = state.omega(body);
@@ -139,6 +160,9 @@ fn print_text(s: &Summary) {
 
 /// Run `routh exact`.
 pub fn run(args: Args) -> Result<()> {
+    if let Some(field) = args.flow {
+        return super::flow::run(&args, field);
+    }
     let case = Case::load(args.case.as_deref())?;
     let t = args.time.unwrap_or(case.integration.t_end);
     check_option("t", t, t.is_finite(), "must be finite")?;

@@ -4,6 +4,7 @@
 mod animate;
 mod audit;
 mod exact;
+mod flow;
 mod plot;
 mod simulate;
 mod steady;
@@ -26,7 +27,7 @@ enum Command {
     /// Draw the figures of a trajectory (PNG or SVG): theta(t), the paths on the plane, the
     /// drift of the integrals, the trace of (gamma1, gamma2).
     Plot(plot::Args),
-    /// Write an HTML page animating the rolling ball.
+    /// Write the 3D viewer of the rolling ball: one self-contained HTML page.
     Animate(animate::Args),
     /// Check every computable claim of the paper's sections 2.1 to 4.
     Audit(audit::Args),

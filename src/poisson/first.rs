@@ -45,10 +45,11 @@ impl Alpha {
         Alpha::Polynomial([c, 0.0, 0.0])
     }
 
-    /// The value at gamma.
+    /// The value at gamma. A constant alpha is defined everywhere, also at gamma2 = 0.
     pub fn at<D: Scalar>(&self, gamma: &[D; 3]) -> D {
         let t = gamma[0] / gamma[1];
         match self {
+            Alpha::Polynomial([c, 0.0, 0.0]) => lift(*c),
             Alpha::Polynomial(c) => polynomial(c, t),
             Alpha::Function(f) => f.at(t),
         }

@@ -12,6 +12,7 @@
 //! Schouten bracket needs, come from forward-mode automatic differentiation ([`Jet::at`]).
 
 pub mod first;
+pub mod flows;
 pub mod hamiltonian;
 pub mod lie_poisson;
 pub mod reduction;

@@ -47,6 +47,32 @@ impl PoissonMap {
             m[2] / ag + b * h * (body.m / body.i1) / ag,
         ]
     }
+
+    /// The inverse of [`PoissonMap::image`] on the leaf of the Jellett value `b = (M, r)`: the
+    /// point `(gamma, M)` of a point `(gamma, L)` with `(L, gamma) = c`. From (p-map),
+    /// `M3 = alpha g L3 - b m h / I1`; `(M, r) = R u + h M3 = b` gives `u = (b - h M3)/R`; and
+    /// `L1 gamma2 - L2 gamma1 = (gamma2 M1 - gamma1 M2)/beta` gives the horizontal component
+    /// orthogonal to gamma. No division by h: the inverse is regular where the map's
+    /// `1/(R gamma3 + a)` is not.
+    pub fn preimage<D: Scalar>(&self, y: &[D; 6], b: D) -> [D; 6] {
+        let body = &self.bracket.body;
+        let (gamma, l) = split(y);
+        let [g1, g2, _] = gamma;
+        let (alpha, beta) = self.bracket.alpha_beta(&gamma);
+        let h = body.contact_vector(&gamma)[2];
+        let m3 = alpha * body.routh_g(&gamma) * l[2] - b * h * (body.m / body.i1);
+        let u = (b - h * m3) / body.radius;
+        let turn = (l[0] * g2 - l[1] * g1) * beta;
+        let s = g1 * g1 + g2 * g2;
+        [
+            g1,
+            g2,
+            gamma[2],
+            (g1 * u + g2 * turn) / s,
+            (g2 * u - g1 * turn) / s,
+            m3,
+        ]
+    }
 }
 
 /// The pushforward `J P J^T` at `x` of a bivector P by a map with Jacobian J (the bracket of
@@ -78,6 +104,25 @@ pub fn spherical(y: &[f64; 6]) -> [f64; 4] {
     let theta = y[2].clamp(-1.0, 1.0).acos();
     let phi = y[0].atan2(y[1]);
     [phi, theta, -y[5], -phi.cos() * y[3] + phi.sin() * y[4]]
+}
+
+/// The point `(gamma, L)` of spherical coordinates `(phi, theta, p_phi, p_theta)` as printed in
+/// (sph-coord): `L1 = sin phi cos theta / sin theta p_phi - cos phi p_theta`,
+/// `L2 = cos phi cos theta / sin theta p_phi + sin phi p_theta`, `L3 = -p_phi` (so that
+/// `(L, gamma) = 0`); the inverse of [`spherical`].
+pub fn from_spherical(sph: &[f64; 4]) -> [f64; 6] {
+    let [phi, theta, p_phi, p_theta] = *sph;
+    let (sp, cp) = phi.sin_cos();
+    let cot = theta.cos() / theta.sin();
+    let [g1, g2, g3] = unit_normal(sph);
+    [
+        g1,
+        g2,
+        g3,
+        sp * cot * p_phi - cp * p_theta,
+        cp * cot * p_phi + sp * p_theta,
+        -p_phi,
+    ]
 }
 
 /// The functions `[A, B, C, V](theta)` of (int-sph2), with alpha and beta of the bracket

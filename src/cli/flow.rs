@@ -1,0 +1,142 @@
+//! `routh exact --flow X1|X2|Xhat2`: the flow of a Hamiltonian field of the first bracket
+//! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
+//! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
+
+use super::exact::{csv_row, Args, CSV_HEADER};
+use routh::case::{check_option, Case};
+use routh::integrals::{energy, jellett, routh_integral};
+use routh::output::write_atomic;
+use routh::poisson::flows::{Field, Flow};
+use routh::{Result, RouthError, State};
+use serde::Serialize;
+use std::io::Write;
+
+/// The summary printed by `routh exact --flow`.
+#[derive(Serialize)]
+struct Summary {
+    case: String,
+    flow: &'static str,
+    condition: &'static str,
+    alpha: f64,
+    /// `nutation` (theta oscillates) or `steady` (theta constant).
+    motion: &'static str,
+    theta_min: f64,
+    theta_max: f64,
+    gamma3_min: f64,
+    gamma3_max: f64,
+    /// The period of theta.
+    period: Option<f64>,
+    /// The advance of phi = atan2(gamma1, gamma2) per period of theta.
+    precession_advance_per_period: Option<f64>,
+    /// dphi/dt when theta is constant.
+    precession_rate: Option<f64>,
+    t: f64,
+    gamma: [f64; 3],
+    #[serde(rename = "M")]
+    m: [f64; 3],
+    omega: [f64; 3],
+    #[serde(rename = "H1")]
+    h1: f64,
+    #[serde(rename = "H3")]
+    h3: f64,
+    #[serde(rename = "K")]
+    k: f64,
+}
+
+/// Run `routh exact --flow`.
+pub fn run(args: &Args, field: Field) -> Result<()> {
+    let case = Case::load(args.case.as_deref())?;
+    let t = args.time.unwrap_or(case.integration.t_end);
+    check_option("t", t, t.is_finite(), "must be finite")?;
+    check_option(
+        "alpha",
+        args.alpha,
+        args.alpha.is_finite() && args.alpha != 0.0,
+        "must be finite and nonzero",
+    )?;
+    if let Some(n) = args.samples {
+        check_option("samples", n as f64, n >= 2, "must be >= 2")?;
+    }
+    let bracket = args.condition.bracket(case.body, args.alpha);
+    let x0 = case.initial.to_array();
+    let flow = Flow::new(bracket, field, &x0)?;
+    let state_at = |ti: f64| State::from_array(&flow.state_at(ti));
+    let samples = args.samples.or(args.out.as_ref().map(|_| 1001));
+    if let Some(n) = samples {
+        let write_rows = |w: &mut dyn Write| -> Result<()> {
+            let io = |source| RouthError::Io {
+                path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
+                source,
+            };
+            writeln!(w, "{CSV_HEADER}").map_err(io)?;
+            for i in 0..n {
+                let ti = t * i as f64 / (n - 1) as f64;
+                writeln!(w, "{}", csv_row(&case, ti, &state_at(ti))).map_err(io)?;
+            }
+            Ok(())
+        };
+        match &args.out {
+            Some(path) => write_atomic(path, write_rows)?,
+            None => return write_rows(&mut std::io::stdout().lock()),
+        }
+    }
+    let shape = flow.shape();
+    let state = state_at(t);
+    let [theta_min, theta_max] = shape.theta;
+    let summary = Summary {
+        case: case.source.clone(),
+        flow: field.name(),
+        condition: args.condition.name(),
+        alpha: args.alpha,
+        motion: if shape.period.is_some() {
+            "nutation"
+        } else {
+            "steady"
+        },
+        theta_min,
+        theta_max,
+        gamma3_min: theta_max.cos(),
+        gamma3_max: theta_min.cos(),
+        period: shape.period,
+        precession_advance_per_period: shape.advance,
+        precession_rate: shape.rate,
+        t,
+        gamma: state.gamma,
+        m: state.m,
+        omega: state.omega(&case.body),
+        h1: energy(&case.body, &x0),
+        h3: jellett(&case.body, &x0),
+        k: routh_integral(&case.body, &x0),
+    };
+    if args.json {
+        super::print_json(&summary);
+    } else {
+        print_text(&summary);
+    }
+    Ok(())
+}
+
+fn print_text(s: &Summary) {
+    println!("case: {}", s.case);
+    println!(
+        "flow {} = P dH of the first bracket (p-br) at ({}), alpha = {}",
+        s.flow, s.condition, s.alpha
+    );
+    println!(
+        "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
+        s.theta_min, s.theta_max, s.gamma3_min, s.gamma3_max
+    );
+    match (s.period, s.precession_advance_per_period, s.precession_rate) {
+        (Some(period), Some(advance), _) => {
+            println!("period of theta T = {period}");
+            println!("advance of phi per period = {advance}");
+        }
+        (_, _, Some(rate)) => println!("theta constant: dphi/dt = {rate}"),
+        _ => {}
+    }
+    println!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k);
+    println!("state at t = {}:", s.t);
+    println!("  gamma = {:?}", s.gamma);
+    println!("  M     = {:?}", s.m);
+    println!("  omega = {:?}", s.omega);
+}
