@@ -23,6 +23,7 @@ const TRAJECTORY: Settings = Settings {
     atol: 1e-12,
     project: false,
     samples: 0,
+    max_steps: routh::case::DEFAULT_MAX_STEPS,
 };
 
 fn default_case() -> Case {

@@ -24,6 +24,7 @@ fn main() -> routh::Result<()> {
             atol: 1e-12,
             project: false,
             samples: 0,
+            max_steps: routh::simulate::DEFAULT_MAX_STEPS,
         },
         event: None,
     };

@@ -23,6 +23,7 @@ fn main() -> routh::Result<()> {
         atol: 1e-12,
         project: false,
         samples: 0,
+        max_steps: routh::simulate::DEFAULT_MAX_STEPS,
     };
     let numerical = Problem {
         ball: body.ball(),

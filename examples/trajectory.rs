@@ -23,6 +23,7 @@ fn main() -> routh::Result<()> {
             atol: 1e-12,
             project: false,
             samples: 11,
+            ..Settings::default()
         },
         event: None,
     };

@@ -1,6 +1,6 @@
 //! Cases: a body, an initial state and integration settings, read from a TOML file.
 //!
-//! Schema (other commands add tables of their own, which this module leaves to them):
+//! Schema (commands may add tables of their own, listed in [`COMMAND_TABLES`]):
 //!
 //! ```toml
 //! [body]
@@ -14,13 +14,15 @@
 //! gamma = [0.29552020666133955, 0.0, 0.955336489125606]
 //! omega = [0.5, 0.2, 8.0]   # or M = [...], exactly one of the two
 //! normalize = false         # optional: rescale gamma to unit length
-//! [integration]
+//! [integration]     # optional, and so is each key (these are the defaults)
 //! t_end = 100.0
 //! rtol = 1e-12
 //! atol = 1e-12
+//! max_steps = 10000000
 //! ```
 //!
-//! Unknown keys and missing fields are errors that name the key and the file.
+//! `G` is optional (default 9.81). Unknown keys and tables anywhere (at the top level, in a
+//! table) and missing fields are errors that name the key, the table and the file.
 
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
@@ -32,9 +34,10 @@ use std::path::Path;
 /// The built-in default case, `cases/default.toml`.
 pub const DEFAULT_CASE: &str = include_str!("../cases/default.toml");
 
-/// Integration settings of a case.
+/// Integration settings of a case, table `[integration]`: optional, and so is each key
+/// (defaults: [`Integration::default`]).
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, serde::Serialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, default)]
 pub struct Integration {
     /// Final time.
     pub t_end: f64,
@@ -42,14 +45,87 @@ pub struct Integration {
     pub rtol: f64,
     /// Absolute tolerance.
     pub atol: f64,
+    /// Most steps (accepted and rejected) an adaptive integration may attempt, and most
+    /// steps of a fixed-step one.
+    pub max_steps: usize,
+}
+
+/// Default final time of a case without `t_end`.
+pub const DEFAULT_T_END: f64 = 100.0;
+/// Default relative and absolute tolerance of a case without `rtol` or `atol`.
+pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+pub use crate::simulate::DEFAULT_MAX_STEPS;
+/// The largest relative tolerance accepted: above it the integrals drift by whole percents
+/// (rtol = 1 lets H2 drift by 40 % over the default case) and the run is not a solution.
+pub const MAX_RTOL: f64 = 1e-2;
+/// The smallest relative tolerance accepted, 100 machine epsilons (2.2e-14): the rounding
+/// of each step's update is of the order of a few epsilons of the state, so a smaller local
+/// error target is not what the controller can verify.
+pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+
+impl Default for Integration {
+    fn default() -> Self {
+        Integration {
+            t_end: DEFAULT_T_END,
+            rtol: DEFAULT_TOLERANCE,
+            atol: DEFAULT_TOLERANCE,
+            max_steps: DEFAULT_MAX_STEPS,
+        }
+    }
 }
 
 impl Integration {
-    /// Check the settings with the one validation of the library,
-    /// [`crate::simulate::validate_span`].
+    /// Check the settings: t_end, rtol, atol by the library's one validation
+    /// ([`crate::simulate::validate_span`]), the tolerances' range by [`check_tolerances`],
+    /// max_steps >= 1.
     pub fn validate(&self) -> Result<()> {
-        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)
+        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)?;
+        check_tolerances(self.rtol, self.atol)?;
+        check_max_steps(self.max_steps)
     }
+}
+
+/// The rule for the tolerances a user asks for (a case file or the command line): rtol
+/// finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`], [`MAX_RTOL`]); atol finite and
+/// > 0. The library's own `Settings` accept any finite positive values.
+pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
+    check_option(
+        "rtol",
+        rtol,
+        rtol.is_finite() && rtol > 0.0,
+        "must be finite and > 0",
+    )?;
+    check_option(
+        "rtol",
+        rtol,
+        rtol < MAX_RTOL,
+        "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents",
+    )?;
+    check_option(
+        "rtol",
+        rtol,
+        rtol >= MIN_RTOL,
+        "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
+         the error the controller asks for",
+    )?;
+    check_option(
+        "atol",
+        atol,
+        atol.is_finite() && atol > 0.0,
+        "must be finite and > 0",
+    )
+}
+
+/// `max_steps` must be at least 1.
+pub fn check_max_steps(max_steps: usize) -> Result<()> {
+    if max_steps == 0 {
+        return Err(RouthError::Option {
+            name: "max_steps",
+            value: "0".into(),
+            rule: "must be >= 1",
+        });
+    }
+    Ok(())
 }
 
 /// Fail with [`RouthError::Option`] unless `ok`.
@@ -95,8 +171,16 @@ struct BodyTable {
     i2: Option<f64>,
     #[serde(rename = "I3")]
     i3: f64,
-    #[serde(rename = "G")]
+    #[serde(rename = "G", default = "standard_gravity")]
     gravity: f64,
+}
+
+/// The gravitational acceleration of a case without `G`: 9.81 (the units of the case are
+/// then metres and seconds).
+pub const DEFAULT_G: f64 = 9.81;
+
+fn standard_gravity() -> f64 {
+    DEFAULT_G
 }
 
 #[derive(Deserialize)]
@@ -110,8 +194,12 @@ struct InitialTable {
     normalize: bool,
 }
 
-/// The tables this module owns; other top-level tables are left to their commands.
+/// The tables this module owns.
 const OWN_TABLES: [&str; 3] = ["body", "initial", "integration"];
+
+/// Top-level tables of the commands that read their own (by [`Case::extra_table`]); any
+/// other top-level key or table is refused.
+pub const COMMAND_TABLES: [&str; 1] = ["sweep"];
 
 impl Case {
     /// The built-in default case.
@@ -164,9 +252,13 @@ impl Case {
             file: source.to_string(),
             message,
         };
+        reject_unknown_keys(&document).map_err(&err)?;
         let body: BodyTable = table(&document, "body").map_err(&err)?;
         let initial: InitialTable = table(&document, "initial").map_err(&err)?;
-        let integration: Integration = table(&document, "integration").map_err(&err)?;
+        let integration: Integration = match document.get("integration") {
+            None => Integration::default(),
+            Some(_) => table(&document, "integration").map_err(&err)?,
+        };
         let inertia = [body.i1, body.i2.unwrap_or(body.i1), body.i3];
         let ball = match (body.a, body.com) {
             (Some(a), None) => Body::new(
@@ -200,6 +292,8 @@ impl Case {
                 ));
             }
         };
+        crate::range::check_body(&ball)?;
+        crate::range::check_state(&ball, &state)?;
         integration.validate()?;
         Ok(Case {
             source: source.to_string(),
@@ -229,19 +323,32 @@ impl Case {
                 }),
         }
     }
+}
 
-    /// Check that the document has no top-level table outside `OWN_TABLES` and `extra`.
-    pub fn reject_unknown_tables(&self, extra: &[&str]) -> Result<()> {
-        for key in self.document.keys() {
-            if !OWN_TABLES.contains(&key.as_str()) && !extra.contains(&key.as_str()) {
-                return Err(RouthError::Case {
-                    file: self.source.clone(),
-                    message: format!("unknown key `{key}` at the top level"),
-                });
-            }
+/// Refuse a top-level key that is not one of the known tables: a key such as `t_end` written
+/// above the first table, or an unknown table such as `[extra]`.
+fn reject_unknown_keys(document: &toml::Table) -> std::result::Result<(), String> {
+    for (key, value) in document {
+        let known = OWN_TABLES.contains(&key.as_str()) || COMMAND_TABLES.contains(&key.as_str());
+        if known && value.is_table() {
+            continue;
         }
-        Ok(())
+        let hint = if value.is_table() {
+            format!("unknown table [{key}]")
+        } else if known {
+            format!("`{key}` must be a table [{key}]")
+        } else {
+            format!(
+                "unknown key `{key}` at the top level, outside any table (keys belong in \
+                 [body], [initial] or [integration], after the table's header)"
+            )
+        };
+        return Err(format!(
+            "{hint}; known tables: {}",
+            OWN_TABLES.map(|t| format!("[{t}]")).join(", ")
+        ));
     }
+    Ok(())
 }
 
 fn table<T: serde::de::DeserializeOwned>(

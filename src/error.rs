@@ -104,6 +104,18 @@ pub enum RouthError {
         /// The estimated relative error at t.
         error: f64,
     },
+    /// A parameter or a state beyond the range of f64 for a quantity of the model.
+    #[error("{cause} makes {quantity} {direction} (value {value:e})")]
+    Overflow {
+        /// The parameters or the state that cause it, with their values.
+        cause: String,
+        /// The quantity that overflows (the energy H1, the inertia I_Q, ...).
+        quantity: &'static str,
+        /// `overflow` or `underflow`.
+        direction: &'static str,
+        /// The value reached (infinite, NaN, or the offending magnitude).
+        value: f64,
+    },
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(#[from] crate::integrate::IntegrateError),

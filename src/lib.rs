@@ -23,7 +23,7 @@
 //! assert_eq!(ball.model(), Model::Chaplygin);
 //! let initial = State::from_omega(&ball, [0.0, 0.6, 0.8], [1.0, -2.0, 3.0], Normalise::Reject)?;
 //! let settings = Settings { method: Method::Dop853, t_end: 10.0, rtol: 1e-12, atol: 1e-12,
-//!                           project: false, samples: 11 };
+//!                           project: false, samples: 11, ..Settings::default() };
 //! let solution = Problem { ball, initial, settings, event: None }.solve()?;
 //! assert_eq!(solution.status, Status::Reached);
 //! assert!(solution.integrals["MM"].max_rel_drift < 1e-10);
@@ -48,6 +48,7 @@ pub mod output;
 pub mod plot;
 pub mod problem;
 pub mod projection;
+pub mod range;
 pub mod quadrature;
 pub mod sampling;
 pub mod scalar;

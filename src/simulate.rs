@@ -28,9 +28,21 @@ pub struct Settings {
     pub atol: f64,
     /// Project onto the level set of the integrals after each step.
     pub project: bool,
-    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends).
+    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),
+    /// at most [`MAX_SAMPLES`].
     pub samples: usize,
+    /// Most steps DOP853 may attempt (accepted and rejected), and most steps of RK4.
+    pub max_steps: usize,
 }
+
+/// The largest number of samples of one run (their times take 8 bytes each in memory, the
+/// CSV about 300 bytes each on disk: 3 GB).
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// The default limit of steps of one integration (`--max-steps`, `max_steps` in
+/// `[integration]`): about 40 s of DOP853 on this machine; a run that needs more is stopped
+/// with a message naming the limit.
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
 
 /// The drift of one integral along the trajectory.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -130,6 +142,7 @@ impl Default for Settings {
             atol: 1e-12,
             project: false,
             samples: 0,
+            max_steps: DEFAULT_MAX_STEPS,
         }
     }
 }
@@ -160,6 +173,22 @@ pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
 /// option.
 pub fn validate(settings: &Settings) -> Result<()> {
     validate_span(settings.t_end, settings.rtol, settings.atol)?;
+    if settings.samples > MAX_SAMPLES {
+        return Err(RouthError::Option {
+            name: "samples",
+            value: settings.samples.to_string(),
+            rule: "must be at most 10000000 (MAX_SAMPLES)",
+        });
+    }
+    if let Method::Rk4 { steps } = settings.method {
+        if steps > settings.max_steps {
+            return Err(RouthError::Option {
+                name: "method rk4:<steps>",
+                value: steps.to_string(),
+                rule: "must not exceed max_steps (--max-steps, default 10000000)",
+            });
+        }
+    }
     if settings.samples == 1 {
         return Err(RouthError::Option {
             name: "samples",
@@ -242,6 +271,7 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
             let opts = Options {
                 rtol: settings.rtol,
                 atol: settings.atol,
+                max_steps: settings.max_steps,
                 ..Options::default()
             };
             Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts)?)

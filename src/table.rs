@@ -28,6 +28,25 @@ pub fn csv_header(tail: &[&str]) -> String {
         .join(",")
 }
 
+/// Columns that may hold empty cells: the integrals that exist only for I1 = I2.
+pub const OPTIONAL_COLUMNS: [&str; 2] = ["H2", "K"];
+
+/// The value of one CSV cell of column `name`, or why it cannot be drawn.
+fn cell_value(cell: &str, name: &str) -> std::result::Result<f64, String> {
+    if cell.is_empty() {
+        return if OPTIONAL_COLUMNS.contains(&name) {
+            Ok(f64::NAN)
+        } else {
+            Err("empty cell".into())
+        };
+    }
+    match cell.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!("`{cell}` is not a finite number")),
+        Err(_) => Err(format!("`{cell}` is not a number")),
+    }
+}
+
 /// Named columns of equal length.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
@@ -99,37 +118,68 @@ impl Table {
         }
     }
 
-    /// Parse CSV text: a header of names, then rows of numbers (empty cell: NaN). At least
-    /// one row and a `t` column are required.
+    /// Parse CSV text: a header of distinct names, then at least two rows of finite numbers,
+    /// one per column, with `t` strictly increasing. An empty cell reads as NaN and is allowed
+    /// only in the columns of [`OPTIONAL_COLUMNS`] (written empty when I1 != I2); anything
+    /// else that cannot be drawn (a `NaN` or `inf` written out, a ragged row, one row) is
+    /// refused with its line and column.
     pub fn parse_csv(text: &str, origin: &str) -> Result<Self> {
+        let error = |message: String| RouthError::Table {
+            origin: origin.to_string(),
+            message,
+        };
         let mut lines = text
             .lines()
             .enumerate()
             .filter(|(_, l)| !l.trim().is_empty());
-        let (_, header) = lines.next().ok_or_else(|| RouthError::Table {
-            origin: origin.to_string(),
-            message: "empty file, expected a header row".into(),
-        })?;
+        let (_, header) = lines
+            .next()
+            .ok_or_else(|| error("empty file, expected a header row".into()))?;
         let names: Vec<String> = header.split(',').map(|s| s.trim().to_string()).collect();
+        for (i, name) in names.iter().enumerate() {
+            if name.is_empty() || names[..i].contains(name) {
+                return Err(error(format!(
+                    "line 1: column {} has an empty or repeated name `{name}`",
+                    i + 1
+                )));
+            }
+        }
         let mut table = Table::new(origin, names);
         for (index, line) in lines {
-            let row = line
-                .split(',')
-                .map(|cell| match cell.trim() {
-                    "" => Ok(f64::NAN),
-                    value => value.parse::<f64>().map_err(|_| {
-                        table.error(format!("line {}: `{value}` is not a number", index + 1))
-                    }),
+            let line_no = index + 1;
+            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            if cells.len() != table.names.len() {
+                return Err(error(format!(
+                    "line {line_no}: {} values for {} columns",
+                    cells.len(),
+                    table.names.len()
+                )));
+            }
+            let row = cells
+                .iter()
+                .zip(&table.names)
+                .map(|(cell, name)| {
+                    cell_value(cell, name)
+                        .map_err(|why| error(format!("line {line_no}, column `{name}`: {why}")))
                 })
                 .collect::<Result<Vec<f64>>>()?;
-            table
-                .push_row(&row)
-                .map_err(|e| table.error(format!("line {}: {e}", index + 1)))?;
+            table.push_row(&row)?;
         }
-        if table.is_empty() {
-            return Err(table.error("no rows of samples".into()));
+        if table.len() < 2 {
+            return Err(error(format!(
+                "{} row(s) of samples, at least 2 are needed to draw",
+                table.len()
+            )));
         }
-        table.column("t")?;
+        let t = table.column("t")?;
+        if let Some(i) = t.windows(2).position(|w| w[1] <= w[0]) {
+            return Err(error(format!(
+                "column `t` must increase, but row {} has t = {} after t = {}",
+                i + 2,
+                t[i + 1],
+                t[i]
+            )));
+        }
         Ok(table)
     }
 
@@ -154,6 +204,7 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
         atol: case.integration.atol,
         project: false,
         samples,
+        max_steps: case.integration.max_steps,
     };
     let tail: Vec<&str> = INTEGRAL_NAMES
         .into_iter()
@@ -191,7 +242,7 @@ mod tests {
 
     #[test]
     fn csv_round_trip_with_empty_cells() {
-        let table = Table::parse_csv("t,H2,x\n0,1.5,\n0.5,,2e-3\n", "test").unwrap();
+        let table = Table::parse_csv("t,H2,x\n0,1.5,4\n0.5,,2e-3\n", "test").unwrap();
         assert_eq!(table.len(), 2);
         assert_eq!(table.column("t").unwrap(), &[0.0, 0.5]);
         assert!(table.column("H2").unwrap()[1].is_nan());
@@ -205,7 +256,27 @@ mod tests {
         assert!(err.to_string().contains("line 3"), "{err}");
         let err = Table::parse_csv("t,x\n0,1,2\n", "f.csv").unwrap_err();
         assert!(err.to_string().contains("line 2"), "{err}");
-        assert!(Table::parse_csv("x\n1\n", "f.csv").is_err());
+        assert!(Table::parse_csv("x\n1\n2\n", "f.csv").is_err());
         assert!(Table::parse_csv("t,x\n", "f.csv").is_err());
+    }
+
+    #[test]
+    fn csvs_that_cannot_be_drawn_are_refused_naming_the_file_once() {
+        for (text, expected) in [
+            ("t,x\n0,1\n", "1 row(s)"),
+            (
+                "t,x\n0,1\n1,NaN\n",
+                "line 3, column `x`: `NaN` is not a finite number",
+            ),
+            ("t,x\n0,1\n1,inf\n", "column `x`"),
+            ("t,x\n0,1\n1,\n", "line 3, column `x`: empty cell"),
+            ("t,x\n0,1\n1,2,3\n", "line 3: 3 values for 2 columns"),
+            ("t,x\n0,1\n0,2\n", "must increase"),
+            ("t,t\n0,1\n1,2\n", "repeated name"),
+        ] {
+            let e = Table::parse_csv(text, "f.csv").unwrap_err().to_string();
+            assert!(e.contains(expected), "{text:?}: {e}");
+            assert_eq!(e.matches("f.csv").count(), 1, "{e}");
+        }
     }
 }

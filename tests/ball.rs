@@ -269,6 +269,7 @@ fn chaplygin_case_keeps_its_integrals_to_t_1000() {
             atol: case.integration.atol,
             project,
             samples: 0,
+            max_steps: routh::simulate::DEFAULT_MAX_STEPS,
         };
         let summary = run(
             &case.ball,

@@ -145,7 +145,7 @@ fn bad_case_files_exit_2_naming_the_key_and_file() {
             "[integration]\nsteps = 3",
             "unknown field `steps`",
         ),
-        ("t_end = 100.0\n", "", "missing field `t_end`"),
+        ("[body]", "t_end = 5\n[body]", "unknown key `t_end`"),
         ("R = 1.0\n", "", "missing field `R`"),
         ("[body]", "[body", "malformed TOML"),
         (

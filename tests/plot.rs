@@ -273,7 +273,7 @@ fn bad_input_exits_2_with_a_message() {
         "line 2",
     );
     let reduced = dir.join("reduced.csv");
-    std::fs::write(&reduced, "t,gamma1,gamma2,gamma3\n0,0,0,1\n").unwrap();
+    std::fs::write(&reduced, "t,gamma1,gamma2,gamma3\n0,0,0,1\n1,0,0,1\n").unwrap();
     assert_exit_2(
         &["animate", "--out", out, "--csv", reduced.to_str().unwrap()],
         "--full",

@@ -19,6 +19,7 @@ fn default_problem(t_end: f64, samples: usize) -> Problem {
             atol: 1e-12,
             project: false,
             samples,
+            ..Settings::default()
         },
         event: None,
     }

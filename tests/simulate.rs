@@ -17,6 +17,7 @@ fn simulate(case: &Case, x0: [f64; 6], t_end: f64, project: bool) -> Summary {
         atol: 1e-12,
         project,
         samples: 0,
+        max_steps: routh::case::DEFAULT_MAX_STEPS,
     };
     run(
         &case.ball,
@@ -71,6 +72,7 @@ fn default_case_to_t_1000_keeps_every_integral_within_1e_10() {
         atol: 1e-6,
         project: false,
         samples: 0,
+        max_steps: routh::case::DEFAULT_MAX_STEPS,
     };
     let loose = run(
         &case.ball,
@@ -150,6 +152,7 @@ fn rk4_converges_to_the_dop853_result_with_order_4() {
             atol: 1.0,
             project: false,
             samples: 0,
+            max_steps: routh::case::DEFAULT_MAX_STEPS,
         };
         let s = run(
             &case.ball,
@@ -183,6 +186,7 @@ fn samples_are_equally_spaced_and_end_at_t_end() {
         atol: 1e-10,
         project: false,
         samples: 5,
+        max_steps: routh::case::DEFAULT_MAX_STEPS,
     };
     let mut seen = Vec::new();
     let summary = run(
@@ -223,6 +227,7 @@ fn a_triaxial_body_tracks_only_its_integrals() {
         atol: 1e-12,
         project: false,
         samples: 0,
+        max_steps: routh::case::DEFAULT_MAX_STEPS,
     };
     let mut h3 = Vec::new();
     let s = run(
@@ -231,6 +236,7 @@ fn a_triaxial_body_tracks_only_its_integrals() {
         x0.to_array(),
         &Settings {
             samples: 101,
+            max_steps: routh::case::DEFAULT_MAX_STEPS,
             ..settings
         },
         &mut |_, x| {

@@ -23,6 +23,7 @@ pub fn python_error(e: RouthError) -> PyErr {
         | RouthError::NotSymmetric { .. }
         | RouthError::OffAxis { .. }
         | RouthError::Horizon { .. }
+        | RouthError::Overflow { .. }
         | RouthError::State(_)
         | RouthError::Option { .. }
         | RouthError::Case { .. }

@@ -56,6 +56,7 @@ pub fn sweep<'py>(
         t_end,
         rtol,
         atol,
+        max_steps: None,
     };
     if threads == Some(0) {
         return Err(PyValueError::new_err("threads must be >= 1"));

@@ -41,17 +41,25 @@ enum Command {
     Sweep(sweep::Args),
 }
 
+/// `value` as pretty JSON, ending with a newline. Serialising the output structs (plain
+/// numbers, strings, maps with string keys) cannot fail; a NaN or an infinity, which JSON
+/// cannot hold, is written as `null`.
+pub fn json<T: serde::Serialize>(value: &T) -> String {
+    serde_json::to_string_pretty(value).expect("serialisable output") + "\n"
+}
+
 /// Print `value` as pretty JSON on stdout.
 pub fn print_json<T: serde::Serialize>(value: &T) {
-    println!(
-        "{}",
-        serde_json::to_string_pretty(value).expect("serialisable output")
-    );
+    print!("{}", json(value));
 }
 
 /// Parse the arguments, run the command, map errors to exit code 2.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Err(e) = routh::output::remove_temporaries_on_signal() {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
     let result: routh::Result<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
         Command::Plot(args) => plot::run(args),

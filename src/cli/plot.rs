@@ -12,6 +12,10 @@ use std::path::{Path, PathBuf};
 /// Samples of the simulation behind the figures when `--samples` is not given.
 const DEFAULT_SAMPLES: usize = 2001;
 
+/// The most samples of a simulation behind the figures (about 30 columns of 8 bytes each are
+/// kept in memory: 240 MB).
+const MAX_SAMPLES: usize = 1_000_000;
+
 /// Where the samples come from: a simulation of a case, or a CSV file of `routh simulate`.
 #[derive(clap::Args, Debug)]
 pub struct Source {
@@ -25,7 +29,7 @@ pub struct Source {
     /// Final time of the simulation (default: the case's t_end).
     #[arg(long, allow_negative_numbers = true, conflicts_with = "csv")]
     pub t_end: Option<f64>,
-    /// Number of equally spaced samples of the simulation (>= 2).
+    /// Number of equally spaced samples of the simulation (2 to 1000000).
     #[arg(long, default_value_t = DEFAULT_SAMPLES, conflicts_with = "csv")]
     pub samples: usize,
 }
@@ -44,11 +48,11 @@ impl Source {
             t_end.is_finite() && t_end > 0.0,
             "must be finite and > 0",
         )?;
-        if self.samples < 2 {
+        if !(2..=MAX_SAMPLES).contains(&self.samples) {
             return Err(RouthError::Option {
                 name: "samples",
                 value: self.samples.to_string(),
-                rule: "must be >= 2",
+                rule: "must be between 2 and 1000000 (a figure's points are kept in memory)",
             });
         }
         simulate_full(&case, t_end, self.samples)

@@ -9,7 +9,7 @@ use routh::output::write_atomic;
 use routh::simulate::{run, ReducedSystem, Settings, Summary};
 use routh::table::csv_header;
 use routh::{Result, RouthError};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Samples written to CSV when `--out` is given without `--samples`.
 const DEFAULT_CSV_SAMPLES: usize = 1001;
@@ -35,12 +35,18 @@ pub struct Args {
     /// Project onto the level set of the integrals (|gamma| = 1, H3, K, H1) after each step.
     #[arg(long)]
     pub project: bool,
-    /// Number of equally spaced dense-output samples on [0, t_end] written to `--out`.
+    /// Number of equally spaced dense-output samples on [0, t_end], both ends included
+    /// (2 to 10000000; default 1001 with `--out`). Without `--out` they go to standard output.
     #[arg(long)]
     pub samples: Option<usize>,
-    /// CSV file for the samples (written atomically).
+    /// CSV file for the samples (written atomically; `-` for standard output, where the
+    /// summary then goes to standard error).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Most steps the integrator may take (DOP853: accepted and rejected; RK4: its step
+    /// count); default: the case's `max_steps`, 10000000 unless set.
+    #[arg(long)]
+    pub max_steps: Option<usize>,
     /// Also rebuild the motion in space: add the orientation quaternion (qw, qx, qy, qz), the
     /// centre of mass (x, y, z) and the contact point (contact_x, contact_y) to the CSV.
     #[arg(long)]
@@ -55,15 +61,30 @@ pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
-/// The settings of a case with the command-line overrides applied.
-pub fn settings(case: &Case, args: &Args, samples: usize) -> Settings {
-    Settings {
+/// The settings of a case with the command-line overrides applied, checked (the tolerances
+/// by the rule of [`routh::case::check_tolerances`]).
+pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
+    let settings = Settings {
         method: args.method,
         t_end: args.t_end.unwrap_or(case.integration.t_end),
         rtol: args.rtol.unwrap_or(case.integration.rtol),
         atol: args.atol.unwrap_or(case.integration.atol),
         project: args.project,
         samples,
+        max_steps: args.max_steps.unwrap_or(case.integration.max_steps),
+    };
+    routh::case::check_tolerances(settings.rtol, settings.atol)?;
+    routh::case::check_max_steps(settings.max_steps)?;
+    routh::simulate::validate(&settings)?;
+    Ok(settings)
+}
+
+/// Where the CSV of samples goes: `--out`, or standard output when only `--samples` is given.
+fn csv_destination(args: &Args) -> Option<PathBuf> {
+    match (&args.out, args.samples) {
+        (Some(path), _) => Some(path.clone()),
+        (None, Some(_)) => Some(PathBuf::from("-")),
+        (None, None) => None,
     }
 }
 
@@ -88,19 +109,27 @@ pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
 /// Run the command.
 pub fn run_command(args: Args) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
-    let samples = match (args.samples, &args.out) {
+    let out = csv_destination(&args);
+    let samples = match (args.samples, &out) {
+        (Some(n), _) if n < 2 => {
+            return Err(RouthError::Option {
+                name: "samples",
+                value: n.to_string(),
+                rule: "must be >= 2 (the samples include t = 0 and t_end)",
+            })
+        }
         (Some(n), _) => n,
         (None, Some(_)) => DEFAULT_CSV_SAMPLES,
         (None, None) => 0,
     };
-    let settings = settings(&case, &args, samples);
+    let settings = settings(&case, &args, samples)?;
     let summary = if args.full {
         let extra = |y: &[f64; 12]| full_columns(&case.ball, y).to_vec();
         let header = FULL_COLUMN_NAMES.join(",");
         let system = FullMotion { body: &case.ball };
         execute(
             &case,
-            &args,
+            out.as_deref(),
             &settings,
             &system,
             initial_full(&case.initial),
@@ -111,7 +140,7 @@ pub fn run_command(args: Args) -> Result<()> {
         let system = ReducedSystem(&case.ball);
         execute(
             &case,
-            &args,
+            out.as_deref(),
             &settings,
             &system,
             case.initial.to_array(),
@@ -119,33 +148,38 @@ pub fn run_command(args: Args) -> Result<()> {
             |_| Vec::new(),
         )?
     };
-    if args.json {
-        super::print_json(&summary);
+    let report = if args.json {
+        super::json(&summary)
     } else {
-        print_summary(&case, &summary, args.out.as_ref());
+        summary_text(&case, &summary, out.as_deref())
+    };
+    if out.as_deref() == Some(Path::new("-")) {
+        eprint!("{report}");
+    } else {
+        print!("{report}");
     }
     Ok(())
 }
 
 /// Run the simulation of `system` from `y0` (whose first six components are the reduced
-/// state), writing the CSV when `--out` is given: the reduced columns, then the columns of
+/// state), writing the CSV to `out` when given: the reduced columns, then the columns of
 /// `extra_header` with the values of `extra`.
 fn execute<S: OdeSystem<N>, const N: usize>(
     case: &Case,
-    args: &Args,
+    out: Option<&Path>,
     settings: &Settings,
     system: &S,
     y0: [f64; N],
     extra_header: &str,
     extra: impl Fn(&[f64; N]) -> Vec<f64>,
 ) -> Result<Summary> {
-    let Some(path) = &args.out else {
+    let Some(path) = out else {
         return run(&case.ball, system, y0, settings, &mut |_, _| Ok(()));
     };
     let mut summary = None;
     write_atomic(path, |w| {
         let io = |source| RouthError::Io {
-            path: path.clone(),
+            path: path.to_path_buf(),
             source,
         };
         let separator = if extra_header.is_empty() { "" } else { "," };
@@ -164,53 +198,62 @@ fn execute<S: OdeSystem<N>, const N: usize>(
     Ok(summary.expect("run returned a summary"))
 }
 
-fn print_summary(case: &Case, s: &Summary, out: Option<&PathBuf>) {
-    println!("routh simulate: {}", case.source);
+/// The summary as lines of text.
+fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
+    use std::fmt::Write;
+    let mut text = String::new();
     let b = &case.ball;
     let [i1, i2, i3] = b.inertia;
-    match case.body("") {
-        Ok(body) => println!(
+    let projected = if s.projected {
+        " with projection onto the integrals"
+    } else {
+        ""
+    };
+    let _ = writeln!(text, "routh simulate: {}", case.source);
+    let _ = match case.body("") {
+        Ok(body) => writeln!(
+            text,
             "  body     m = {}, R = {}, a = {}, I = ({i1}, {i2}, {i3}), G = {}",
             b.m, b.radius, body.a, b.gravity
         ),
-        Err(_) => println!(
+        Err(_) => writeln!(
+            text,
             "  body     m = {}, R = {}, com = {:?}, I = ({i1}, {i2}, {i3}), G = {}",
             b.m, b.radius, b.com, b.gravity
         ),
-    }
-    println!(
-        "  method   {}{}",
-        s.method,
-        if s.projected {
-            " with projection onto the integrals"
-        } else {
-            ""
-        }
-    );
-    println!("  t_end    {}", s.t_end);
-    println!(
+    };
+    let _ = writeln!(text, "  method   {}{projected}", s.method);
+    let _ = writeln!(text, "  t_end    {}", s.t_end);
+    let _ = writeln!(
+        text,
         "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
         s.steps, s.rejected, s.rhs_evals, s.elapsed_s
     );
-    println!(
-        "  gamma(t_end) = [{:.15}, {:.15}, {:.15}]",
-        s.final_state.gamma[0], s.final_state.gamma[1], s.final_state.gamma[2]
-    );
-    println!(
-        "  M(t_end)     = [{:.15}, {:.15}, {:.15}]",
-        s.final_state.m[0], s.final_state.m[1], s.final_state.m[2]
-    );
-    println!("  integral        initial value   max relative drift");
+    let [g1, g2, g3] = s.final_state.gamma;
+    let _ = writeln!(text, "  gamma(t_end) = [{g1:.15}, {g2:.15}, {g3:.15}]");
+    let [m1, m2, m3] = s.final_state.m;
+    let _ = writeln!(text, "  M(t_end)     = [{m1:.15}, {m2:.15}, {m3:.15}]");
+    let _ = writeln!(text, "  integral        initial value   max relative drift");
     for name in INTEGRAL_NAMES {
-        match s.integrals.get(name) {
-            Some(d) => println!(
+        let _ = match s.integrals.get(name) {
+            Some(d) => writeln!(
+                text,
                 "  {name:<4} {:>24.15e}   {:.3e}",
                 d.initial, d.max_rel_drift
             ),
-            None => println!("  {name:<4} {:>24}   (not an integral: I1 != I2)", "-"),
+            None => writeln!(
+                text,
+                "  {name:<4} {:>24}   (not an integral: I1 != I2)",
+                "-"
+            ),
+        };
+    }
+    let _ = match out {
+        Some(path) if path == Path::new("-") => {
+            writeln!(text, "  samples written to standard output")
         }
-    }
-    if let Some(path) = out {
-        println!("  samples written to {}", path.display());
-    }
+        Some(path) => writeln!(text, "  samples written to {}", path.display()),
+        None => Ok(()),
+    };
+    text
 }

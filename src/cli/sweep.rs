@@ -37,6 +37,10 @@ pub struct Args {
     /// Absolute tolerance of DOP853.
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
+    /// The most steps of one run (default: the case's `max_steps`, else 10,000,000); a run
+    /// that needs more is a row with that reason.
+    #[arg(long)]
+    pub max_steps: Option<usize>,
     /// Integrator: `dop853` or `rk4` / `rk4:<steps>`.
     #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
     pub method: Method,
@@ -95,6 +99,7 @@ pub fn run(args: Args) -> Result<()> {
         t_end: args.t_end,
         rtol: args.rtol,
         atol: args.atol,
+        max_steps: args.max_steps,
     };
     let sweep = Sweep::new(&text, &source, overrides)?;
     let (mut writer, done): (Box<dyn TableWriter>, _) = match &args.out {

@@ -198,7 +198,7 @@ pub enum IntegrateError {
         h: f64,
     },
     /// More than `max_steps` steps would be needed.
-    #[error("more than max_steps = {max_steps} steps needed; stopped at t = {t}")]
+    #[error("more than max_steps = {max_steps} steps needed; stopped at t = {t} (raise the limit with --max-steps or max_steps in [integration])")]
     TooManySteps {
         /// Time reached.
         t: f64,

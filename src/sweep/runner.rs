@@ -38,6 +38,8 @@ pub struct Overrides {
     pub rtol: Option<f64>,
     /// Absolute tolerance.
     pub atol: Option<f64>,
+    /// The most steps of one run (`--max-steps`).
+    pub max_steps: Option<usize>,
 }
 
 /// How [`Sweep::execute`] ended.
@@ -90,9 +92,9 @@ impl Sweep {
             atol: overrides.atol.unwrap_or(case.integration.atol),
             project: false,
             samples: 0,
+            max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
         };
         crate::simulate::validate(&settings)?;
-        case.reject_unknown_tables(&["sweep"])?;
         let table: toml::Table = case
             .extra_table(&"sweep")?
             .ok_or_else(|| RouthError::Case {

@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# Run the binary on ~130 bad or unusual inputs and tabulate the outcomes by class:
+# `refused` = exit 2 with a message and no panic; `ok` = exit 0 with no NaN in its output;
+# anything else (a panic, exit 101 or 134, a NaN printed with exit 0, a leftover temporary
+# file) is counted as `WRONG` and makes the script fail. Usage: bash bench/bad_inputs.sh [BINARY]
+set -uo pipefail
+cd "$(dirname "$0")/.."
+BIN=${1:-target/release/routh}
+DIR=$(mktemp -d)
+trap 'rm -rf "$DIR"' EXIT
+DEFAULT=cases/default.toml
+declare -A REFUSED OK WRONG
+wrong_total=0
+
+# try CLASS EXPECT ARGS...: EXPECT is `refused`, `ok` or `any` (either outcome acceptable).
+try() {
+  local class=$1 expect=$2; shift 2
+  local out err code
+  out=$(timeout 60 "$BIN" "$@" 2>"$DIR/err") ; code=$?
+  err=$(cat "$DIR/err")
+  local verdict
+  if [[ $code == 2 && -n $err && $err != *panicked* ]]; then verdict=refused
+  elif [[ $code == 0 && $out != *NaN* && $out != *": null"* ]]; then verdict=ok
+  else verdict=WRONG; fi
+  if ls -a "$DIR" | grep -q '\.tmp-'; then verdict=WRONG; fi
+  if [[ $expect != any && $verdict != "$expect" ]]; then verdict=WRONG; fi
+  case $verdict in
+    refused) REFUSED[$class]=$(( ${REFUSED[$class]:-0} + 1 ));;
+    ok) OK[$class]=$(( ${OK[$class]:-0} + 1 ));;
+    *) WRONG[$class]=$(( ${WRONG[$class]:-0} + 1 )); wrong_total=$((wrong_total + 1))
+       echo "WRONG ($class, exit $code): $* :: ${err:0:200}" >&2;;
+  esac
+  CLASSES[$class]=1
+}
+declare -A CLASSES
+
+# A case file from the default with one line replaced.
+edit() { sed "s|$1|$2|" "$DEFAULT" > "$DIR/c.toml"; echo "$DIR/c.toml"; }
+
+# Body parameters: non-finite, non-positive, |a| >= R, triangle rule, huge and tiny.
+for kv in "m = 1.0|m = 0" "m = 1.0|m = -1" "m = 1.0|m = nan" "m = 1.0|m = inf" "m = 1.0|m = 1e300" \
+          "R = 1.0|R = 0" "R = 1.0|R = -2" "R = 1.0|R = 1e200" "a = 0.3|a = 1.0" \
+          "a = 0.3|a = -1.5" "a = 0.3|a = nan" "I1 = 0.4|I1 = 0" "I1 = 0.4|I1 = 1e300" "I3 = 0.5|I3 = 0.9" \
+          "I3 = 0.5|I3 = -0.5" "G = 9.81|G = -1" "G = 9.81|G = inf" "G = 9.81|G = 1e308" "m = 1.0|m = \"one\""; do
+  for cmd in simulate exact steady; do try body refused $cmd --case "$(edit "${kv%%|*}" "${kv##*|}")" --t-end 1; done
+done
+# A tiny mass is a valid body: simulate and exact accept it; steady refuses it (Schur iteration).
+for cmd in simulate exact steady; do try body any $cmd --case "$(edit "m = 1.0" "m = 1e-300")"; done
+# steady takes no --t-end: rerun the steady ones properly
+for kv in "m = 1.0|m = 1e300" "a = 0.3|a = 1.0" "G = 9.81|G = -1"; do
+  try body refused steady --case "$(edit "${kv%%|*}" "${kv##*|}")"
+done
+# Initial states: non-unit, non-finite, both or neither of omega and M, overflow.
+for kv in "gamma = \[0.29552020666133955, 0.0, 0.955336489125606\]|gamma = [1, 1, 0]" \
+          "gamma = \[0.29552020666133955, 0.0, 0.955336489125606\]|gamma = [0, 0, 0]" \
+          "gamma = \[0.29552020666133955, 0.0, 0.955336489125606\]|gamma = [nan, 0, 1]" \
+          "omega = \[0.5, 0.2, 8.0\]|omega = [0, 0, 1e200]" "omega = \[0.5, 0.2, 8.0\]|omega = [inf, 0, 1]" \
+          "omega = \[0.5, 0.2, 8.0\]|M = [0, 0, 1e300]" "omega = \[0.5, 0.2, 8.0\]|" \
+          "omega = \[0.5, 0.2, 8.0\]|omega = [1, 2]"; do
+  for cmd in simulate exact steady; do try state refused $cmd --case "$(edit "${kv%%|*}" "${kv##*|}")"; done
+done
+# Case file schema: unknown keys and tables, top-level keys, malformed TOML, missing files.
+for kv in "\[body\]|t_end = 5\n[body]" "\[integration\]|[extra]\nx = 1\n[integration]" "G = 9.81|G = 9.81\nmass = 2" \
+          "\[initial\]|[body.sub]\n[initial]" "\[body\]|[body" "rtol = 1e-12|rtol = 1" "rtol = 1e-12|rtol = 1e-16" \
+          "atol = 1e-12|atol = 0" "t_end = 100.0|t_end = -1" "t_end = 100.0|t_end = nan" "rtol = 1e-12|max_steps = 0"; do
+  for cmd in simulate exact steady; do try schema refused $cmd --case "$(edit "${kv%%|*}" "${kv##*|}")"; done
+done
+try schema refused simulate --case /nonexistent/case.toml
+try schema refused simulate --case "$DIR"
+# Optional tables and keys: no [integration], no G, I2 given.
+sed '/\[integration\]/,$d; /^G =/d' "$DEFAULT" > "$DIR/bare.toml"
+for cmd in simulate exact steady; do try optional ok $cmd --case "$DIR/bare.toml"; done
+# Options: bad numbers, sizes, limits.
+for args in "--t-end nan" "--t-end -1" "--t-end inf" "--rtol 0" "--rtol 1" "--rtol 1e-20" "--atol -1" \
+            "--samples 0" "--samples 1" "--samples 18446744073709551615" "--samples 100000000000" \
+            "--samples -5" "--samples 1e11" "--method euler" "--method rk4:0" "--method rk4:99999999999" \
+            "--max-steps 0" "--max-steps 10 --t-end 100" "--t-end 1e6 --max-steps 1000"; do
+  # shellcheck disable=SC2086
+  try options refused simulate $args --out "$DIR/x.csv"
+done
+for args in "--t nan" "--t inf" "--samples 1" "--samples 0"; do
+  # shellcheck disable=SC2086
+  try options refused exact $args
+done
+for args in "--samples 1" "--samples 18446744073709551615" "--t-end -1" "--format gif"; do
+  # shellcheck disable=SC2086
+  try options refused plot $args --out "$DIR/plots"
+done
+# Output targets: devices, pipes, symlinks, directories, missing directories, stdout.
+try output ok simulate --t-end 1 --samples 3 --out /dev/null
+try output ok simulate --t-end 1 --samples 3 --out -
+try output ok simulate --t-end 1 --samples 3
+ln -s real.csv "$DIR/link.csv"; try output ok simulate --t-end 1 --samples 3 --out "$DIR/link.csv"
+[[ -L $DIR/link.csv && -f $DIR/real.csv ]] || { echo "WRONG: the symlink was replaced" >&2; wrong_total=$((wrong_total+1)); }
+mkfifo "$DIR/fifo"; (cat "$DIR/fifo" > "$DIR/from-fifo" &); try output ok simulate --t-end 1 --samples 3 --out "$DIR/fifo"
+try output refused simulate --t-end 1 --out "$DIR"
+try output refused simulate --t-end 1 --out "$DIR/no/such/dir/x.csv"
+try output refused simulate --t-end 1 --out ""
+# CSV files for plot and animate: empty, header only, one row, NaN, inf, ragged, text, no t,
+# decreasing t, repeated column.
+"$BIN" simulate --t-end 1 --samples 4 --full --out "$DIR/good.csv" >/dev/null
+head -1 "$DIR/good.csv" > "$DIR/header.csv"
+head -2 "$DIR/good.csv" > "$DIR/one.csv"
+sed '3s/^\([^,]*\),[^,]*/\1,NaN/' "$DIR/good.csv" > "$DIR/nan.csv"
+sed '3s/^\([^,]*\),[^,]*/\1,inf/' "$DIR/good.csv" > "$DIR/inf.csv"
+sed '3s/$/,7/' "$DIR/good.csv" > "$DIR/ragged.csv"
+sed '3s/^\([^,]*\),[^,]*/\1,abc/' "$DIR/good.csv" > "$DIR/text.csv"
+sed '1s/^t,/time,/' "$DIR/good.csv" > "$DIR/no-t.csv"
+(head -1 "$DIR/good.csv"; tail -n +2 "$DIR/good.csv" | sort -r -t, -k1 -g) > "$DIR/backwards.csv"
+sed '1s/gamma2/gamma1/' "$DIR/good.csv" > "$DIR/repeated.csv"
+: > "$DIR/empty.csv"
+printf '\0\1\2garbage' > "$DIR/binary.csv"
+for f in empty header one nan inf ragged text no-t backwards repeated binary; do
+  try csv refused plot --csv "$DIR/$f.csv" --out "$DIR/plots"
+  try csv refused animate --csv "$DIR/$f.csv" --out "$DIR/plots"
+done
+try csv ok plot --csv "$DIR/good.csv" --out "$DIR/plots"
+try csv ok animate --csv "$DIR/good.csv" --out "$DIR/plots"
+
+printf '| class | tried | refused (exit 2, message) | ok (exit 0, no NaN) | wrong |\n|---|---|---|---|---|\n'
+total=0
+for class in body state schema optional options output csv; do
+  r=${REFUSED[$class]:-0}; o=${OK[$class]:-0}; w=${WRONG[$class]:-0}
+  total=$((total + r + o + w))
+  printf '| %s | %d | %d | %d | %d |\n' "$class" $((r + o + w)) "$r" "$o" "$w"
+done
+printf '| all | %d | | | %d |\n' "$total" "$wrong_total"
+exit $(( wrong_total > 0 ))

@@ -1,0 +1,10 @@
+//! The numerical entry points (field, integrals, exact solution, steady motions) on
+//! arbitrary f64 bodies and states: no panic, no NaN in what an accepted input gives.
+#![no_main]
+
+#[path = "../../tests/properties/mod.rs"]
+mod properties;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| {
+    properties::numerics(&properties::decode_f64s(data), true);
+});

@@ -1,0 +1,161 @@
+//! The range of f64 in which a body and a state can be computed with: a parameter or a
+//! state whose inertia, energy or field overflows (or underflows to a singular inertia) is
+//! refused with the quantity and its cause named, before any integration sees a NaN.
+//!
+//! The inverse of the inertia about the contact point (om-m) is computed in closed form
+//! (`Body::angular_velocity`) through `det I_Q det A`, of the size of `A_i^6` with
+//! `A_i = I_i + m r^2`: it stays finite and normal for `A_i` within [`INERTIA_RANGE`].
+
+use crate::ball::AsBall;
+use crate::error::{Result, RouthError};
+use crate::integrals::Integrals;
+use crate::state::State;
+
+/// The interval in which every `A_i = I_i + m r^2` must lie: its sixth power (the size of
+/// `det I_Q det A`) must be a finite normal f64, `(2.2e-308)^(1/6)` to `(1.8e308)^(1/6)`.
+pub const INERTIA_RANGE: (f64, f64) = (1.6e-51, 5.5e51);
+
+/// Check that the body's inertia about the contact point can be inverted in f64 at every
+/// tilt, and that its weight times its height is finite.
+pub fn check_body(body: &impl AsBall) -> Result<()> {
+    let body = &body.ball();
+    let (low, high) = INERTIA_RANGE;
+    let moments = body.inertia;
+    let offset = norm(&body.com);
+    let r_max = body.radius + offset;
+    let r_min = body.radius - offset;
+    let largest = moments.iter().fold(0.0_f64, |a, &b| a.max(b)) + body.m * r_max * r_max;
+    let smallest = moments.iter().fold(f64::INFINITY, |a, &b| a.min(b)) + body.m * r_min * r_min;
+    let cause = || {
+        format!(
+            "m = {:?}, R = {:?}, com = {:?}, I = {:?}",
+            body.m, body.radius, body.com, body.inertia
+        )
+    };
+    if !(largest <= high) {
+        return Err(RouthError::Overflow {
+            cause: cause(),
+            quantity: "the inertia about the contact point, I + m r^2 (at most 5.5e51 for its \
+                       inverse),",
+            direction: "overflow",
+            value: largest,
+        });
+    }
+    if !(smallest >= low) {
+        return Err(RouthError::Overflow {
+            cause: cause(),
+            quantity: "the inertia about the contact point, I + m r^2 (at least 1.6e-51 for \
+                       its inverse),",
+            direction: "underflow",
+            value: smallest,
+        });
+    }
+    let weight = body.m * body.gravity * r_max;
+    if !weight.is_finite() {
+        return Err(RouthError::Overflow {
+            cause: format!("m = {:?}, G = {:?}, R + |com| = {r_max:?}", body.m, body.gravity),
+            quantity: "the potential energy m G (r, gamma)",
+            direction: "overflow",
+            value: weight,
+        });
+    }
+    Ok(())
+}
+
+/// Check that the state's angular velocity, energy and the integrals are finite (the body
+/// already checked by [`check_body`]).
+pub fn check_state(body: &impl AsBall, state: &State) -> Result<()> {
+    let body = &body.ball();
+    let omega = state.omega(body);
+    let spin = norm(&omega);
+    let momentum = norm(&state.m);
+    let cause = || {
+        if spin.is_finite() {
+            format!("the spin |omega| = {spin:.3e}")
+        } else {
+            format!("the angular momentum |M| = {momentum:.3e}")
+        }
+    };
+    if !spin.is_finite() {
+        return Err(RouthError::Overflow {
+            cause: cause(),
+            quantity: "the angular velocity omega = I_Q^-1 M",
+            direction: "overflow",
+            value: spin,
+        });
+    }
+    let x = state.to_array();
+    let values = Integrals::at(body, &x).values();
+    for (name, value) in crate::integrals::INTEGRAL_NAMES.iter().zip(values) {
+        if let Some(v) = value.filter(|v| !v.is_finite()) {
+            return Err(RouthError::Overflow {
+                cause: cause(),
+                quantity: integral_meaning(name),
+                direction: "overflow",
+                value: v,
+            });
+        }
+    }
+    let field = crate::field::vector_field(body, &x);
+    if let Some(v) = field.iter().find(|v| !v.is_finite()) {
+        return Err(RouthError::Overflow {
+            cause: cause(),
+            quantity: "the field (mg-eq)",
+            direction: "overflow",
+            value: *v,
+        });
+    }
+    Ok(())
+}
+
+/// The Euclidean length, without overflow of the squares.
+fn norm(v: &[f64; 3]) -> f64 {
+    v[0].hypot(v[1]).hypot(v[2])
+}
+
+fn integral_meaning(name: &str) -> &'static str {
+    match name {
+        "H1" => "the energy H1",
+        "H2" => "the integral H2",
+        "H3" => "Jellett's integral H3",
+        "H4" => "the integral H4 = |gamma|^2",
+        _ => "Routh's integral K",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::state::Normalise;
+    use crate::Body;
+
+    #[test]
+    fn a_huge_spin_names_the_energy() {
+        let body = Body::default();
+        let state = State::from_omega(&body, [0.0, 0.0, 1.0], [0.0, 0.0, 1e200], Normalise::Reject)
+            .unwrap();
+        let e = check_state(&body, &state).unwrap_err().to_string();
+        assert!(
+            e.contains("the spin |omega| = 1.000e200") && e.contains("energy"),
+            "{e}"
+        );
+        let fine = State::from_omega(&body, [0.0, 0.0, 1.0], [0.0, 0.0, 1e100], Normalise::Reject)
+            .unwrap();
+        check_state(&body, &fine).unwrap();
+    }
+
+    #[test]
+    fn a_huge_mass_names_the_inertia() {
+        let body = Body {
+            m: 1e300,
+            ..Body::default()
+        };
+        let e = check_body(&body).unwrap_err().to_string();
+        assert!(e.contains("m = 1e300") && e.contains("inertia"), "{e}");
+        check_body(&Body {
+            m: 1e50,
+            ..Body::default()
+        })
+        .unwrap();
+    }
+}

@@ -1,0 +1,444 @@
+//! Regression tests of issue 10, one per reproducer: never a wrong answer with exit 0, never
+//! a lost or clobbered file. Each was observed failing on the commit before the fix (ded9944)
+//! and passes after. The binary under test is `ROUTH_BIN` when set (to run these tests
+//! against another build), else this crate's.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+const DEFAULT: &str = routh::case::DEFAULT_CASE;
+
+fn binary() -> String {
+    std::env::var("ROUTH_BIN").unwrap_or_else(|_| env!("CARGO_BIN_EXE_routh").to_string())
+}
+
+fn routh(args: &[&str]) -> Output {
+    Command::new(binary())
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("routh-reliability-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Exit code 2, every `expected` piece in the message, no panic.
+fn refused(out: &Output, expected: &[&str]) {
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    for piece in expected {
+        assert!(err.contains(piece), "`{err}` lacks `{piece}`");
+    }
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+fn succeeded(out: &Output) -> String {
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    text(&out.stdout)
+}
+
+/// The names in `dir`.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+fn case_file(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+fn edited(old: &str, new: &str) -> String {
+    assert!(DEFAULT.contains(old), "the default case lacks {old}");
+    DEFAULT.replacen(old, new, 1)
+}
+
+#[test]
+fn huge_sample_counts_exit_2_before_any_file_is_made() {
+    let dir = scratch("huge-samples");
+    let out = dir.join("x.csv");
+    for n in ["18446744073709551615", "100000000000"] {
+        let run = routh(&["simulate", "--samples", n, "--out", out.to_str().unwrap()]);
+        refused(&run, &["samples", "10000000"]);
+        assert!(listing(&dir).is_empty(), "{n}: left {:?}", listing(&dir));
+    }
+    let run = routh(&[
+        "plot",
+        "--samples",
+        "18446744073709551615",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    refused(&run, &["samples", "1000000"]);
+}
+
+#[test]
+fn a_device_is_written_into_not_replaced() {
+    let run = routh(&["simulate", "--t-end", "1", "--out", "/dev/null"]);
+    succeeded(&run);
+    use std::os::unix::fs::FileTypeExt;
+    let kind = std::fs::metadata("/dev/null").unwrap().file_type();
+    assert!(kind.is_char_device(), "/dev/null is no longer a device");
+}
+
+#[test]
+fn a_symlink_is_written_through_and_stays() {
+    let dir = scratch("symlink");
+    let target = dir.join("real.csv");
+    let link = dir.join("link.csv");
+    std::fs::write(&target, "old").unwrap();
+    std::os::unix::fs::symlink("real.csv", &link).unwrap();
+    succeeded(&routh(&[
+        "simulate",
+        "--t-end",
+        "1",
+        "--samples",
+        "3",
+        "--out",
+        link.to_str().unwrap(),
+    ]));
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let csv = std::fs::read_to_string(&target).unwrap();
+    assert_eq!(csv.lines().count(), 4, "{csv}");
+    assert_eq!(listing(&dir), ["link.csv", "real.csv"]);
+}
+
+#[test]
+fn a_named_pipe_is_streamed_into() {
+    let dir = scratch("fifo");
+    let fifo = dir.join("pipe");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    succeeded(&routh(&[
+        "simulate",
+        "--t-end",
+        "1",
+        "--samples",
+        "5",
+        "--out",
+        fifo.to_str().unwrap(),
+    ]));
+    let received = reader.join().unwrap();
+    assert_eq!(received.lines().count(), 6, "{received}");
+    assert_eq!(listing(&dir), ["pipe"], "no temporary file beside the pipe");
+}
+
+/// Start a long `simulate --out`, wait until its temporary file exists, send `signal`, and
+/// check that it ends with the signal and leaves neither the temporary nor the target.
+fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
+    let dir = scratch(test);
+    let out = dir.join("x.csv");
+    let mut child = Command::new(binary())
+        .args([
+            "simulate",
+            "--t-end",
+            "1e6",
+            "--samples",
+            "1000000",
+            "--out",
+        ])
+        .arg(&out)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while !listing(&dir).iter().any(|n| n.contains(".tmp-")) {
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "no temporary file appeared"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(200));
+    let pid = child.id().to_string();
+    assert!(Command::new("kill")
+        .args([signal, &pid])
+        .status()
+        .unwrap()
+        .success());
+    let status = child.wait().unwrap();
+    assert!(!status.success(), "{status:?}");
+    assert!(
+        listing(&dir).is_empty(),
+        "{signal}: left {:?}",
+        listing(&dir)
+    );
+}
+
+#[test]
+fn sigint_removes_the_temporary_file() {
+    interrupted_run_leaves_nothing("-INT", "sigint");
+}
+
+#[test]
+fn sigterm_removes_the_temporary_file() {
+    interrupted_run_leaves_nothing("-TERM", "sigterm");
+}
+
+#[test]
+fn a_missing_directory_or_a_directory_target_exits_2() {
+    let dir = scratch("missing");
+    let missing = dir.join("no/such/dir/x.csv");
+    refused(
+        &routh(&[
+            "simulate",
+            "--t-end",
+            "1",
+            "--out",
+            missing.to_str().unwrap(),
+        ]),
+        &["no/such/dir"],
+    );
+    refused(
+        &routh(&["simulate", "--t-end", "1", "--out", dir.to_str().unwrap()]),
+        &["directory"],
+    );
+    assert!(listing(&dir).is_empty());
+}
+
+#[test]
+fn top_level_keys_and_unknown_tables_are_refused() {
+    let dir = scratch("unknown");
+    let top = case_file(&dir, "top.toml", &format!("t_end = 5\n{DEFAULT}"));
+    refused(
+        &routh(&["simulate", "--case", &top]),
+        &["`t_end`", "top level", "top.toml"],
+    );
+    let extra = case_file(&dir, "extra.toml", &format!("{DEFAULT}\n[extra]\nx = 1\n"));
+    for command in ["simulate", "exact", "steady"] {
+        refused(
+            &routh(&[command, "--case", &extra]),
+            &["[extra]", "extra.toml"],
+        );
+    }
+    let nested = case_file(
+        &dir,
+        "nested.toml",
+        &edited("[initial]", "[body.more]\nx = 1\n[initial]"),
+    );
+    refused(
+        &routh(&["simulate", "--case", &nested]),
+        &["more", "[body]", "nested.toml"],
+    );
+}
+
+#[test]
+fn integration_table_and_g_are_optional_with_the_stated_defaults() {
+    let dir = scratch("optional");
+    let bare = DEFAULT
+        .split("[integration]")
+        .next()
+        .unwrap()
+        .replace("G = 9.81\n", "");
+    let bare = case_file(&dir, "bare.toml", &bare);
+    let explicit = case_file(&dir, "explicit.toml", DEFAULT);
+    for command in ["exact", "steady"] {
+        succeeded(&routh(&[command, "--case", &bare]));
+    }
+    // Same t_end (100), tolerances (1e-12) and G (9.81): the same final state, bit for bit.
+    let json = |case: &str| -> serde_json::Value {
+        let out = succeeded(&routh(&[
+            "simulate", "--case", case, "--t-end", "3", "--json",
+        ]));
+        serde_json::from_str(&out).unwrap()
+    };
+    assert_eq!(json(&bare)["final_state"], json(&explicit)["final_state"]);
+    let full = succeeded(&routh(&[
+        "simulate",
+        "--case",
+        &bare,
+        "--method",
+        "rk4:100000",
+        "--json",
+    ]));
+    let full: serde_json::Value = serde_json::from_str(&full).unwrap();
+    assert_eq!(full["t_end"], 100.0);
+    // Negative control: a different G gives a different motion.
+    let moon = case_file(&dir, "moon.toml", &edited("G = 9.81", "G = 1.62"));
+    assert_ne!(json(&moon)["final_state"], json(&explicit)["final_state"]);
+}
+
+#[test]
+fn out_of_range_tolerances_are_refused_with_the_reason() {
+    let dir = scratch("tolerances");
+    for (rtol, reason) in [
+        ("1", "< 1e-2"),
+        ("0.01", "< 1e-2"),
+        ("1e-15", "100 machine epsilons"),
+    ] {
+        refused(&routh(&["simulate", "--rtol", rtol]), &["rtol", reason]);
+        let case = case_file(
+            &dir,
+            "tol.toml",
+            &edited("rtol = 1e-12", &format!("rtol = {rtol}")),
+        );
+        refused(
+            &routh(&["simulate", "--case", &case]),
+            &["rtol", reason, "tol.toml"],
+        );
+    }
+    succeeded(&routh(&["simulate", "--t-end", "1", "--rtol", "1e-13"]));
+    succeeded(&routh(&["simulate", "--t-end", "1", "--rtol", "5e-3"]));
+}
+
+#[test]
+fn max_steps_is_an_option_named_when_hit() {
+    refused(
+        &routh(&["simulate", "--t-end", "1000", "--max-steps", "100"]),
+        &["max_steps = 100", "--max-steps"],
+    );
+    refused(&routh(&["simulate", "--max-steps", "0"]), &["max_steps"]);
+    refused(
+        &routh(&["simulate", "--method", "rk4:1000", "--max-steps", "999"]),
+        &["rk4", "max_steps"],
+    );
+    succeeded(&routh(&[
+        "simulate",
+        "--t-end",
+        "10",
+        "--max-steps",
+        "100000",
+    ]));
+}
+
+#[test]
+fn samples_without_out_go_to_stdout_and_the_summary_to_stderr() {
+    let out = routh(&["simulate", "--t-end", "1", "--samples", "5"]);
+    let csv = succeeded(&out);
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 6, "{csv}");
+    assert!(lines[0].starts_with("t,gamma1"));
+    assert!(lines[5].starts_with("1,"), "{}", lines[5]);
+    assert!(text(&out.stderr).contains("samples written to standard output"));
+}
+
+#[test]
+fn zero_or_one_sample_is_refused_and_writes_nothing() {
+    let dir = scratch("zero-samples");
+    let out = dir.join("y.csv");
+    for n in ["0", "1"] {
+        refused(
+            &routh(&["simulate", "--samples", n, "--out", out.to_str().unwrap()]),
+            &["samples", ">= 2"],
+        );
+    }
+    assert!(listing(&dir).is_empty());
+}
+
+#[test]
+fn plot_refuses_csvs_it_cannot_draw() {
+    let dir = scratch("plot-csv");
+    let figures = dir.join("figures");
+    let good = dir.join("good.csv");
+    succeeded(&routh(&[
+        "simulate",
+        "--t-end",
+        "1",
+        "--samples",
+        "3",
+        "--full",
+        "--out",
+        good.to_str().unwrap(),
+    ]));
+    let good_text = std::fs::read_to_string(&good).unwrap();
+    let mut lines: Vec<String> = good_text.lines().map(str::to_string).collect();
+    let one_row = lines[..2].join("\n");
+    let mut nan = lines.clone();
+    let mut cells: Vec<&str> = lines[2].split(',').collect();
+    cells[1] = "NaN";
+    nan[2] = cells.join(",");
+    lines[3].push_str(",7");
+    for (name, content, expected) in [
+        ("one.csv", one_row, vec!["1 row(s)"]),
+        (
+            "nan.csv",
+            nan.join("\n"),
+            vec!["line 3", "column `gamma1`", "NaN"],
+        ),
+        ("ragged.csv", lines.join("\n"), vec!["line 4", "values for"]),
+    ] {
+        let path = dir.join(name);
+        std::fs::write(&path, content).unwrap();
+        for command in ["plot", "animate"] {
+            let out = routh(&[
+                command,
+                "--csv",
+                path.to_str().unwrap(),
+                "--out",
+                figures.to_str().unwrap(),
+            ]);
+            let mut pieces = expected.clone();
+            pieces.push(name);
+            refused(&out, &pieces);
+            assert_eq!(
+                text(&out.stderr).matches(name).count(),
+                1,
+                "the file named once"
+            );
+        }
+    }
+    assert!(!figures.exists(), "no figures drawn");
+    succeeded(&routh(&[
+        "plot",
+        "--csv",
+        good.to_str().unwrap(),
+        "--out",
+        figures.to_str().unwrap(),
+    ]));
+}
+
+#[test]
+fn overflow_is_named_with_its_cause() {
+    let dir = scratch("overflow");
+    let spin = case_file(
+        &dir,
+        "spin.toml",
+        &edited("omega = [0.5, 0.2, 8.0]", "omega = [0.0, 0.0, 1e200]"),
+    );
+    let heavy = case_file(&dir, "heavy.toml", &edited("m = 1.0", "m = 1e300"));
+    for command in ["simulate", "exact", "steady"] {
+        refused(
+            &routh(&[command, "--case", &spin]),
+            &["the spin |omega| = 1.000e200", "energy H1 overflow"],
+        );
+        refused(
+            &routh(&[command, "--case", &heavy]),
+            &["m = 1e300", "inertia", "overflow"],
+        );
+    }
+    // Negative control: a large spin whose energy is representable is accepted.
+    let fast = case_file(
+        &dir,
+        "fast.toml",
+        &edited("omega = [0.5, 0.2, 8.0]", "omega = [0.0, 0.0, 1e6]"),
+    );
+    for command in ["exact", "steady"] {
+        succeeded(&routh(&[command, "--case", &fast]));
+    }
+}
