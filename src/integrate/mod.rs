@@ -4,6 +4,7 @@
 //! * [`Dop853`]: the adaptive explicit Runge–Kutta pair 8(5,3) of Dormand &
 //!   Prince with Hairer's error estimator, step-size controller and 7th-order
 //!   dense output, following `dop853.f` of Hairer & Wanner;
+//! * [`Vern9`]: Verner's 9(8) pair with its 9th-order interpolant;
 //! * [`rk4`]: the classical fixed-step Runge–Kutta method of order 4;
 //! * [`solve`] and [`solve_dense`]: drivers with optional projection onto
 //!   invariant manifolds, event location and dense sampling;
@@ -11,10 +12,13 @@
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
+pub mod compensated;
 mod dop853;
 mod event;
 mod rk4;
 pub mod tableau;
+mod vern9;
+pub mod vern9_tableau;
 
 use std::fmt;
 use std::str::FromStr;
@@ -22,6 +26,7 @@ use std::str::FromStr;
 pub use dop853::{fixed_step_solve, Dop853};
 pub use event::brent;
 pub use rk4::rk4;
+pub use vern9::{vern9_fixed_step_solve, Vern9};
 
 /// A first-order system `y' = f(t, y)` of fixed dimension `N`, in plain `f64`.
 pub trait OdeSystem<const N: usize> {
@@ -107,6 +112,9 @@ pub struct Options {
     pub h_max: Option<f64>,
     /// Maximal number of attempted steps (accepted and rejected).
     pub max_steps: usize,
+    /// Sum the update `y + h sum b_i k_i` with compensation ([`compensated::compensated_add`]);
+    /// `false` gives the plain sum of the published codes (bit-for-bit comparisons with them).
+    pub compensated: bool,
 }
 
 impl Default for Options {
@@ -117,6 +125,7 @@ impl Default for Options {
             h_init: None,
             h_max: None,
             max_steps: 10_000_000,
+            compensated: true,
         }
     }
 }

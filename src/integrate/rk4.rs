@@ -1,9 +1,11 @@
 //! The classical Runge–Kutta method of order 4 with fixed steps.
 
+use super::compensated::compensated_add;
 use super::{OdeSystem, Stats};
 
 /// Integrates `sys` from `(t0, y0)` to `t_end` (forward or backward) with
-/// `steps` equal steps of the classical Runge–Kutta method of order 4, calling
+/// `steps` equal steps of the classical Runge–Kutta method of order 4 (the update summed with
+/// compensation, see [`compensated_add`]), calling
 /// `observer(t, &y)` after every step (not at `t0`). The last step ends exactly
 /// at `t_end`. Returns the final state and the work counters (4 right-hand-side
 /// calls per step). With `steps == 0` nothing is integrated and `y0` is returned.
@@ -20,6 +22,7 @@ pub fn rk4<S: OdeSystem<N>, const N: usize>(
         return (y, Stats::default());
     }
     let h = (t_end - t0) / steps as f64;
+    let mut carry = [0.0; N];
     let shifted = |y: &[f64; N], k: &[f64; N], c: f64| {
         let mut out = [0.0; N];
         for i in 0..N {
@@ -33,9 +36,8 @@ pub fn rk4<S: OdeSystem<N>, const N: usize>(
         let k2 = sys.rhs(t + 0.5 * h, &shifted(&y, &k1, 0.5 * h));
         let k3 = sys.rhs(t + 0.5 * h, &shifted(&y, &k2, 0.5 * h));
         let k4 = sys.rhs(t + h, &shifted(&y, &k3, h));
-        for i in 0..N {
-            y[i] += h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
-        }
+        let delta = std::array::from_fn(|i| h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]));
+        compensated_add(&mut y, &mut carry, &delta);
         let t_next = if n + 1 == steps {
             t_end
         } else {
