@@ -11,7 +11,8 @@
 //!   checked against it, and their final states' energy drift computed with it.
 //!
 //! * `work_precision plot RESULTS.json OUT_STEM`: draws the work–precision diagram (final
-//!   error against time, log–log, one panel per case) as `OUT_STEM.png` and `OUT_STEM.svg`.
+//!   error against time, log–log, one panel per case; the runs without compensated summation
+//!   are left out) as `OUT_STEM.png` and `OUT_STEM.svg`.
 //!
 //! Build with `cargo bench --bench work_precision --no-run`.
 
@@ -125,7 +126,14 @@ fn series(rows: &[serde_json::Value]) -> Series {
     let mut out: Series = vec![];
     for r in rows {
         let name = r["method"].as_str().expect("method").to_string();
-        let point = (r["time_s"].as_f64().expect("time"), r["error"].as_f64().expect("error"));
+        // The runs without compensated summation are for the table, not the diagram.
+        if name.ends_with("plain sum") {
+            continue;
+        }
+        let point = (
+            r["time_s"].as_f64().expect("time"),
+            r["error"].as_f64().expect("error"),
+        );
         match out.iter_mut().find(|(n, _)| *n == name) {
             Some((_, points)) => points.push(point),
             None => out.push((name, vec![point])),
@@ -149,8 +157,12 @@ where
     for (area, (case, data)) in panels.iter().zip(cases) {
         let all = series(data["rows"].as_array().expect("rows"));
         let pts = || all.iter().flat_map(|(_, p)| p.iter());
-        let (t0, t1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| (a.min(p.0), b.max(p.0)));
-        let (e0, e1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        let (t0, t1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+        let (e0, e1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.1), b.max(p.1))
+        });
         let mut chart = ChartBuilder::on(area)
             .caption(format!("{case}, t = 1000"), ("sans-serif", 22))
             .margin(12)
@@ -171,9 +183,14 @@ where
         for (k, (name, points)) in all.iter().enumerate() {
             let colour = colours[k % colours.len()];
             chart
-                .draw_series(LineSeries::new(points.iter().copied(), colour.stroke_width(2)))?
+                .draw_series(LineSeries::new(
+                    points.iter().copied(),
+                    colour.stroke_width(2),
+                ))?
                 .label(name.as_str())
-                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
             chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
         }
         chart
@@ -199,8 +216,14 @@ fn plot(results: &str, stem: &str) {
     let text = std::fs::read_to_string(results).expect("results file is readable");
     let results: serde_json::Value = serde_json::from_str(&text).expect("results are JSON");
     let size = (1500, 520);
-    draw(BitMapBackend::new(&format!("{stem}.png"), size).into_drawing_area(), &results)
-        .expect("PNG drawn");
-    draw(SVGBackend::new(&format!("{stem}.svg"), size).into_drawing_area(), &results)
-        .expect("SVG drawn");
+    draw(
+        BitMapBackend::new(&format!("{stem}.png"), size).into_drawing_area(),
+        &results,
+    )
+    .expect("PNG drawn");
+    draw(
+        SVGBackend::new(&format!("{stem}.svg"), size).into_drawing_area(),
+        &results,
+    )
+    .expect("SVG drawn");
 }
