@@ -24,7 +24,7 @@ use routh::poisson::lie_poisson::LiePoisson;
 use routh::poisson::reduction::{energy_spherical, integrals_in_l, theta_rate, PoissonMap};
 use routh::poisson::second::{g_eq3_coefficients, g_eq3_coefficients_h1};
 use routh::poisson::{Bivector, Matrix6, Reading};
-use routh::scalar::{dot, split, Scalar};
+use routh::scalar::{dot, split, Real};
 use routh::Body;
 
 const SAMPLE: Sample = Sample { seed: 7, count: 5 };
@@ -61,7 +61,7 @@ struct Tweaked<P> {
 }
 
 impl<P: Bivector> Bivector for Tweaked<P> {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let mut m = self.inner.entries(x);
         let (i, j) = self.entry;
         m[i][j] = m[i][j] * self.factor + self.shift;

@@ -6,7 +6,7 @@ use routh::audit::claims::{body, generic_first, Sample};
 use routh::poisson::lie_poisson::LiePoisson;
 use routh::poisson::schouten::{jacobi_defect, schouten, TRIPLES};
 use routh::poisson::{Bivector, Jet, Matrix6};
-use routh::scalar::{lift, Scalar};
+use routh::scalar::{lift, Real};
 
 fn points() -> Vec<[f64; 6]> {
     Sample {
@@ -40,7 +40,7 @@ fn lie_poisson_bivector_of_e3_is_poisson() {
 struct NotPoisson;
 
 impl Bivector for NotPoisson {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let mut p = [[lift::<D>(0.0); 6]; 6];
         p[0][1] = x[3];
         p[1][0] = -x[3];
@@ -74,7 +74,7 @@ fn twenty_distinct_triples() {
 struct Sum;
 
 impl Bivector for Sum {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let a = LiePoisson.entries(x);
         let b = generic_first(body()).entries(x);
         std::array::from_fn(|i| std::array::from_fn(|j| a[i][j] + b[i][j]))

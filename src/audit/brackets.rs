@@ -24,10 +24,10 @@ use crate::poisson::second::{
     g_eq3_coefficients, g_eq3_coefficients_h1, SecondAlphas, SecondBracket,
 };
 use crate::poisson::{norm, Bivector, Reading};
-use crate::scalar::Scalar;
+use crate::scalar::Real;
 
 /// The polar angle `theta = arccos(gamma3/|gamma|)` of (sph-coord).
-fn polar_angle<D: Scalar>(x: &[D; 6]) -> D {
+fn polar_angle<D: Real>(x: &[D; 6]) -> D {
     (x[2] / crate::integrals::geometric(x).sqrt()).acos()
 }
 
@@ -150,7 +150,7 @@ fn decomposition_outcome<P: Bivector>(
 }
 
 /// `H3^2 = (M, r)^2`, the Hamiltonian of (g-eq3) (`dH_3^2` read as `d(H3^2)`).
-pub fn jellett_squared<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
+pub fn jellett_squared<D: Real>(body: &Body, x: &[D; 6]) -> D {
     let h3 = jellett(body, x);
     h3 * h3
 }

@@ -23,7 +23,7 @@ use crate::integrals::{
 };
 use crate::poisson::first::{Alpha, Beta, FirstBracket, UserFunction};
 use crate::sampling::SplitMix64;
-use crate::scalar::{dot, split, Scalar};
+use crate::scalar::{dot, split, Real};
 use serde::Serialize;
 
 /// The largest relative residual of an OK claim.
@@ -253,7 +253,7 @@ pub fn h4(x: &[Dual6; 6]) -> Dual6 {
 
 /// The printed quadratic integral with gravity (int-g),
 /// `H2 = M^2 - m r^2 (omega, M) - 2 m G (a I1 gamma3 - m R^2 gamma^2 (a^2 + gamma^2 R^2))`.
-pub fn printed_h2_gravity<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
+pub fn printed_h2_gravity<D: Real>(body: &Body, x: &[D; 6]) -> D {
     let (gamma, _) = split(x);
     let g2 = dot(&gamma, &gamma);
     let inner = gamma[2] * (body.a * body.i1)

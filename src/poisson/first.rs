@@ -8,10 +8,10 @@
 
 use super::{from_blocks, Bivector, Matrix6};
 use crate::body::Body;
-use crate::scalar::{dot, lift, split, Scalar};
+use crate::scalar::{dot, lift, split, Real};
 
 /// A user-supplied function of one variable, given with its derivative. It is evaluated on any
-/// [`Scalar`] as its first-order Taylor jet at the real part, `f(t0) + f'(t0) (t - t0)`: exact in
+/// [`Real`] as its first-order Taylor jet at the real part, `f(t0) + f'(t0) (t - t0)`: exact in
 /// value and first derivatives, which is all the Schouten bracket, the Casimir tests and the
 /// brackets of functions need (second derivatives of a bivector built from it would be wrong).
 #[derive(Debug, Clone, Copy)]
@@ -24,7 +24,7 @@ pub struct UserFunction {
 
 impl UserFunction {
     /// The value at `t`, with the first derivatives of `t` carried through.
-    pub fn at<D: Scalar>(&self, t: D) -> D {
+    pub fn at<D: Real>(&self, t: D) -> D {
         let t0 = t.re();
         (t - t0) * (self.derivative)(t0) + (self.value)(t0)
     }
@@ -46,7 +46,7 @@ impl Alpha {
     }
 
     /// The value at gamma.
-    pub fn at<D: Scalar>(&self, gamma: &[D; 3]) -> D {
+    pub fn at<D: Real>(&self, gamma: &[D; 3]) -> D {
         let t = gamma[0] / gamma[1];
         match self {
             Alpha::Polynomial(c) => polynomial(c, t),
@@ -73,7 +73,7 @@ pub enum Beta {
 
 impl Beta {
     /// The value at gamma, for the given alpha.
-    pub fn at<D: Scalar>(&self, body: &Body, alpha: D, gamma: &[D; 3]) -> D {
+    pub fn at<D: Real>(&self, body: &Body, alpha: D, gamma: &[D; 3]) -> D {
         let g = body.routh_g(gamma);
         let r = body.contact_vector(gamma);
         match self {
@@ -95,11 +95,11 @@ impl Beta {
 }
 
 /// `I v = (I1 v1, I2 v2, I3 v3)`.
-pub fn inertia_times<D: Scalar>(body: &Body, v: &[D; 3]) -> [D; 3] {
+pub fn inertia_times<D: Real>(body: &Body, v: &[D; 3]) -> [D; 3] {
     [v[0] * body.i1, v[1] * body.i2, v[2] * body.i3]
 }
 
-fn polynomial<D: Scalar>(c: &[f64; 3], t: D) -> D {
+fn polynomial<D: Real>(c: &[f64; 3], t: D) -> D {
     t * t * c[2] + t * c[1] + c[0]
 }
 
@@ -153,7 +153,7 @@ impl FirstBracket {
     }
 
     /// The values `(alpha, beta)` at gamma.
-    pub fn alpha_beta<D: Scalar>(&self, gamma: &[D; 3]) -> (D, D) {
+    pub fn alpha_beta<D: Real>(&self, gamma: &[D; 3]) -> (D, D) {
         let alpha = self.alpha.at(gamma);
         (alpha, self.beta.at(&self.body, alpha, gamma))
     }
@@ -168,7 +168,7 @@ struct Common<D> {
     sigma: D,
 }
 
-impl<D: Scalar> Common<D> {
+impl<D: Real> Common<D> {
     fn at(body: &Body, x: &[D; 6]) -> Self {
         let (gamma, m) = split(x);
         let r = body.contact_vector(&gamma);
@@ -187,7 +187,7 @@ impl<D: Scalar> Common<D> {
 }
 
 impl Bivector for FirstBracket {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let b = &self.body;
         let (gamma, m) = split(x);
         let [g1, g2, g3] = gamma;

@@ -4,14 +4,14 @@
 //! of the Poisson map (p-map), (e3).
 
 use super::{from_blocks, Bivector, Matrix6};
-use crate::scalar::{lift, Scalar};
+use crate::scalar::{lift, Real};
 
 /// The canonical Lie-Poisson bivector P0 on e*(3), blocks `Gamma` and `M` as printed.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct LiePoisson;
 
 impl Bivector for LiePoisson {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let zero = lift::<D>(0.0);
         let [g1, g2, g3, m1, m2, m3] = *x;
         from_blocks(

@@ -8,7 +8,7 @@
 //! paper has a zero gamma-gamma block, so it is given by the block `Gamma_ij = {gamma_i, M_j}`
 //! and the three brackets `{M1, M2}, {M1, M3}, {M2, M3}` (see [`from_blocks`]).
 //!
-//! Entries are written once, generic over [`Scalar`]; their first derivatives, which the
+//! Entries are written once, generic over [`Real`]; their first derivatives, which the
 //! Schouten bracket needs, come from forward-mode automatic differentiation ([`Jet::at`]).
 
 pub mod first;
@@ -19,7 +19,7 @@ pub mod schouten;
 pub mod second;
 
 use crate::differential::Dual6;
-use crate::scalar::{lift, Scalar};
+use crate::scalar::{lift, Real};
 
 /// Which text of a formula to evaluate: as printed in the paper, or as corrected by the audit
 /// (each corrected formula documents what differs from the printed one).
@@ -38,13 +38,13 @@ pub type Matrix6<D> = [[D; 6]; 6];
 /// any scalar type (so that dual numbers give the derivatives of the same code).
 pub trait Bivector {
     /// The skew-symmetric matrix `P_ij(x)`.
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D>;
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D>;
 }
 
 /// The bivector with zero gamma-gamma block, the block `Gamma_ij = {gamma_i, M_j}` and the
 /// momentum brackets `m = [{M1, M2}, {M1, M3}, {M2, M3}]`: the block form of (p-bv) and (p-bv2),
 /// `P = ((0, Gamma), (-Gamma^T, M))`.
-pub fn from_blocks<D: Scalar>(gamma_block: [[D; 3]; 3], m: [D; 3]) -> Matrix6<D> {
+pub fn from_blocks<D: Real>(gamma_block: [[D; 3]; 3], m: [D; 3]) -> Matrix6<D> {
     let zero = lift::<D>(0.0);
     let mut p = [[zero; 6]; 6];
     for i in 0..3 {

@@ -8,7 +8,7 @@
 use super::first::FirstBracket;
 use super::{Bivector, Matrix6, Reading};
 use crate::differential::jacobian;
-use crate::scalar::{dot, split, Scalar};
+use crate::scalar::{dot, split, Real};
 
 /// The change of momenta (p-map) with the value `c = (L, gamma)` of the e*(3) Casimir.
 ///
@@ -25,7 +25,7 @@ pub struct PoissonMap {
 
 impl PoissonMap {
     /// The image `(gamma, L)` of `x = (gamma, M)`.
-    pub fn image<D: Scalar>(&self, x: &[D; 6]) -> [D; 6] {
+    pub fn image<D: Real>(&self, x: &[D; 6]) -> [D; 6] {
         let body = &self.bracket.body;
         let (gamma, m) = split(x);
         let [g1, g2, g3] = gamma;

@@ -7,7 +7,7 @@
 
 use super::{from_blocks, Bivector, Matrix6};
 use crate::body::Body;
-use crate::scalar::{dot, lift, split, Scalar};
+use crate::scalar::{dot, lift, split, Real};
 
 /// The three functions `alpha_i(gamma)` of (p-bv2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,7 +24,7 @@ pub enum SecondAlphas {
 
 impl SecondAlphas {
     /// `[alpha1, alpha2, alpha3]` at gamma.
-    pub fn at<D: Scalar>(&self, body: &Body, gamma: &[D; 3]) -> [D; 3] {
+    pub fn at<D: Real>(&self, body: &Body, gamma: &[D; 3]) -> [D; 3] {
         let [g1, g2, g3] = *gamma;
         match *self {
             SecondAlphas::Generic(c) => [g1 * g3 + c[0], -g2 * g2 + c[1], g1 * g2 + c[2]],
@@ -59,7 +59,7 @@ pub struct SecondBracket {
 }
 
 impl Bivector for SecondBracket {
-    fn entries<D: Scalar>(&self, x: &[D; 6]) -> Matrix6<D> {
+    fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let b = &self.body;
         let (gamma, m) = split(x);
         let [g1, g2, g3] = gamma;

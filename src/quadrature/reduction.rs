@@ -93,7 +93,7 @@ impl Reduction {
 
     /// `Q(u) = (du/dt)^2`, the reduced equation of the tilt (module docs).
     pub fn q<D: Scalar>(&self, u: D) -> D {
-        self.q_terms(u).iter().fold(D::zero(), |acc, &t| acc + t)
+        self.q_terms(u).iter().fold(crate::scalar::lift::<D>(0.0), |acc, &t| acc + t)
     }
 
     /// The terms whose sum is `Q(u)`; their magnitudes set the round-off scale of `Q`.
