@@ -15,7 +15,7 @@ import numpy.typing as npt
 __all__ = [
     "__version__", "MAX_VALUES", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
     "audit", "default_case", "load_case", "routh_threshold", "simulate", "steady_precessions",
-    "vertical_spin",
+    "sweep", "vertical_spin",
 ]
 __version__: str
 MAX_VALUES: int
@@ -233,6 +233,25 @@ def vertical_spin(body: Body, pole: float, spin: float) -> _Record: ...
 def steady_precessions(body: Body, theta: float, spin: float) -> list[_Record]: ...
 def routh_threshold(body: Body, pole: float) -> float: ...
 def audit(points: int = 20, seed: int = 1) -> list[_Record]: ...
+def sweep(
+    path: Optional[Union[str, PathLike[str]]] = None,
+    *,
+    text: Optional[str] = None,
+    t_end: Optional[float] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    method: str = "dop853",
+    threads: Optional[int] = None,
+    start: int = 0,
+    stop: Optional[int] = None,
+) -> Any:
+    """The runs `start <= run < stop` of the sweep in the case file `path` (or the case text
+    `text`), on `threads` threads (default: one per core), as a `pyarrow.Table`, one row per
+    run in the order of `run` (`.to_pandas()` for a DataFrame). The schema's metadata holds the
+    case text (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
+    `routh simulate` on its case, whatever the thread count or the slicing. The interpreter
+    lock is released while the runs are computed."""
+    ...
 def default_case() -> Tuple[Body, _FloatArray, float, float, float]: ...
 def load_case(
     path: Union[str, PathLike[str]]

@@ -10,14 +10,19 @@
 //!   last step, the state, the counters); [`drive`]: the one step loop, with dense
 //!   samples, projection onto invariant manifolds, event location and a per-step
 //!   observer that can stop the run; [`solve`] and [`solve_dense`] are two uses of it;
+//! * [`Vern9`]: Verner's 9(8) pair with its 9th-order interpolant (not yet a
+//!   [`Stepper`]: it has its own step loop, like [`Dop853`]'s fixed-step solver);
 //! * [`brent`]: a bracketing scalar root finder.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
+pub mod compensated;
 mod dop853;
 mod event;
 mod rk4;
 pub mod tableau;
+mod vern9;
+pub mod vern9_tableau;
 
 use std::fmt;
 use std::str::FromStr;
@@ -25,6 +30,7 @@ use std::str::FromStr;
 pub use dop853::{fixed_step_solve, Dop853};
 pub use event::brent;
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
+pub use vern9::{vern9_fixed_step_solve, Vern9};
 
 /// A first-order system `y' = f(t, y)` of fixed dimension `N`, in plain `f64`.
 pub trait OdeSystem<const N: usize> {
@@ -117,6 +123,9 @@ pub struct Options {
     pub h_max: Option<f64>,
     /// Maximal number of attempted steps (accepted and rejected).
     pub max_steps: usize,
+    /// Sum the update `y + h sum b_i k_i` with compensation ([`compensated::compensated_add`]);
+    /// `false` gives the plain sum of the published codes (bit-for-bit comparisons with them).
+    pub compensated: bool,
 }
 
 impl Default for Options {
@@ -127,6 +136,7 @@ impl Default for Options {
             h_init: None,
             h_max: None,
             max_steps: 10_000_000,
+            compensated: true,
         }
     }
 }

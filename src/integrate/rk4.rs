@@ -1,6 +1,7 @@
 //! The classical Runge–Kutta method of order 4 with fixed steps, as a table
 //! (Butcher tableau and continuous extension) and a [`Stepper`].
 
+use super::compensated::compensated_add;
 use super::{IntegrateError, OdeSystem, Stats, Stepper};
 
 /// Nodes `c_i` of the classical Runge–Kutta method.
@@ -39,6 +40,9 @@ pub struct Rk4<'a, S, const N: usize> {
     y: [f64; N],
     t_prev: f64,
     y_prev: [f64; N],
+    /// Rounding residue of the compensated update ([`compensated_add`]; zero after
+    /// [`Stepper::set_state`]).
+    carry: [f64; N],
     k: [[f64; N]; 4],
     stats: Stats,
 }
@@ -62,6 +66,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Rk4<'a, S, N> {
             y: y0,
             t_prev: t0,
             y_prev: y0,
+            carry: [0.0; N],
             k: [[0.0; N]; 4],
             stats: Stats::default(),
         }
@@ -88,10 +93,9 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
             self.k[i] = self.sys.rhs(t + RK4_C[i] * h, &yi);
         }
         let mut y_new = y;
-        for c in 0..N {
-            let inc = (0..4).fold(0.0, |acc, i| acc + RK4_B[i] * self.k[i][c]);
-            y_new[c] += h * inc;
-        }
+        let delta: [f64; N] =
+            std::array::from_fn(|c| h * (0..4).fold(0.0, |acc, i| acc + RK4_B[i] * self.k[i][c]));
+        compensated_add(&mut y_new, &mut self.carry, &delta);
         self.stats.rhs_evals += 4;
         self.stats.steps += 1;
         self.done_steps += 1;
@@ -143,6 +147,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
 
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
+        self.carry = [0.0; N];
     }
 
     fn stats(&self) -> Stats {

@@ -1,0 +1,229 @@
+//! Our side of the work–precision benchmark (`bench/work_precision/run.py` drives it).
+//!
+//! * `work_precision run CASE METHOD TOL REPEAT`: integrates the case file to t = 1000 with
+//!   METHOD (`dop853` or `vern9`; `dop853-plain`, `vern9-plain` without compensated
+//!   summation of the update) at rtol = atol = TOL, REPEAT times, and prints one JSON
+//!   object: the minimum wall time of the integration (constructor and steps; no samples, no
+//!   projection), the final state, the step and field-evaluation counts and the relative
+//!   drift of the energy H1 at the end.
+//! * `work_precision eval CASE`: reads states (six numbers a line) from stdin and prints, a
+//!   line each, the field (mg-eq) and the energy H1 there: the peers' right-hand sides are
+//!   checked against it, and their final states' energy drift computed with it.
+//!
+//! * `work_precision plot RESULTS.json OUT_STEM`: draws the work–precision diagram (final
+//!   error against time, log–log, one panel per case; the runs without compensated summation
+//!   are left out) as `OUT_STEM.png` and `OUT_STEM.svg`.
+//!
+//! Build with `cargo bench --bench work_precision --no-run`.
+
+use routh::case::Case;
+use routh::field::vector_field;
+use routh::integrals::Integrals;
+use routh::integrate::{Dop853, IntegrateError, Options, Stats, Vern9};
+use std::io::BufRead;
+use std::path::Path;
+use std::time::Instant;
+
+const T_END: f64 = 1000.0;
+
+fn energy(case: &Case, x: &[f64; 6]) -> f64 {
+    Integrals::at(&case.body, x).values()[0].expect("H1 is always tracked")
+}
+
+/// Integrates to `T_END` with a stepper that has `step`, `y` and `stats`.
+macro_rules! integrate {
+    ($stepper:ident, $sys:expr, $x0:expr, $opts:expr) => {{
+        let mut s = $stepper::new($sys, 0.0, $x0, T_END, $opts)?;
+        while !s.step()? {}
+        Ok::<_, IntegrateError>((*s.y(), s.stats()))
+    }};
+}
+
+fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), IntegrateError> {
+    let body = &case.body;
+    let sys = |_t: f64, x: &[f64; 6]| vector_field::<f64>(body, x);
+    let x0 = case.initial.to_array();
+    // "-plain": the update summed without compensation, to measure what compensation gains.
+    let (name, compensated) = match method.strip_suffix("-plain") {
+        Some(name) => (name, false),
+        None => (method, true),
+    };
+    let opts = Options {
+        rtol: tol,
+        atol: tol,
+        compensated,
+        ..Options::default()
+    };
+    match name {
+        "dop853" => integrate!(Dop853, &sys, x0, &opts),
+        "vern9" => integrate!(Vern9, &sys, x0, &opts),
+        other => panic!("unknown method {other:?}: expected dop853 or vern9 (optionally -plain)"),
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| a != "--bench")
+        .collect();
+    let usage = "usage: work_precision run CASE METHOD TOL REPEAT | eval CASE";
+    if args.first().map(String::as_str) == Some("plot") {
+        return plot(&args[1], &args[2]);
+    }
+    let case = Case::from_file(Path::new(args.get(1).expect(usage))).expect("a valid case file");
+    match args[0].as_str() {
+        "run" => {
+            let method = args[2].as_str();
+            let tol: f64 = args[3].parse().expect("TOL is a number");
+            let repeat: usize = args[4].parse().expect("REPEAT is a count");
+            let mut best = f64::INFINITY;
+            let mut result = None;
+            for _ in 0..repeat {
+                let start = Instant::now();
+                let r = run(&case, method, tol);
+                best = best.min(start.elapsed().as_secs_f64());
+                result = Some(r);
+            }
+            match result.expect("REPEAT >= 1") {
+                Ok((x, stats)) => {
+                    let h0 = energy(&case, &case.initial.to_array());
+                    let drift = ((energy(&case, &x) - h0) / h0).abs();
+                    println!(
+                        "{}",
+                        serde_json::json!({
+                            "time_s": best, "final": x, "steps": stats.steps,
+                            "rejected": stats.rejected, "rhs_evals": stats.rhs_evals,
+                            "energy_drift": drift,
+                        })
+                    );
+                }
+                Err(e) => println!("{}", serde_json::json!({ "error": e.to_string() })),
+            }
+        }
+        "eval" => {
+            for line in std::io::stdin().lock().lines() {
+                let v: Vec<f64> = line
+                    .expect("stdin is readable")
+                    .split_whitespace()
+                    .map(|s| s.parse().expect("a number"))
+                    .collect();
+                let x: [f64; 6] = v.try_into().expect("six numbers a line");
+                let f = vector_field::<f64>(&case.body, &x);
+                println!(
+                    "{}",
+                    serde_json::json!({ "field": f, "energy": energy(&case, &x) })
+                );
+            }
+        }
+        _ => panic!("{usage}"),
+    }
+}
+
+/// One series of the diagram: a method's (time, error) points over the tolerances.
+type Series = Vec<(String, Vec<(f64, f64)>)>;
+
+fn series(rows: &[serde_json::Value]) -> Series {
+    let mut out: Series = vec![];
+    for r in rows {
+        let name = r["method"].as_str().expect("method").to_string();
+        // The runs without compensated summation are for the table, not the diagram.
+        if name.ends_with("plain sum") {
+            continue;
+        }
+        let point = (
+            r["time_s"].as_f64().expect("time"),
+            r["error"].as_f64().expect("error"),
+        );
+        match out.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, points)) => points.push(point),
+            None => out.push((name, vec![point])),
+        }
+    }
+    out
+}
+
+fn draw<DB: plotters::prelude::DrawingBackend>(
+    root: plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    results: &serde_json::Value,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    use plotters::prelude::*;
+    root.fill(&WHITE)?;
+    let cases = results["cases"].as_object().expect("cases");
+    let panels = root.split_evenly((1, cases.len()));
+    let colours = [RED, BLUE, BLACK, MAGENTA, RGBColor(0, 150, 0), CYAN];
+    for (area, (case, data)) in panels.iter().zip(cases) {
+        let all = series(data["rows"].as_array().expect("rows"));
+        let pts = || all.iter().flat_map(|(_, p)| p.iter());
+        let (t0, t1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+        let (e0, e1) = pts().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.1), b.max(p.1))
+        });
+        let mut chart = ChartBuilder::on(area)
+            .caption(format!("{case}, t = 1000"), ("sans-serif", 22))
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(70)
+            .build_cartesian_2d(
+                (t0 / 1.5..t1 * 1.5).log_scale(),
+                (e0.max(1e-16) / 3.0..e1 * 3.0).log_scale(),
+            )?;
+        chart
+            .configure_mesh()
+            .x_desc("wall time [s]")
+            .y_desc("final-state error")
+            .x_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .label_style(("sans-serif", 14))
+            .draw()?;
+        for (k, (name, points)) in all.iter().enumerate() {
+            let colour = colours[k % colours.len()];
+            chart
+                .draw_series(LineSeries::new(
+                    points.iter().copied(),
+                    colour.stroke_width(2),
+                ))?
+                .label(name.as_str())
+                .legend(move |(x, y)| {
+                    PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
+            chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .label_font(("sans-serif", 14))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+fn plot(results: &str, stem: &str) {
+    use plotters::prelude::*;
+    plotters::style::register_font(
+        "sans-serif",
+        FontStyle::Normal,
+        include_bytes!("../assets/DejaVuSans.ttf"),
+    )
+    .unwrap_or_else(|_| panic!("the shipped DejaVu Sans parses"));
+    let text = std::fs::read_to_string(results).expect("results file is readable");
+    let results: serde_json::Value = serde_json::from_str(&text).expect("results are JSON");
+    let size = (1500, 520);
+    draw(
+        BitMapBackend::new(&format!("{stem}.png"), size).into_drawing_area(),
+        &results,
+    )
+    .expect("PNG drawn");
+    draw(
+        SVGBackend::new(&format!("{stem}.svg"), size).into_drawing_area(),
+        &results,
+    )
+    .expect("SVG drawn");
+}
