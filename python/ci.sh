@@ -38,8 +38,9 @@ PY
 # the example type-checks against it.
 (cd "$root/target" && "$venv/bin/python" -m mypy.stubtest routh --allowlist "$root/python/stubtest-allowlist.txt")
 "$venv/bin/python" -m mypy --ignore-missing-imports "$root/python/examples/nutation.py"
-# The audit test compares with the command-line tool's JSON.
-(cd "$root" && cargo build --release --bin routh)
+# The audit test compares with the command-line tool's JSON; the sweep test reads its Parquet
+# output back, so the binary keeps the `parquet` feature that .ci/run built it with.
+(cd "$root" && cargo build --release --bin routh --features parquet)
 status=0
 (cd "$root" && "$venv/bin/python" -m pytest -p no:cacheprovider -q python/tests) || status=$?
 if [ "$status" -eq 5 ]; then
