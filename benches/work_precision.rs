@@ -19,7 +19,7 @@
 use routh::case::Case;
 use routh::field::vector_field;
 use routh::integrals::Integrals;
-use routh::integrate::{Dop853, IntegrateError, Options, Stats, Vern9};
+use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Vern9};
 use std::io::BufRead;
 use std::path::Path;
 use std::time::Instant;
@@ -27,7 +27,7 @@ use std::time::Instant;
 const T_END: f64 = 1000.0;
 
 fn energy(case: &Case, x: &[f64; 6]) -> f64 {
-    Integrals::at(&case.body, x).values()[0].expect("H1 is always tracked")
+    Integrals::at(&case.ball, x).values()[0].expect("H1 is always tracked")
 }
 
 /// Integrates to `T_END` with a stepper that has `step`, `y` and `stats`.
@@ -40,7 +40,7 @@ macro_rules! integrate {
 }
 
 fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), IntegrateError> {
-    let body = &case.body;
+    let body = &case.ball;
     let sys = |_t: f64, x: &[f64; 6]| vector_field::<f64>(body, x);
     let x0 = case.initial.to_array();
     // "-plain": the update summed without compensation, to measure what compensation gains.
@@ -108,7 +108,7 @@ fn main() {
                     .map(|s| s.parse().expect("a number"))
                     .collect();
                 let x: [f64; 6] = v.try_into().expect("six numbers a line");
-                let f = vector_field::<f64>(&case.body, &x);
+                let f = vector_field::<f64>(&case.ball, &x);
                 println!(
                     "{}",
                     serde_json::json!({ "field": f, "energy": energy(&case, &x) })

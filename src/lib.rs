@@ -30,6 +30,8 @@
 //! # Ok::<(), routh::RouthError>(())
 //! ```
 #![warn(missing_docs)]
+// Checks are written `!(x <= limit)` on purpose, so that a NaN fails them too.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 #[cfg(feature = "io")]
 pub mod animate;
@@ -48,8 +50,8 @@ pub mod output;
 pub mod plot;
 pub mod problem;
 pub mod projection;
-pub mod range;
 pub mod quadrature;
+pub mod range;
 pub mod sampling;
 pub mod scalar;
 pub mod simulate;

@@ -53,7 +53,10 @@ pub fn check_body(body: &impl AsBall) -> Result<()> {
     let weight = body.m * body.gravity * r_max;
     if !weight.is_finite() {
         return Err(RouthError::Overflow {
-            cause: format!("m = {:?}, G = {:?}, R + |com| = {r_max:?}", body.m, body.gravity),
+            cause: format!(
+                "m = {:?}, G = {:?}, R + |com| = {r_max:?}",
+                body.m, body.gravity
+            ),
             quantity: "the potential energy m G (r, gamma)",
             direction: "overflow",
             value: weight,

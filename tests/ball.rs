@@ -80,7 +80,7 @@ fn every_ball_conserves_energy_and_h4() {
         for x in points(5) {
             for (name, rate) in [
                 ("H1", relative_rate(|y| energy(&ball, y), &ball, &x)),
-                ("H4", relative_rate(|y| geometric(y), &ball, &x)),
+                ("H4", relative_rate(geometric, &ball, &x)),
             ] {
                 assert!(rate < 1e-12, "{name} of {ball:?} at {x:?}: {rate:e}");
             }
@@ -135,8 +135,8 @@ fn chaplygin_ball_integrals_and_invariant_measure() {
     for ball in chaplygin_balls() {
         for x in points(13) {
             for (name, rate) in [
-                ("(M, M)", relative_rate(|y| momentum_squared(y), &ball, &x)),
-                ("(M, gamma)", relative_rate(|y| area_integral(y), &ball, &x)),
+                ("(M, M)", relative_rate(momentum_squared, &ball, &x)),
+                ("(M, gamma)", relative_rate(area_integral, &ball, &x)),
             ] {
                 assert!(rate < 1e-12, "{name} of {ball:?} at {x:?}: {rate:e}");
             }
@@ -163,7 +163,7 @@ fn chaplygin_ball_integrals_and_invariant_measure() {
         };
         let rate = points(13)
             .iter()
-            .map(|x| relative_rate(|y| momentum_squared(y), &shifted, x))
+            .map(|x| relative_rate(momentum_squared, &shifted, x))
             .fold(0.0, f64::max);
         assert!(
             rate > 1e-6,

@@ -35,11 +35,12 @@ fn rooted_trees(max_order: usize) -> Vec<Tree> {
                 });
                 continue;
             }
-            for c in 0..count.min(max_index.saturating_add(1)) {
-                if sum + trees[c].order <= n - 1 {
+            let limit = count.min(max_index.saturating_add(1));
+            for (c, tree) in trees.iter().enumerate().take(limit) {
+                if sum + tree.order < n {
                     let mut next = children.clone();
                     next.push(c);
-                    stack.push((next, sum + trees[c].order, c));
+                    stack.push((next, sum + tree.order, c));
                 }
             }
         }

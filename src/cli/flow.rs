@@ -3,11 +3,11 @@
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
 use super::exact::{csv_row, Args, EXACT_COLUMNS};
-use routh::table::csv_header;
 use routh::case::{check_option, Case};
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::poisson::flows::{Field, Flow};
+use routh::table::csv_header;
 use routh::{Result, RouthError, State};
 use serde::Serialize;
 use std::io::Write;

@@ -120,11 +120,10 @@ pub fn run(args: Args) -> Result<()> {
     let todo: Vec<u64> = (0..sweep.runs()).filter(|k| !done.contains(k)).collect();
     let stop = Arc::new(AtomicBool::new(false));
     let flag = stop.clone();
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .map_err(|e| RouthError::Io {
-            path: "<signal handler>".into(),
-            source: std::io::Error::other(e),
-        })?;
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).map_err(|e| RouthError::Io {
+        path: "<signal handler>".into(),
+        source: std::io::Error::other(e),
+    })?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.threads.unwrap_or(0))
         .build()

@@ -431,6 +431,8 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
         self.t_prev
     }
 
+    // The size of the last accepted step is `h_last`; `h` is the proposal for the next one.
+    #[allow(clippy::misnamed_getters)]
     fn h(&self) -> f64 {
         self.h_last
     }

@@ -268,6 +268,13 @@ pub trait Stepper<const N: usize> {
     fn stats(&self) -> Stats;
 }
 
+/// The sample callback of [`drive`]: `on_sample(t, y)` at each requested sample time.
+pub type OnSample<'a, E, const N: usize> = dyn FnMut(f64, &[f64; N]) -> Result<(), E> + 'a;
+
+/// The per-step observer of [`drive`]: `on_step(t, y, stepper)` after each accepted step.
+pub type OnStep<'a, St, E, const N: usize> =
+    dyn FnMut(f64, &[f64; N], &St) -> Result<Control, E> + 'a;
+
 /// What the per-step observer of [`drive`] asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Control {
@@ -347,8 +354,8 @@ pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), Integra
 pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
     stepper: &mut St,
     run: &Drive<'_, N>,
-    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<(), E>,
-    on_step: &mut dyn FnMut(f64, &[f64; N], &St) -> Result<Control, E>,
+    on_sample: &mut OnSample<'_, E, N>,
+    on_step: &mut OnStep<'_, St, E, N>,
 ) -> Result<Outcome<N>, E> {
     let (t0, t_end, y0) = (stepper.t(), stepper.t_end(), *stepper.y());
     let dir = if t_end >= t0 { 1.0 } else { -1.0 };

@@ -153,6 +153,9 @@ pub struct Nutation {
 }
 
 /// The motion of a given initial state, solved by quadrature.
+// One `Motion` per solution, built once: boxing the nutation would cost an indirection on
+// every state evaluation and save nothing that matters.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum Motion {
     /// A steady motion: theta constant, the state rotating about e3 at the constant rate

@@ -320,7 +320,7 @@ mod tests {
         for k in 0..n as u64 {
             seen[(u.point(k)[0] / 2.0 * n as f64) as usize] += 1;
         }
-        assert!(seen.iter().any(|&c| c == 0));
+        assert!(seen.contains(&0));
     }
 
     /// Uniform points: the mean and variance of 20,000 points of [0, 1) within 5 standard

@@ -95,12 +95,10 @@ impl Sweep {
             max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
         };
         crate::simulate::validate(&settings)?;
-        let table: toml::Table = case
-            .extra_table(&"sweep")?
-            .ok_or_else(|| RouthError::Case {
-                file: source.to_string(),
-                message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
-            })?;
+        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| RouthError::Case {
+            file: source.to_string(),
+            message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
+        })?;
         let refused = |e: Refusal| RouthError::Case {
             file: source.to_string(),
             message: e.to_string(),

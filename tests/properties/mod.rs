@@ -6,12 +6,12 @@
 #![allow(dead_code)]
 
 use routh::body::Body;
-use routh::AsBall;
 use routh::case::Case;
 use routh::integrals::Integrals;
 use routh::quadrature::ExactSolution;
 use routh::state::{Normalise, State};
 use routh::table::{Table, OPTIONAL_COLUMNS};
+use routh::AsBall;
 
 /// Values that sit on the edges of the rules and of f64.
 const SPECIAL: [f64; 16] = [
@@ -163,7 +163,11 @@ fn exact(body: &Body, state: &State, t: f64) {
         assert!(period.is_finite() && period > 0.0, "period {period}");
     }
     // The command refuses a non-finite t; a finite one is kept within the range tried.
-    let t = if t.is_finite() { t.clamp(-1e6, 1e6) } else { 0.0 };
+    let t = if t.is_finite() {
+        t.clamp(-1e6, 1e6)
+    } else {
+        0.0
+    };
     for time in [0.0, 1.0, t] {
         let s = solution.state_at(time);
         assert!(
