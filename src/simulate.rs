@@ -85,14 +85,17 @@ pub struct Summary {
     pub elapsed_s: f64,
 }
 
-struct DriftTracker {
+/// The drift of the integrals along a run: their values at the start, at the last state seen,
+/// and the largest relative change (the `integrals` of a [`Summary`]).
+pub struct DriftTracker {
     initial: [Option<f64>; 7],
     max: [f64; 7],
     last: [Option<f64>; 7],
 }
 
 impl DriftTracker {
-    fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+    /// Starts at `x0`.
+    pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let initial = Integrals::at(body, x0).all();
         DriftTracker {
             initial,
@@ -101,7 +104,8 @@ impl DriftTracker {
         }
     }
 
-    fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+    /// Looks at the state `x`.
+    pub fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
         self.last = Integrals::at(body, x).all();
         for i in 0..7 {
             if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
@@ -111,7 +115,8 @@ impl DriftTracker {
         }
     }
 
-    fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
+    /// The drift of each integral so far.
+    pub fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
         (0..7)
             .filter_map(|i| {
                 Some((
