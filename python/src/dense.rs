@@ -98,7 +98,7 @@ impl DenseOutput {
                     // One RK4 step of the stored size, or the DOP853 step of that size.
                     let method = match self.method {
                         Method::Rk4 { .. } => Method::Rk4 { steps: 1 },
-                        Method::Dop853 => Method::Dop853,
+                        other => other,
                     };
                     let stepper = Stepper::new(
                         sys,

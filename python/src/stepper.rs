@@ -4,7 +4,7 @@
 //! non-finite state after a step.
 
 use routh_core::integrate::{
-    Dop853, IntegrateError, Method, OdeSystem, Options, Rk4, Stats, Stepper as LibraryStepper,
+    stepper, IntegrateError, Method, OdeSystem, Options, Stats, Stepper as LibraryStepper,
 };
 
 /// The integrator of a run.
@@ -24,18 +24,13 @@ impl<'a, const N: usize> Stepper<'a, N> {
         atol: f64,
         h_init: Option<f64>,
     ) -> Result<Self, IntegrateError> {
-        Ok(Stepper(match method {
-            Method::Dop853 => {
-                let opts = Options {
-                    rtol,
-                    atol,
-                    h_init,
-                    ..Options::default()
-                };
-                Box::new(Dop853::new(sys, t0, y0, t_end, &opts)?)
-            }
-            Method::Rk4 { steps } => Box::new(Rk4::new(sys, t0, y0, t_end, steps)),
-        }))
+        let opts = Options {
+            rtol,
+            atol,
+            h_init,
+            ..Options::default()
+        };
+        Ok(Stepper(stepper(method, sys, t0, y0, t_end, &opts)?))
     }
 
     /// One accepted step; `Ok(true)` once `t_end` is reached (at once when `t_end = t0`).
