@@ -5,9 +5,10 @@ use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::taylor::Var;
 use crate::integrate::{
-    check_samples, drive, Control, Dop853, Drive, EventFn, IntegrateError, Method, OdeSystem,
-    Options, Projection, Rk4, Stepper, Stop,
+    check_samples, drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem,
+    Options, Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -84,14 +85,17 @@ pub struct Summary {
     pub elapsed_s: f64,
 }
 
-struct DriftTracker {
+/// The drift of the integrals along a run: their values at the start, at the last state seen,
+/// and the largest relative change (the `integrals` of a [`Summary`]).
+pub struct DriftTracker {
     initial: [Option<f64>; 7],
     max: [f64; 7],
     last: [Option<f64>; 7],
 }
 
 impl DriftTracker {
-    fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+    /// Starts at `x0`.
+    pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let initial = Integrals::at(body, x0).all();
         DriftTracker {
             initial,
@@ -100,7 +104,8 @@ impl DriftTracker {
         }
     }
 
-    fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+    /// Looks at the state `x`.
+    pub fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
         self.last = Integrals::at(body, x).all();
         for i in 0..7 {
             if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
@@ -110,7 +115,8 @@ impl DriftTracker {
         }
     }
 
-    fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
+    /// The drift of each integral so far.
+    pub fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
         (0..7)
             .filter_map(|i| {
                 Some((
@@ -362,18 +368,13 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
     let x0 = reduced(&y0);
     let level = settings.project.then(|| LevelSet::through(body, &x0));
     let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
-    let mut stepper: Box<dyn Stepper<N> + '_> = match settings.method {
-        Method::Dop853 => {
-            let opts = Options {
-                rtol: settings.rtol,
-                atol: settings.atol,
-                max_steps: settings.max_steps,
-                ..Options::default()
-            };
-            Box::new(Dop853::new(sys, t0, y0, t1, &opts)?)
-        }
-        Method::Rk4 { steps } => Box::new(Rk4::new(sys, t0, y0, t1, steps)),
+    let opts = Options {
+        rtol: settings.rtol,
+        atol: settings.atol,
+        max_steps: settings.max_steps,
+        ..Options::default()
     };
+    let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts)?;
     let plan = Drive {
         samples,
         project: level.is_some().then_some(&project as Projection<'_, N>),
@@ -436,7 +437,7 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
     let stats = stepper.stats();
     Ok(Observed {
         summary: Summary {
-            method: settings.method.to_string(),
+            method: settings.method.resolve(settings.rtol.min(settings.atol)).to_string(),
             t_end: t1,
             steps: stats.steps,
             rejected: stats.rejected,
@@ -462,5 +463,9 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
         crate::field::vector_field(self.0, y)
+    }
+
+    fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
+        Some(crate::field::vector_field(self.0, y))
     }
 }
