@@ -605,9 +605,11 @@ impl<const N: usize> Tape<N> {
     /// Order 0 of every operation: the `f64` operations of the field themselves.
     #[inline(always)]
     fn order_zero(&mut self) {
-        for j in 0..self.code.len() {
-            let c = &self.coef;
-            let value = match self.code[j] {
+        // Slices held in locals: the stores below cannot make the compiler reload them.
+        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
+        let (stride, top) = (self.stride, self.max_order);
+        for (j, instr) in code.iter().enumerate() {
+            let value = match *instr {
                 Instr::Add(a, b) => c[a as usize] + c[b as usize],
                 Instr::Sub(a, b) => c[a as usize] - c[b as usize],
                 Instr::Mul(a, b) => c[a as usize] * c[b as usize],
@@ -630,7 +632,9 @@ impl<const N: usize> Tape<N> {
                 Instr::MulMinus(a, b, d) => c[a as usize] * c[b as usize] - c[d as usize],
                 Instr::MinusMul(d, a, b) => c[d as usize] - c[a as usize] * c[b as usize],
             };
-            self.set(self.first_op + j, 0, value);
+            let dest = (self.first_op + j) * stride;
+            c[dest] = value;
+            r[dest + top] = value;
         }
     }
 
@@ -643,12 +647,13 @@ impl<const N: usize> Tape<N> {
         let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
         // Start of the reversed run of orders k, k-1, ..., 0 within a slot.
         let back = self.max_order - k;
-        for j in 0..self.code.len() {
-            let (c, r) = (&self.coef, &self.rev);
-            let dest = (self.first_op + j) * stride;
+        // Slices held in locals: the stores below cannot make the compiler reload them.
+        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
+        let mut dest = self.first_op * stride;
+        for instr in code {
             let fwd = |a: usize| &c[a..a + len];
             let rwd = |a: usize| &r[a + back..a + back + len];
-            let value = match self.code[j] {
+            let value = match *instr {
                 Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
                 Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
                 Instr::Neg(a) | Instr::CSub(_, a) => -c[a as usize + k],
@@ -691,8 +696,9 @@ impl<const N: usize> Tape<N> {
                     (c[a as usize + k] - dot::<0, FMA>(w, w_rev)) / (2.0 * c[dest])
                 }
             };
-            self.coef[dest + k] = value;
-            self.rev[dest + back] = value;
+            c[dest + k] = value;
+            r[dest + back] = value;
+            dest += stride;
         }
     }
 }
