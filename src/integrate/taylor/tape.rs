@@ -477,8 +477,8 @@ impl<const N: usize> Tape<N> {
         self.code.is_empty()
     }
 
-    /// Number of products, quotients and square roots (the operations of cost `O(k)` at order
-    /// `k`).
+    /// Number of instructions with a product, quotient or square root (the operations of cost
+    /// `O(k)` at order `k`).
     pub fn nonlinear_len(&self) -> usize {
         self.code
             .iter()
@@ -490,6 +490,11 @@ impl<const N: usize> Tape<N> {
                         | Instr::Sqrt(..)
                         | Instr::MulAdd(..)
                         | Instr::CDiv(..)
+                        | Instr::DotAdd(..)
+                        | Instr::DotSub(..)
+                        | Instr::MulPlus(..)
+                        | Instr::MulMinus(..)
+                        | Instr::MinusMul(..)
                 )
             })
             .count()
