@@ -30,7 +30,7 @@ pub mod vern9_tableau;
 use std::fmt;
 use std::str::FromStr;
 
-pub use dop853::{fixed_step_solve, Dop853};
+pub use dop853::{fixed_step_solve, hinit, Dop853};
 pub use event::brent;
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 pub use taylor::Taylor;
