@@ -76,19 +76,21 @@ fn lanes<const L: usize>(
 
 /// One run after the other with a stepper that has `new`, `step`, `y` and `stats`.
 macro_rules! one_by_one {
-    ($stepper:ident, $body:expr, $x0:expr, $t_end:expr, $opts:expr) => {{
-        let sys = ReducedSystem($body);
-        let mut finals = Vec::with_capacity($x0.len());
-        let mut total = Stats::default();
-        for &y0 in $x0 {
-            let mut s = $stepper::new(&sys, 0.0, y0, $t_end, $opts)?;
-            while !s.step()? {}
-            finals.push(*s.y());
-            total.steps += s.stats().steps;
-            total.rhs_evals += s.stats().rhs_evals;
-        }
-        Ok::<_, IntegrateError>((finals, total))
-    }};
+    ($stepper:ident, $body:expr, $x0:expr, $t_end:expr, $opts:expr) => {
+        (|| {
+            let sys = ReducedSystem($body);
+            let mut finals = Vec::with_capacity($x0.len());
+            let mut total = Stats::default();
+            for &y0 in $x0 {
+                let mut s = $stepper::new(&sys, 0.0, y0, $t_end, $opts)?;
+                while !s.step()? {}
+                finals.push(*s.y());
+                total.steps += s.stats().steps;
+                total.rhs_evals += s.stats().rhs_evals;
+            }
+            Ok::<_, IntegrateError>((finals, total))
+        })()
+    };
 }
 
 fn main() {
