@@ -5,9 +5,10 @@ use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::taylor::Var;
 use crate::integrate::{
-    drive, Control, Dop853, Drive, EventFn, IntegrateError, Method, OdeSystem, Options, Projection,
-    Rk4, Stepper, Stop,
+    drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem, Options,
+    Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -271,18 +272,13 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
             }
         })
         .collect();
-    let mut stepper: Box<dyn Stepper<N> + '_> = match settings.method {
-        Method::Dop853 => {
-            let opts = Options {
-                rtol: settings.rtol,
-                atol: settings.atol,
-                max_steps: settings.max_steps,
-                ..Options::default()
-            };
-            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts)?)
-        }
-        Method::Rk4 { steps } => Box::new(Rk4::new(sys, 0.0, y0, settings.t_end, steps)),
+    let opts = Options {
+        rtol: settings.rtol,
+        atol: settings.atol,
+        max_steps: settings.max_steps,
+        ..Options::default()
     };
+    let mut stepper = stepper(settings.method, sys, 0.0, y0, settings.t_end, &opts)?;
     let plan = Drive {
         samples: &times,
         project: level.is_some().then_some(&project as Projection<'_, N>),
@@ -311,7 +307,7 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
     let stats = stepper.stats();
     Ok(Observed {
         summary: Summary {
-            method: settings.method.to_string(),
+            method: settings.method.resolve(settings.rtol.min(settings.atol)).to_string(),
             t_end: settings.t_end,
             steps: stats.steps,
             rejected: stats.rejected,
@@ -336,5 +332,9 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
         crate::field::vector_field(self.0, y)
+    }
+
+    fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
+        Some(crate::field::vector_field(self.0, y))
     }
 }
