@@ -239,7 +239,11 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
             let k = &mut self.k;
             k[0] = self.f;
             // The last stage only serves the error estimate (B[15] = 0).
-            let used = if self.fixed { STEP_STAGES - 1 } else { STEP_STAGES };
+            let used = if self.fixed {
+                STEP_STAGES - 1
+            } else {
+                STEP_STAGES
+            };
             stages(self.sys, self.t, h, &self.y, k, 1..used);
             stats.rhs_evals += used - 1;
             let inc = weighted(&B, k);

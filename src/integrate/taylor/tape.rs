@@ -278,7 +278,7 @@ impl Scalar for Var {
 }
 
 /// One operation of the compiled tape; its result goes to slot `first_op + position`.
-/// Operands are slot numbers; constants inline.
+/// Operands are the offsets `slot * stride` of their coefficients; constants inline.
 #[derive(Debug, Clone, Copy)]
 enum Instr {
     Add(u32, u32),
@@ -296,7 +296,7 @@ enum Instr {
 }
 
 /// A field `y' = f(t, y)` of dimension `N` as a compiled expression tape, with the storage of
-/// the Taylor coefficients of all its slots up to order `stride - 1`.
+/// the Taylor coefficients of all its slots up to order `max_order`.
 #[derive(Debug, Clone)]
 pub struct Tape<const N: usize> {
     code: Vec<Instr>,
@@ -306,10 +306,21 @@ pub struct Tape<const N: usize> {
     first_op: usize,
     /// Slot of each output component `f_i`.
     outputs: [usize; N],
-    /// Coefficients per slot: `coef[s * stride + k] = x_s^[k]`.
+    /// Coefficients per slot: `coef[s * stride + k] = x_s^[k]`, `k <= max_order`.
     coef: Vec<f64>,
+    /// The same, reversed within each slot: `rev[s * stride + max_order - k] = x_s^[k]`, so
+    /// that the convolutions `sum_j a^[j] b^[k-j]` read both runs forward (a dot product),
+    /// followed by `PAD` zeros that are never written: a dot product of order `k` can then run
+    /// over `k + 1` rounded up to a multiple of 4 (the extra terms pair an order above `k`
+    /// of the forward run, finite, with a zero).
+    rev: Vec<f64>,
+    max_order: usize,
+    /// `max_order + 1 + PAD`.
     stride: usize,
 }
+
+/// Zeros after each reversed run (see [`Tape`]).
+const PAD: usize = 4;
 
 impl<const N: usize> Tape<N> {
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
@@ -358,7 +369,8 @@ impl<const N: usize> Tape<N> {
         for (j, &i) in ops.iter().enumerate() {
             slot[i] = first_op + j;
         }
-        let s = |a: u32| slot[a as usize] as u32;
+        let stride = max_order + 1 + PAD;
+        let s = |a: u32| (slot[a as usize] * stride) as u32;
         let code = ops
             .iter()
             .map(|&i| match nodes[i] {
@@ -377,19 +389,20 @@ impl<const N: usize> Tape<N> {
                 Node::Input(_) | Node::Time | Node::Const(_) => unreachable!("not an operation"),
             })
             .collect::<Vec<_>>();
-        let stride = max_order + 1;
-        let mut coef = vec![0.0; (first_op + code.len()) * stride];
-        for (j, &(_, c)) in constants.iter().enumerate() {
-            coef[(N + 1 + j) * stride] = c;
-        }
-        Tape {
+        let mut tape = Tape {
+            coef: vec![0.0; (first_op + code.len()) * stride],
+            rev: vec![0.0; (first_op + code.len()) * stride],
             code,
             time: N,
             first_op,
             outputs: outputs.map(|o| slot[o as usize]),
-            coef,
+            max_order,
             stride,
+        };
+        for (j, &(_, c)) in constants.iter().enumerate() {
+            tape.set(N + 1 + j, 0, c);
         }
+        tape
     }
 
     /// Number of operations on the compiled tape.
@@ -410,7 +423,10 @@ impl<const N: usize> Tape<N> {
             .filter(|i| {
                 matches!(
                     i,
-                    Instr::Mul(..) | Instr::Div(..) | Instr::Sqrt(..) | Instr::MulAdd(..)
+                    Instr::Mul(..)
+                        | Instr::Div(..)
+                        | Instr::Sqrt(..)
+                        | Instr::MulAdd(..)
                         | Instr::CDiv(..)
                 )
             })
@@ -419,26 +435,57 @@ impl<const N: usize> Tape<N> {
 
     /// The highest order the coefficient storage holds.
     pub fn max_order(&self) -> usize {
-        self.stride - 1
+        self.max_order
     }
 
     /// The field `f(t, y)` from the tape (order 0 of the recurrences): the same numbers, bit
     /// for bit, as the `f64` field it was recorded from.
     pub fn evaluate(&mut self, t: f64, y: &[f64; N]) -> [f64; N] {
         self.seed(t, y);
-        self.order(0);
+        self.order_zero();
         self.outputs.map(|o| self.coef[o * self.stride])
     }
 
     /// Taylor coefficients `y^[0..=p]` of the solution through `(t, y)`: on return,
     /// [`Tape::state_coefficient`]`(i, k)` holds `y_i^[k]` for `k <= p` (`p <= max_order`).
+    /// From `y^[k+1] = f^[k] / (k + 1)`: one pass of the tape per order.
     pub fn expand(&mut self, t: f64, y: &[f64; N], p: usize) {
+        assert!(
+            p <= self.max_order,
+            "order {p} above the tape's {}",
+            self.max_order
+        );
         self.seed(t, y);
         for k in 0..p {
-            self.order(k);
+            // Dot products of fixed length (unrolled) for the usual orders.
+            match (k + 1).div_ceil(4) * 4 {
+                0 => self.order_zero(),
+                _ if k == 0 => self.order_zero(),
+                4 => self.order::<4>(k),
+                8 => self.order::<8>(k),
+                12 => self.order::<12>(k),
+                16 => self.order::<16>(k),
+                20 => self.order::<20>(k),
+                24 => self.order::<24>(k),
+                28 => self.order::<28>(k),
+                32 => self.order::<32>(k),
+                _ => self.order::<0>(k),
+            }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..N {
-                self.coef[i * self.stride + k + 1] = self.coef[self.outputs[i] * self.stride + k] * inv;
+                let f = self.coef[self.outputs[i] * self.stride + k];
+                self.set(i, k + 1, f * inv);
+            }
+        }
+        // The orders above k of the forward runs meet zeros in the dot products: they must
+        // stay finite for the next expansion. A non-finite intermediate shows in the series
+        // of the state (or, if it does not, in the next expansion's, as a NaN).
+        let finite = (0..N).all(|i| self.state_series(i, p).iter().all(|v| v.is_finite()));
+        if !finite {
+            self.coef.iter_mut().for_each(|v| *v = 0.0);
+            self.rev.iter_mut().for_each(|v| *v = 0.0);
+            for i in 0..N {
+                self.set(i, 0, f64::NAN);
             }
         }
     }
@@ -455,101 +502,110 @@ impl<const N: usize> Tape<N> {
         &self.coef[i * self.stride..=i * self.stride + p]
     }
 
+    /// Stores `x_slot^[k]` in both layouts.
+    #[inline(always)]
+    fn set(&mut self, slot: usize, k: usize, value: f64) {
+        self.coef[slot * self.stride + k] = value;
+        self.rev[slot * self.stride + self.max_order - k] = value;
+    }
+
     fn seed(&mut self, t: f64, y: &[f64; N]) {
         for (i, &v) in y.iter().enumerate() {
-            self.coef[i * self.stride] = v;
+            self.set(i, 0, v);
         }
-        let ts = self.time * self.stride;
-        self.coef[ts] = t;
-        if self.stride > 1 {
-            self.coef[ts + 1] = 1.0;
+        self.set(self.time, 0, t);
+        if self.max_order > 0 {
+            self.set(self.time, 1, 1.0);
         }
     }
 
-    /// Order `k` of every operation, from the orders below `k` and order `k` of the inputs.
-    fn order(&mut self, k: usize) {
+    /// Order 0 of every operation: the `f64` operations of the field themselves.
+    fn order_zero(&mut self) {
+        for j in 0..self.code.len() {
+            let c = &self.coef;
+            let value = match self.code[j] {
+                Instr::Add(a, b) => c[a as usize] + c[b as usize],
+                Instr::Sub(a, b) => c[a as usize] - c[b as usize],
+                Instr::Mul(a, b) => c[a as usize] * c[b as usize],
+                Instr::Div(a, b) => c[a as usize] / c[b as usize],
+                Instr::Neg(a) => -c[a as usize],
+                Instr::Sqrt(a) => c[a as usize].sqrt(),
+                Instr::MulAdd(a, b, d) => c[a as usize].mul_add(c[b as usize], c[d as usize]),
+                Instr::AddC(a, k) => c[a as usize] + k,
+                Instr::CSub(k, a) => k - c[a as usize],
+                Instr::MulC(a, k) => c[a as usize] * k,
+                Instr::DivC(a, k) => c[a as usize] / k,
+                Instr::CDiv(k, a) => k / c[a as usize],
+            };
+            self.set(self.first_op + j, 0, value);
+        }
+    }
+
+    /// Order `k >= 1` of every operation, from the orders below `k` and order `k` of the
+    /// inputs. The dot products run over `L` terms (`k + 1 <= L <= k + 4`; `L = 0`: over
+    /// `k + 1` rounded up to a multiple of 4, not unrolled).
+    fn order<const L: usize>(&mut self, k: usize) {
         let stride = self.stride;
-        let coef = &mut self.coef[..];
-        for (j, instr) in self.code.iter().enumerate() {
+        let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
+        // Start of the reversed run of orders k, k-1, ..., 0 within a slot.
+        let back = self.max_order - k;
+        for j in 0..self.code.len() {
+            let (c, r) = (&self.coef, &self.rev);
             let dest = (self.first_op + j) * stride;
-            let run = |a: u32| a as usize * stride;
-            let value = match *instr {
-                Instr::Add(a, b) => coef[run(a) + k] + coef[run(b) + k],
-                Instr::Sub(a, b) => coef[run(a) + k] - coef[run(b) + k],
-                Instr::Neg(a) => -coef[run(a) + k],
-                Instr::AddC(a, c) => {
-                    if k == 0 {
-                        coef[run(a)] + c
-                    } else {
-                        coef[run(a) + k]
-                    }
+            let fwd = |a: usize| &c[a..a + len];
+            let rwd = |a: usize| &r[a + back..a + back + len];
+            let value = match self.code[j] {
+                Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
+                Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
+                Instr::Neg(a) | Instr::CSub(_, a) => -c[a as usize + k],
+                Instr::AddC(a, _) => c[a as usize + k],
+                Instr::MulC(a, m) => c[a as usize + k] * m,
+                Instr::DivC(a, m) => c[a as usize + k] / m,
+                // sum_{j=0..k} a^[j] b^[k-j]
+                Instr::Mul(a, b) => dot::<L>(fwd(a as usize), rwd(b as usize)),
+                Instr::MulAdd(a, b, d) => {
+                    dot::<L>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
                 }
-                Instr::CSub(c, a) => {
-                    if k == 0 {
-                        c - coef[run(a)]
-                    } else {
-                        -coef[run(a) + k]
-                    }
-                }
-                Instr::MulC(a, c) => coef[run(a) + k] * c,
-                Instr::DivC(a, c) => coef[run(a) + k] / c,
-                Instr::Mul(a, b) => convolution(&coef[run(a)..=run(a) + k], &coef[run(b)..=run(b) + k]),
-                Instr::MulAdd(a, b, c) => {
-                    let (a, b, c) = (run(a), run(b), run(c));
-                    if k == 0 {
-                        coef[a].mul_add(coef[b], coef[c])
-                    } else {
-                        convolution(&coef[a..=a + k], &coef[b..=b + k]) + coef[c + k]
-                    }
-                }
+                // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
                 Instr::Div(a, b) => {
-                    let (a, b) = (run(a), run(b));
-                    quotient(coef[a + k], &coef[b..=b + k], &coef[dest..dest + k])
+                    let b = b as usize;
+                    (c[a as usize + k] - dot::<L>(fwd(b + 1), rwd(dest + 1))) / c[b]
                 }
-                Instr::CDiv(c, b) => {
-                    let b = run(b);
-                    let numerator = if k == 0 { c } else { 0.0 };
-                    quotient(numerator, &coef[b..=b + k], &coef[dest..dest + k])
+                Instr::CDiv(_, b) => {
+                    let b = b as usize;
+                    -dot::<L>(fwd(b + 1), rwd(dest + 1)) / c[b]
                 }
+                // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
+                // padded terms would meet w^[k] of the previous expansion).
                 Instr::Sqrt(a) => {
-                    let a = run(a);
-                    if k == 0 {
-                        coef[a].sqrt()
-                    } else {
-                        let w = &coef[dest..dest + k];
-                        let inner = convolution(&w[1..], &w[1..]);
-                        (coef[a + k] - inner) / (2.0 * w[0])
-                    }
+                    let w = &c[dest + 1..dest + k];
+                    let w_rev = &r[dest + back + 1..dest + back + k];
+                    (c[a as usize + k] - dot::<0>(w, w_rev)) / (2.0 * c[dest])
                 }
             };
-            coef[dest + k] = value;
+            self.coef[dest + k] = value;
+            self.rev[dest + back] = value;
         }
     }
 }
 
-/// `sum_j a[j] b[n - 1 - j]` for slices of equal length `n` (the `k`-th coefficient of a product
-/// for `n = k + 1`).
+/// `sum_j a[j] b[j]` over `L` terms (unrolled), or over the length of `a` for `L = 0`, in four
+/// partial sums so that the additions do not wait on each other.
 #[inline(always)]
-fn convolution(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len();
-    if n == 0 {
-        return 0.0;
+fn dot<const L: usize>(a: &[f64], b: &[f64]) -> f64 {
+    let n = if L == 0 { a.len() } else { L };
+    let (a, b) = (&a[..n], &b[..n]);
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let mut s = [0.0; 4];
+    for (l, (x, y)) in a4.remainder().iter().zip(b4.remainder()).enumerate() {
+        s[l] = x * y;
     }
-    let mut sum = a[0] * b[n - 1];
-    for j in 1..n {
-        sum += a[j] * b[n - 1 - j];
+    for (x, y) in a4.zip(b4) {
+        for l in 0..4 {
+            s[l] += x[l] * y[l];
+        }
     }
-    sum
-}
-
-/// Order `k = w.len()` of `w = a / b`: `(a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]` with
-/// `a_k = a^[k]`, `b = b^[0..=k]` and `w = w^[0..k]`.
-#[inline(always)]
-fn quotient(a_k: f64, b: &[f64], w: &[f64]) -> f64 {
-    if w.is_empty() {
-        return a_k / b[0];
-    }
-    (a_k - convolution(&b[1..], w)) / b[0]
+    (s[0] + s[1]) + (s[2] + s[3])
 }
 
 /// The operand nodes of a node.
