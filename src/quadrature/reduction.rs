@@ -72,12 +72,13 @@ impl Reduction {
     /// `g(u) = sqrt(A C + A m R^2 (1 - u^2) + C m (R u + a)^2)` (the same function as
     /// [`Body::routh_g`], written in u so that it can be differentiated at the poles).
     pub fn routh_g<D: Scalar>(&self, u: D) -> D {
+        self.routh_g_with_sine(lift::<D>(1.0) - u * u, u * self.body.radius + self.body.a)
+    }
+
+    /// `g` from `s2 = sin^2 theta` and `h = R u + a`.
+    fn routh_g_with_sine<D: Scalar>(&self, s2: D, h: D) -> D {
         let b = &self.body;
-        let h = u * b.radius + b.a;
-        ((lift::<D>(1.0) - u * u) * (b.i1 * b.m * b.radius * b.radius)
-            + h * h * (b.i3 * b.m)
-            + b.i1 * b.i3)
-            .sqrt()
+        (s2 * (b.i1 * b.m * b.radius * b.radius) + h * h * (b.i3 * b.m) + b.i1 * b.i3).sqrt()
     }
 
     /// The spin `omega3 = K / g(u)` of (raus-int).
@@ -111,13 +112,26 @@ impl Reduction {
 
     /// The terms of `Q(u)` at given values `[H1, H3, K]` of the integrals.
     fn q_terms_at<D: Scalar>(&self, u: D, integrals: [D; 3]) -> [D; 4] {
+        self.q_terms_with_sine(u, lift::<D>(1.0) - u * u, integrals)
+    }
+
+    /// `Q` at `u = pole (1 - gap)` with `sin^2 theta = gap (2 - gap)` computed from the gap,
+    /// not from u: near a pole u rounds `1 - |u|` to a relative error `eps / gap`.
+    pub fn q_near_pole(&self, pole: f64, gap: f64) -> f64 {
+        let u = pole * (1.0 - gap);
+        self.q_terms_with_sine(u, gap * (2.0 - gap), [self.h1, self.h3, self.k])
+            .iter()
+            .sum()
+    }
+
+    /// The terms of `Q` at `u` with `s2 = 1 - u^2` given.
+    fn q_terms_with_sine<D: Scalar>(&self, u: D, s2: D, integrals: [D; 3]) -> [D; 4] {
         let b = &self.body;
         let [h1, h3, k] = integrals;
         let (ai, r) = (b.i1, b.radius);
-        let s2 = lift::<D>(1.0) - u * u;
         let h = u * r + b.a;
-        let w3 = k / self.routh_g(u);
-        let n = self.remainder_at(u, h3, k);
+        let w3 = k / self.routh_g_with_sine(s2, h);
+        let n = h3 - w3 * h * b.i3;
         let inertia = (s2 * (r * r) + h * h) * b.m + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
@@ -177,6 +191,49 @@ impl Reduction {
     pub fn q_slope_scale(&self, u: f64) -> f64 {
         (0..4)
             .map(|i| first_derivative(|v| self.q_terms(v)[i], u).1.abs())
+            .sum()
+    }
+
+    /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
+    /// `g(u)^2 = (C - A) m R^2 u^2 + 2 C m R a u + A C + A m R^2 + C m a^2` (branch points of
+    /// g) and of the inertia `A + m |r|^2 = A + m (R^2 + a^2) + 2 m R a u` (a pole). Gauss-
+    /// Legendre rules over u bisect toward them ([`crate::quadrature::gauss`]).
+    pub fn singularities(&self) -> Vec<(f64, f64)> {
+        let b = &self.body;
+        let (ai, c, m, r, a) = (b.i1, b.i3, b.m, b.radius, b.a);
+        let mut points = vec![];
+        if a != 0.0 {
+            points.push((-(ai + m * (r * r + a * a)) / (2.0 * m * r * a), 0.0));
+        }
+        let (q2, q1, q0) = (
+            (c - ai) * m * r * r,
+            2.0 * c * m * r * a,
+            ai * c + ai * m * r * r + c * m * a * a,
+        );
+        if q2 == 0.0 {
+            if q1 != 0.0 {
+                points.push((-q0 / q1, 0.0));
+            }
+        } else {
+            let disc = q1 * q1 - 4.0 * q2 * q0;
+            if disc >= 0.0 {
+                let root = disc.sqrt();
+                points.push(((-q1 + root) / (2.0 * q2), 0.0));
+                points.push(((-q1 - root) / (2.0 * q2), 0.0));
+            } else {
+                let im = (-disc).sqrt() / (2.0 * q2).abs();
+                points.push((-q1 / (2.0 * q2), im));
+            }
+        }
+        points.retain(|z| z.0.is_finite() && z.1.is_finite());
+        points
+    }
+
+    /// The round-off scale of `Q''` at `u`: the sum of the magnitudes of the second
+    /// derivatives of the terms of `Q`.
+    pub fn q_curvature_scale(&self, u: f64) -> f64 {
+        (0..4)
+            .map(|i| second_derivative(|v| self.q_terms(v)[i], u).2.abs())
             .sum()
     }
 
