@@ -24,6 +24,7 @@ use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
 use num_dual::first_derivative;
+use std::cell::Cell;
 use std::f64::consts::{PI, TAU};
 
 /// Most samples spent on the panels of one nutation; a level set that needs more lies within
@@ -35,6 +36,11 @@ const SAMPLE_BUDGET: usize = 6400;
 const POLE_SNAP: f64 = 1e-12;
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
+/// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation, about
+/// 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close to R and a
+/// large m) every sample bisects toward it, and with the sample budget that took 1.5 s on a
+/// fuzz input. Ordinary motions use 2 pieces per sample.
+const WORK_BUDGET: usize = 100_000;
 /// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
 /// (accurate over long intervals), below it from the second derivative (no cancellation).
 const WIDE_NUTATION: f64 = 1.0 / 16.0;
@@ -96,6 +102,8 @@ pub struct Nutation {
     narrow_rule: GaussLegendre,
     /// Where Q is not analytic ([`Reduction::singularities`]).
     singularities: Vec<(f64, f64)>,
+    /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
+    work: Cell<usize>,
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
@@ -639,6 +647,7 @@ impl Nutation {
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             narrow_rule: GaussLegendre::new(NARROW_NODES),
             singularities: red.singularities(),
+            work: Cell::new(0),
             sigma0: 0.0,
             psi_ref: 0.0,
             poles: vec![],
@@ -750,8 +759,11 @@ impl Nutation {
         let width = u2 - u1;
         if width > WIDE_NUTATION {
             let difference = |a: f64, b: f64| {
-                self.rule
-                    .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1)
+                let (mean, pieces) = self
+                    .rule
+                    .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1);
+                self.work.set(self.work.get() + pieces);
+                mean
             };
             let p = (difference(u1, u) - difference(u, u2)) / width;
             let scale = red.q_slope_scale(u1) + red.q_slope_scale(u) + red.q_slope_scale(u2);
@@ -771,6 +783,17 @@ impl Nutation {
     /// `dpsi/dsigma = rate f` less the pole parts `c_p / (1 - p u)`.
     fn sample(&self, sigma: f64, rho: f64) -> Result<Sample> {
         let red = &self.reduction;
+        if self.work.get() > WORK_BUDGET {
+            return Err(RouthError::Singular {
+                formula: "the reduced equation (du/dt)^2 = Q(u)",
+                reason: format!(
+                    "a singularity of Q at {:?} (re, im) lies so close to the nutation between \
+                     {} and {} that its quadrature needs more than {WORK_BUDGET} \
+                     Gauss-Legendre pieces",
+                    self.singularities, self.u1, self.u2
+                ),
+            });
+        }
         let phase = if sigma <= 0.5 * PI {
             self.phase(sigma, false)
         } else {
@@ -832,9 +855,10 @@ impl Nutation {
         } else {
             return red.jellett_remainder(u) / (phase.one_minus * phase.one_plus);
         };
-        let slope = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
+        let (slope, pieces) = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
             first_derivative(|w| red.jellett_remainder(w), v).1
         });
+        self.work.set(self.work.get() + pieces);
         -slope / (u + pole)
     }
 

@@ -25,11 +25,16 @@
 //! two roots of `Q`. `thetadot^2 = Phi(theta) = Q(cos theta) / sin^2 theta`.
 
 use crate::body::Body;
-use crate::error::Result;
+use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Scalar};
 use crate::state::State;
 use num_dual::{first_derivative, second_derivative, Dual64};
+
+/// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
+/// `g^2 >= A C`, `g''` stays below about `(m R^2)^2 / (A C)^(3/2)`, i.e. 1e180 (m R^2)^-1 at
+/// this ratio, far inside the range of f64.
+const MIN_MOMENT_RATIO: f64 = 1e-60;
 
 /// The values of the three integrals that fix a nutation: energy H1 (int-g), Jellett's H3
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
@@ -49,6 +54,22 @@ impl Reduction {
     /// The reduction at given values of the integrals; fails unless I1 = I2.
     pub fn new(body: &Body, h1: f64, h3: f64, k: f64) -> Result<Self> {
         body.require_symmetric("the quadrature")?;
+        // Q'' involves g'' ~ (m R^2)^2 / g^3 with g^2 >= A C: moments far below m R^2 make it
+        // overflow, and 0 * inf in its derivatives gives NaN (found by fuzzing: I3 = 7e-304,
+        // m R^2 = 10).
+        let scale = body.m * body.radius * body.radius;
+        if !(body.i1.min(body.i3) >= MIN_MOMENT_RATIO * scale) {
+            return Err(RouthError::Singular {
+                formula: "Routh's g(u) of (rho) and its derivatives",
+                reason: format!(
+                    "I1 = {:e} or I3 = {:e} is below {MIN_MOMENT_RATIO:e} m R^2 = {:e}: the \
+                     derivatives of g overflow",
+                    body.i1,
+                    body.i3,
+                    MIN_MOMENT_RATIO * scale
+                ),
+            });
+        }
         Ok(Reduction {
             body: *body,
             h1,
@@ -217,9 +238,13 @@ impl Reduction {
         } else {
             let disc = q1 * q1 - 4.0 * q2 * q0;
             if disc >= 0.0 {
-                let root = disc.sqrt();
-                points.push(((-q1 + root) / (2.0 * q2), 0.0));
-                points.push(((-q1 - root) / (2.0 * q2), 0.0));
+                // Without cancellation: the root of larger magnitude first, the other from
+                // the product of the roots q0 / q2.
+                let big = -0.5 * (q1 + q1.signum() * disc.sqrt());
+                points.push((big / q2, 0.0));
+                if big != 0.0 {
+                    points.push((q0 / big, 0.0));
+                }
             } else {
                 let im = (-disc).sqrt() / (2.0 * q2).abs();
                 points.push((-q1 / (2.0 * q2), im));
