@@ -39,6 +39,7 @@ pub mod ball;
 pub mod body;
 #[cfg(feature = "io")]
 pub mod case;
+pub mod diagram;
 pub mod differential;
 pub mod error;
 pub mod field;
