@@ -4,6 +4,19 @@
 mod common;
 use common::{assert_exit_2, routh};
 
+/// Run `routh diagram` with `args`, `--out dir` and `--json`; the parsed JSON.
+fn diagram_json(args: &[&str], dir: &std::path::Path) -> serde_json::Value {
+    let mut all = vec!["diagram", "--out", dir.to_str().unwrap(), "--json"];
+    all.extend_from_slice(args);
+    let out = routh(&all);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
 fn temp_dir(name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("routh-diagram-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -17,24 +30,7 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
 #[test]
 fn json_has_the_required_keys_and_files() {
     let dir = temp_dir("keys");
-    let out = routh(&[
-        "diagram",
-        "--h3",
-        "1",
-        "--tilts",
-        "120",
-        "--grid",
-        "24",
-        "--out",
-        dir.to_str().unwrap(),
-        "--json",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let v = diagram_json(&["--h3", "1", "--tilts", "120", "--grid", "24"], &dir);
     let curves = v["critical_curves"].as_array().unwrap();
     assert!(curves.len() >= 2);
     for c in curves {
@@ -84,22 +80,7 @@ fn json_has_the_required_keys_and_files() {
 #[test]
 fn default_plane_has_no_focus_focus_point() {
     let dir = temp_dir("default");
-    let out = routh(&[
-        "diagram",
-        "--tilts",
-        "60",
-        "--grid",
-        "12",
-        "--out",
-        dir.to_str().unwrap(),
-        "--json",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let v = diagram_json(&["--tilts", "60", "--grid", "12"], &dir);
     assert_eq!(v["focus_focus"].as_array().unwrap().len(), 0);
     assert!(v["monodromy"].is_null());
     assert_eq!(v["case_in_plane"], true);

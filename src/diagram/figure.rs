@@ -12,6 +12,7 @@ use super::monodromy::Monodromy;
 use super::relative_equilibria::Value;
 use super::stability::StabilityType;
 use crate::plot::{tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA, Y_LABEL_AREA};
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -36,6 +37,9 @@ fn region_colour(tori: Option<usize>) -> RGBColor {
     }
 }
 
+/// A chart with linear axes in f64.
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
 type Drawn<DB> = std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 fn mesh<'a, DB: DrawingBackend>(
@@ -44,14 +48,7 @@ fn mesh<'a, DB: DrawingBackend>(
     x: (f64, f64),
     y: (f64, f64),
     labels: (&str, &str),
-) -> std::result::Result<
-    ChartContext<
-        'a,
-        DB,
-        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
-    >,
-    DrawingAreaErrorKind<DB::ErrorType>,
-> {
+) -> std::result::Result<Chart<'a, DB>, DrawingAreaErrorKind<DB::ErrorType>> {
     area.fill(&WHITE)?;
     let (top, body) = area.split_vertically(TITLE_HEIGHT);
     top.titled(title, ("sans-serif", 24))?;
@@ -72,6 +69,30 @@ fn mesh<'a, DB: DrawingBackend>(
         .disable_mesh()
         .draw()?;
     Ok(chart)
+}
+
+/// A marked value: a black triangle with its label.
+fn mark<DB: DrawingBackend>(chart: &mut Chart<'_, DB>, label: &str, at: (f64, f64)) -> Drawn<DB> {
+    chart.draw_series(std::iter::once(
+        EmptyElement::at(at)
+            + TriangleMarker::new((0, 0), 8, BLACK.filled())
+            + Text::new(label.to_string(), (10, -22), ("sans-serif", 16)),
+    ))?;
+    Ok(())
+}
+
+/// The legend box at `position`.
+fn legend<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    position: SeriesLabelPosition,
+) -> Drawn<DB> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .label_font(("sans-serif", 15))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
 }
 
 /// The (K, H1) plane of a [`Diagram`], with the values to mark (label, value).
@@ -96,14 +117,19 @@ impl Figure for EnergyMomentum<'_> {
         let (grid, ks, hs) = (&d.tori.tori, &d.tori.k, &d.tori.h1);
         let half = |v: &[f64]| 0.5 * (v[v.len() - 1] - v[0]) / (v.len() - 1) as f64;
         let (dk, dh) = (half(ks), half(hs));
-        chart.draw_series(grid.iter().zip(hs).flat_map(|(row, &h)| {
-            row.iter().zip(ks).map(move |(&n, &k)| {
-                Rectangle::new(
-                    [(k - dk, h - dh), (k + dk, h + dh)],
-                    region_colour(n).filled(),
-                )
-            })
-        }))?;
+        // One rectangle per run of equal cells in a row (a small SVG).
+        let mut cells = vec![];
+        for (row, &h) in grid.iter().zip(hs) {
+            let mut start = 0;
+            for i in 1..=row.len() {
+                if i == row.len() || row[i] != row[start] {
+                    let corners = [(ks[start] - dk, h - dh), (ks[i - 1] + dk, h + dh)];
+                    cells.push(Rectangle::new(corners, region_colour(row[start]).filled()));
+                    start = i;
+                }
+            }
+        }
+        chart.draw_series(cells)?;
         for n in 0..=3 {
             let label = match n {
                 3 => "3 or more tori".to_string(),
@@ -193,20 +219,9 @@ impl Figure for EnergyMomentum<'_> {
             ))?;
         }
         for (label, value) in self.marks.iter().filter(|(_, v)| inside(v)) {
-            chart.draw_series(std::iter::once(
-                EmptyElement::at((value.k, value.h1))
-                    + TriangleMarker::new((0, 0), 8, BLACK.filled())
-                    + Text::new(label.clone(), (10, -22), ("sans-serif", 16)),
-            ))?;
+            mark(&mut chart, label, (value.k, value.h1))?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .label_font(("sans-serif", 15))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()?;
-        Ok(())
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)
     }
 }
 
@@ -288,20 +303,9 @@ impl Figure for SleepingTopFigure<'_> {
                 PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(1))
             });
         for (label, point) in &self.marks {
-            chart.draw_series(std::iter::once(
-                EmptyElement::at(*point)
-                    + TriangleMarker::new((0, 0), 8, BLACK.filled())
-                    + Text::new(label.clone(), (10, -22), ("sans-serif", 16)),
-            ))?;
+            mark(&mut chart, label, *point)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .label_font(("sans-serif", 15))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()?;
-        Ok(())
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)
     }
 }
 
@@ -352,13 +356,6 @@ impl Figure for RotationNumberFigure<'_> {
             }))?
             .label("Theta / (2 pi) from the quadrature, in [0, 1)")
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, orange.filled()));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerLeft)
-            .label_font(("sans-serif", 15))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()?;
-        Ok(())
+        legend(&mut chart, SeriesLabelPosition::LowerLeft)
     }
 }

@@ -106,7 +106,7 @@ fn integral_gradients(body: &Body, x: &[f64; 6]) -> SMatrix<f64, 6, 6> {
         gradient(|y| energy(body, y), x).1,
         gradient(|y| jellett(body, y), x).1,
         gradient(|y| routh_integral(body, y), x).1,
-        gradient(|y| geometric(y), x).1,
+        gradient(geometric, x).1,
     ];
     SMatrix::<f64, 6, 6>::from_fn(|r, c| rows.get(r).map_or(0.0, |row| row[c]))
 }
