@@ -1,8 +1,9 @@
 //! Our side of the work–precision benchmark (`bench/work_precision/run.py` drives it).
 //!
 //! * `work_precision run CASE METHOD TOL REPEAT`: integrates the case file to t = 1000 with
-//!   METHOD (`dop853` or `vern9`; `dop853-plain`, `vern9-plain` without compensated
-//!   summation of the update) at rtol = atol = TOL, REPEAT times, and prints one JSON
+//!   METHOD (a name of `Method`: `dop853`, `vern9`, `taylor`, `auto`; with `-plain`, without
+//!   compensated summation of the update) at rtol = atol = TOL, REPEAT times (the Taylor
+//!   method's recording of the field is part of each), and prints one JSON
 //!   object: the minimum wall time of the integration (constructor and steps; no samples, no
 //!   projection), the final state, the step and field-evaluation counts and the relative
 //!   drift of the energy H1 at the end.
@@ -19,7 +20,8 @@
 use routh::case::Case;
 use routh::field::vector_field;
 use routh::integrals::Integrals;
-use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Vern9};
+use routh::integrate::{stepper, IntegrateError, Method, Options, Stats};
+use routh::simulate::ReducedSystem;
 use std::io::BufRead;
 use std::path::Path;
 use std::time::Instant;
@@ -30,35 +32,24 @@ fn energy(case: &Case, x: &[f64; 6]) -> f64 {
     Integrals::at(&case.ball, x).values()[0].expect("H1 is always tracked")
 }
 
-/// Integrates to `T_END` with a stepper that has `step`, `y` and `stats`.
-macro_rules! integrate {
-    ($stepper:ident, $sys:expr, $x0:expr, $opts:expr) => {{
-        let mut s = $stepper::new($sys, 0.0, $x0, T_END, $opts)?;
-        while !s.step()? {}
-        Ok::<_, IntegrateError>((*s.y(), s.stats()))
-    }};
-}
-
 fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), IntegrateError> {
-    let body = &case.ball;
-    let sys = |_t: f64, x: &[f64; 6]| vector_field::<f64>(body, x);
+    let sys = ReducedSystem(&case.ball);
     let x0 = case.initial.to_array();
     // "-plain": the update summed without compensation, to measure what compensation gains.
     let (name, compensated) = match method.strip_suffix("-plain") {
         Some(name) => (name, false),
         None => (method, true),
     };
+    let method: Method = name.parse().unwrap_or_else(|e| panic!("{e}"));
     let opts = Options {
         rtol: tol,
         atol: tol,
         compensated,
         ..Options::default()
     };
-    match name {
-        "dop853" => integrate!(Dop853, &sys, x0, &opts),
-        "vern9" => integrate!(Vern9, &sys, x0, &opts),
-        other => panic!("unknown method {other:?}: expected dop853 or vern9 (optionally -plain)"),
-    }
+    let mut s = stepper(method, &sys, 0.0, x0, T_END, &opts)?;
+    while !s.step()? {}
+    Ok((*s.y(), s.stats()))
 }
 
 fn main() {

@@ -83,8 +83,8 @@ class DenseOutput:
     """The state at any time of the span, as SciPy's OdeSolution."""
 
     def __new__(
-        cls, body: Body, method: str, rtol: float, atol: float, level: Optional[Sequence[float]],
-        knots_t: Sequence[float], knots_y: Sequence[float], t_last: float,
+        cls, body: Body, level: Optional[Sequence[float]], times: Sequence[float],
+        nodes: Sequence[float], t_last: float,
     ) -> "DenseOutput":
         """Rebuild from pickled fields (used by pickle)."""
 

@@ -36,6 +36,7 @@
 #[cfg(feature = "io")]
 pub mod animate;
 pub mod ball;
+pub mod batch;
 pub mod body;
 #[cfg(feature = "io")]
 pub mod case;

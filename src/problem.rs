@@ -84,11 +84,12 @@ pub struct Solution {
 /// (2004)). The dense output of DOP853 (degree 7 in the step fraction) and of RK4 (degree 3)
 /// are polynomials of degree at most 7, so this reproduces them to round-off.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct DenseSolution {
+#[serde(bound(serialize = "[f64; N]: Serialize"))]
+pub struct DenseSolution<const N: usize = 6> {
     /// Step boundaries `t_0 < t_1 < ... < t_n` (or decreasing for a backward run).
     pub times: Vec<f64>,
     /// For step i, the states at its 8 Chebyshev points.
-    pub nodes: Vec<[[f64; 6]; DENSE_NODES]>,
+    pub nodes: Vec<[[f64; N]; DENSE_NODES]>,
 }
 
 /// Number of interpolation nodes per step.
@@ -99,8 +100,18 @@ fn chebyshev_fraction(j: usize) -> f64 {
     0.5 * (1.0 - (std::f64::consts::PI * j as f64 / (DENSE_NODES - 1) as f64).cos())
 }
 
-impl DenseSolution {
-    fn record(&mut self, stepper: &dyn Stepper<6>) {
+impl<const N: usize> Default for DenseSolution<N> {
+    fn default() -> Self {
+        DenseSolution {
+            times: Vec::new(),
+            nodes: Vec::new(),
+        }
+    }
+}
+
+impl<const N: usize> DenseSolution<N> {
+    /// Append the last accepted step of `stepper` (its dense output on `[t_prev, t]`).
+    pub fn record(&mut self, stepper: &(impl Stepper<N> + ?Sized)) {
         let (ta, tb) = (stepper.t_prev(), stepper.t());
         if self.times.is_empty() {
             self.times.push(ta);
@@ -113,7 +124,7 @@ impl DenseSolution {
 
     /// The state at `t`, which must lie in the span covered (else an
     /// [`RouthError::Option`] naming `t`).
-    pub fn at(&self, t: f64) -> Result<[f64; 6]> {
+    pub fn at(&self, t: f64) -> Result<[f64; N]> {
         let (first, last) = match (self.times.first(), self.times.last()) {
             (Some(&a), Some(&b)) if self.times.len() > 1 => (a, b),
             _ => return Err(self.outside(t)),
@@ -126,9 +137,12 @@ impl DenseSolution {
             .partition_point(|&b| (b - t) * dir < 0.0)
             .min(self.nodes.len() - 1);
         let (ta, tb) = (self.times[i], self.times[i + 1]);
-        let s = (t - ta) / (tb - ta);
         let nodes = &self.nodes[i];
-        let mut num = [0.0; 6];
+        if tb == ta {
+            return Ok(nodes[0]);
+        }
+        let s = (t - ta) / (tb - ta);
+        let mut num = [0.0; N];
         let mut den = 0.0;
         for (j, node) in nodes.iter().enumerate() {
             let d = s - chebyshev_fraction(j);
@@ -143,8 +157,8 @@ impl DenseSolution {
             };
             let w = sign * half / d;
             den += w;
-            for c in 0..6 {
-                num[c] += w * node[c];
+            for (n, v) in num.iter_mut().zip(node) {
+                *n += w * v;
             }
         }
         Ok(num.map(|v| v / den))
@@ -170,10 +184,7 @@ impl Problem {
     /// Invalid settings are an error; a failed integration is a [`Solution`] with
     /// [`Status::Failed`] and the message, holding what was reached.
     pub fn solve_dense(&self) -> Result<(Solution, DenseSolution)> {
-        let mut dense = DenseSolution {
-            times: Vec::new(),
-            nodes: Vec::new(),
-        };
+        let mut dense = DenseSolution::default();
         let solution = self.run(Some(&mut dense))?;
         Ok((solution, dense))
     }

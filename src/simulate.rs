@@ -5,9 +5,10 @@ use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::taylor::Var;
 use crate::integrate::{
-    drive, Control, Dop853, Drive, EventFn, IntegrateError, Method, OdeSystem, Options, Projection,
-    Rk4, Stepper, Stop,
+    check_samples, drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem,
+    Options, Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -84,14 +85,17 @@ pub struct Summary {
     pub elapsed_s: f64,
 }
 
-struct DriftTracker {
+/// The drift of the integrals along a run: their values at the start, at the last state seen,
+/// and the largest relative change (the `integrals` of a [`Summary`]).
+pub struct DriftTracker {
     initial: [Option<f64>; 7],
     max: [f64; 7],
     last: [Option<f64>; 7],
 }
 
 impl DriftTracker {
-    fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+    /// Starts at `x0`.
+    pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let initial = Integrals::at(body, x0).all();
         DriftTracker {
             initial,
@@ -100,7 +104,8 @@ impl DriftTracker {
         }
     }
 
-    fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+    /// Looks at the state `x`.
+    pub fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
         self.last = Integrals::at(body, x).all();
         for i in 0..7 {
             if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
@@ -110,7 +115,8 @@ impl DriftTracker {
         }
     }
 
-    fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
+    /// The drift of each integral so far.
+    pub fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
         (0..7)
             .filter_map(|i| {
                 Some((
@@ -126,9 +132,18 @@ impl DriftTracker {
     }
 }
 
-/// The reduced phase-space part of a (possibly extended) state.
-fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
+/// The reduced phase-space part `(gamma, M)` of a (possibly extended) state.
+pub fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
     std::array::from_fn(|i| y[i])
+}
+
+/// Project the reduced part of a (possibly extended) state onto `level`, if given.
+pub fn project_onto<const N: usize>(level: Option<&LevelSet>, y: &mut [f64; N]) {
+    if let Some(level) = level {
+        let mut x = reduced(y);
+        level.project(&mut x);
+        y[..6].copy_from_slice(&x);
+    }
 }
 
 impl Default for Settings {
@@ -218,8 +233,9 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     }
 }
 
-/// What [`integrate_observed`] returns: the summary, how the run stopped, the time reached,
-/// and the integrator's failure (then the summary holds the state reached).
+/// What [`integrate_observed`] and [`integrate_span`] return: the summary, how the run
+/// stopped, the time and state reached, and the integrator's failure (then the summary holds
+/// the state reached).
 #[derive(Debug, Clone)]
 pub struct Observed<const N: usize> {
     /// The summary of the run (up to the failure, if any).
@@ -228,14 +244,51 @@ pub struct Observed<const N: usize> {
     pub stop: Stop<N>,
     /// The time reached.
     pub t: f64,
+    /// The (whole, possibly extended) state reached.
+    pub y: [f64; N],
     /// The integrator's error, if it failed.
     pub failure: Option<IntegrateError>,
 }
 
-/// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: as [`run`], with an
-/// optional event function and `on_step(stepper)` called after each step (for its dense
-/// output). Invalid settings and errors of `on_sample` are errors; a failure of the
-/// integrator is reported in [`Observed::failure`] with the state reached.
+/// The interval and the sample times of [`integrate_span`].
+#[derive(Debug, Clone, Copy)]
+pub struct Span<'a, const N: usize> {
+    /// Start time.
+    pub t0: f64,
+    /// The state at `t0`.
+    pub y0: [f64; N],
+    /// End time (before `t0`: backward in time).
+    pub t1: f64,
+    /// Times where the state is reported, strictly monotone from `t0` towards `t1`, within
+    /// the span.
+    pub samples: &'a [f64],
+}
+
+/// What the per-step observer of [`integrate_span`] asks for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Next<const N: usize> {
+    /// Go on.
+    Continue,
+    /// Stop after this step.
+    Stop,
+    /// Stop at the time `t` within this step, with the state `y` there (an event the
+    /// observer located): the samples after `t` are not reported and the run ends at `(t, y)`.
+    StopAt {
+        /// The time within the step.
+        t: f64,
+        /// The state there.
+        y: [f64; N],
+    },
+}
+
+/// The per-step observer of [`integrate_span`]: `on_step(t, y, stepper)` after each accepted
+/// step, with the (projected) step end and the stepper (for its dense output on the step).
+pub type StepObserver<'a, const N: usize> =
+    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> Result<Next<N>> + 'a;
+
+/// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: [`integrate_span`]
+/// over `[0, settings.t_end]` with `settings.samples` equally spaced samples, `on_step(stepper)`
+/// called after each step.
 #[allow(clippy::too_many_arguments)]
 pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
     body: &impl AsBall,
@@ -247,16 +300,6 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
     on_step: &mut dyn FnMut(&dyn Stepper<N>),
 ) -> Result<Observed<N>> {
     validate(settings)?;
-    let start = Instant::now();
-    let x0 = reduced(&y0);
-    let level = settings.project.then(|| LevelSet::through(body, &x0));
-    let project = |y: &mut [f64; N]| {
-        if let Some(level) = &level {
-            let mut x = reduced(y);
-            level.project(&mut x);
-            y[..6].copy_from_slice(&x);
-        }
-    };
     let times: Vec<f64> = (0..settings.samples)
         .map(|i| {
             if i + 1 == settings.samples {
@@ -266,48 +309,136 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
             }
         })
         .collect();
-    let mut stepper: Box<dyn Stepper<N> + '_> = match settings.method {
-        Method::Dop853 => {
-            let opts = Options {
-                rtol: settings.rtol,
-                atol: settings.atol,
-                max_steps: settings.max_steps,
-                ..Options::default()
-            };
-            Box::new(Dop853::new(sys, 0.0, y0, settings.t_end, &opts)?)
-        }
-        Method::Rk4 { steps } => Box::new(Rk4::new(sys, 0.0, y0, settings.t_end, steps)),
-    };
-    let plan = Drive {
+    let span = Span {
+        t0: 0.0,
+        y0,
+        t1: settings.t_end,
         samples: &times,
+    };
+    integrate_span(
+        body,
+        sys,
+        &span,
+        settings,
+        event,
+        on_sample,
+        &mut |_, _, stepper| {
+            on_step(stepper);
+            Ok(Next::Continue)
+        },
+    )
+}
+
+/// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`, over
+/// `span` (either direction) with the method, tolerances, projection and step limit of
+/// `settings` (its `t_end` and `samples` are not used): the one use of the library's driver
+/// [`drive`] by `simulate`, [`crate::problem::Problem`], the sweep and Python.
+///
+/// After each accepted step, in this order: a non-finite state ends the run with
+/// [`IntegrateError::NonFinite`]; `on_step(t, y, stepper)` sees the (projected) step end and
+/// may stop the run, possibly at a time within the step ([`Next::StopAt`]); the samples up to
+/// the end (projected, with `settings.project`) go to `on_sample`; the integrals are tracked at
+/// the samples and the step end. `event` stops the run at its first sign change (as in
+/// [`drive`]). Invalid settings or samples and errors of the callbacks are errors; a failure of
+/// the integrator is reported in [`Observed::failure`] with the state reached.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    span: &Span<'_, N>,
+    settings: &Settings,
+    event: Option<EventFn<'_, N>>,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+    on_step: &mut StepObserver<'_, N>,
+) -> Result<Observed<N>> {
+    let Span {
+        t0,
+        y0,
+        t1,
+        samples,
+    } = *span;
+    validate(&Settings {
+        t_end: (t1 - t0).abs(),
+        samples: 0,
+        ..*settings
+    })?;
+    check_samples(t0, t1, samples)?;
+    let start = Instant::now();
+    let dir = if t1 >= t0 { 1.0 } else { -1.0 };
+    let x0 = reduced(&y0);
+    let level = settings.project.then(|| LevelSet::through(body, &x0));
+    let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
+    let opts = Options {
+        rtol: settings.rtol,
+        atol: settings.atol,
+        max_steps: settings.max_steps,
+        ..Options::default()
+    };
+    let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts)?;
+    let plan = Drive {
+        samples,
         project: level.is_some().then_some(&project as Projection<'_, N>),
         event,
     };
     let drift = RefCell::new(DriftTracker::new(body, &x0));
+    // The samples of a step wait for the observer, which may end the run within the step.
+    let pending: RefCell<Vec<(f64, [f64; N])>> = RefCell::new(Vec::new());
+    let mut report = |until: f64| -> Result<()> {
+        let mut pending = pending.borrow_mut();
+        for (s, mut y) in pending.drain(..) {
+            if (s - until) * dir <= 0.0 {
+                project(&mut y);
+                drift.borrow_mut().observe(body, &reduced(&y));
+                on_sample(s, &y)?;
+            }
+        }
+        Ok(())
+    };
+    let mut stopped_at = None;
+    let mut last_good = t0;
     let outcome = drive(
         stepper.as_mut(),
         &plan,
         &mut |t, y| {
-            drift.borrow_mut().observe(body, &reduced(y));
-            on_sample(t, y)
+            pending.borrow_mut().push((t, *y));
+            Ok(())
         },
-        &mut |_, y, stepper| {
-            drift.borrow_mut().observe(body, &reduced(y));
-            on_step(stepper);
-            Ok(Control::Continue)
+        &mut |t, y, stepper| {
+            if y.iter().any(|v| !v.is_finite()) {
+                return Err(IntegrateError::NonFinite { t }.into());
+            }
+            last_good = t;
+            let next = on_step(t, y, stepper)?;
+            let (until, y_last) = match next {
+                Next::StopAt { t, y } => (t, y),
+                Next::Continue | Next::Stop => (t, *y),
+            };
+            report(until)?;
+            drift.borrow_mut().observe(body, &reduced(&y_last));
+            Ok(match next {
+                Next::Continue => Control::Continue,
+                Next::Stop => Control::Stop,
+                Next::StopAt { t, y } => {
+                    stopped_at = Some((t, y));
+                    Control::Stop
+                }
+            })
         },
     );
     let (stop, t, y_end, failure) = match outcome {
-        Ok(o) if o.y.iter().all(|v| v.is_finite()) => (o.stop, o.t, o.y, None),
-        Ok(o) => (o.stop, o.t, o.y, Some(IntegrateError::NonFinite { t: o.t })),
+        Ok(o) => match stopped_at {
+            Some((t, y)) => (Stop::Stopped { t }, t, y, None),
+            None => (o.stop, o.t, o.y, None),
+        },
         Err(RouthError::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
         Err(other) => return Err(other),
     };
+    report(if failure.is_some() { last_good } else { t })?;
     let stats = stepper.stats();
     Ok(Observed {
         summary: Summary {
-            method: settings.method.to_string(),
-            t_end: settings.t_end,
+            method: settings.method.resolve(settings.rtol.min(settings.atol)).to_string(),
+            t_end: t1,
             steps: stats.steps,
             rejected: stats.rejected,
             rhs_evals: stats.rhs_evals,
@@ -319,6 +450,7 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
         },
         stop,
         t,
+        y: y_end,
         failure,
     })
 }
@@ -331,5 +463,9 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
         crate::field::vector_field(self.0, y)
+    }
+
+    fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
+        Some(crate::field::vector_field(self.0, y))
     }
 }

@@ -3,7 +3,7 @@
 //! its interpolant, and negative controls that show each check can fail.
 
 use routh::integrate::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use routh::integrate::{vern9_fixed_step_solve, Options, Vern9};
+use routh::integrate::{Options, Stepper, Vern9};
 
 /// A rooted tree given by the indices of its children's trees in a list sorted by order.
 struct Tree {
@@ -220,7 +220,11 @@ fn fixed_steps_show_order_9_on_kepler() {
     let period = 2.0 * std::f64::consts::PI;
     let errors: Vec<f64> = [32, 64, 128]
         .iter()
-        .map(|&n| max_abs_diff(&vern9_fixed_step_solve(&kepler, 0.0, y0, period, n), &y0))
+        .map(|&n| {
+            let mut s = Vern9::fixed_steps(&kepler, 0.0, y0, period, n).unwrap();
+            while !s.step().unwrap() {}
+            max_abs_diff(s.y(), &y0)
+        })
         .collect();
     let orders: Vec<f64> = errors.windows(2).map(|w| (w[0] / w[1]).log2()).collect();
     println!("Vern9 fixed-step errors {errors:?}, observed orders {orders:?}");

@@ -1,4 +1,4 @@
-"""Work-precision benchmark: routh (DOP853, Vern9) against heyoka, Hairer's dop853.f and SciPy.
+"""Work-precision benchmark: routh (DOP853, Vern9, Taylor) against heyoka, Hairer's dop853.f and SciPy.
 
     python3 bench/work_precision/run.py [--repeat 3] [--cases default,nogravity,tilted]
 
@@ -193,6 +193,7 @@ def main():
 
     reference = json.loads((HERE / "reference.json").read_text())
     results = {"machine": {"nproc": os.cpu_count(), "loadavg_start": os.getloadavg(),
+                           "uptime_start": sh("uptime", capture_output=True).stdout.strip(),
                            "uname": " ".join(os.uname())},
                "versions": {"heyoka": hy.__version__, "scipy": scipy.__version__,
                             "gfortran": sh("gfortran", "--version", capture_output=True).stdout.splitlines()[0]},
@@ -242,9 +243,11 @@ def main():
             return f
 
         methods = {"routh dop853": routh_run("dop853"), "routh vern9": routh_run("vern9"),
+                   "routh taylor": routh_run("taylor"),
                    "heyoka": heyoka_run, "dop853.f": fortran_run, "scipy DOP853": scipy_run,
                    "routh dop853 plain sum": routh_run("dop853-plain"),
-                   "routh vern9 plain sum": routh_run("vern9-plain")}
+                   "routh vern9 plain sum": routh_run("vern9-plain"),
+                   "routh taylor plain sum": routh_run("taylor-plain")}
         rows = []
         for tol in TOLS:
             for name, f in methods.items():
@@ -260,6 +263,7 @@ def main():
                       f"drift {row['energy_drift']:.1e}", flush=True)
         results["cases"][case] = {"field_check_max_rel": check, "rows": rows}
     results["machine"]["loadavg_end"] = os.getloadavg()
+    results["machine"]["uptime_end"] = sh("uptime", capture_output=True).stdout.strip()
     (HERE / "results.json").write_text(json.dumps(results, indent=1) + "\n")
     sh(bench, "plot", str(HERE / "results.json"), str(HERE / "work_precision"))
 

@@ -15,7 +15,7 @@ import pathlib
 
 HERE = pathlib.Path(__file__).resolve().parent
 LEVELS = [10.0 ** -k for k in range(5, 12)]
-OURS = ["routh dop853", "routh vern9"]
+OURS = ["routh dop853", "routh vern9", "routh taylor"]
 PEERS = ["heyoka", "dop853.f", "scipy DOP853"]
 
 
@@ -36,6 +36,8 @@ def main():
     print(f"load average at start {m['loadavg_start'][0]:.1f}, at end {m['loadavg_end'][0]:.1f}; "
           f"{m['nproc']} cores; heyoka {res['versions']['heyoka']}, SciPy {res['versions']['scipy']}, "
           f"{res['versions']['gfortran']}; minimum of {res['repeat']} runs\n")
+    if "uptime_start" in m:
+        print(f"`uptime` before: `{m['uptime_start']}`; after: `{m['uptime_end']}`\n")
     for case, data in res["cases"].items():
         rows = data["rows"]
         methods = [n for n in OURS + PEERS if any(r["method"] == n for r in rows)]
@@ -63,7 +65,8 @@ def main():
             print("\n| tol | " + " | ".join(f"{n}: compensated / plain sum" for n in OURS) + " |")
             print("|---" * (len(OURS) + 1) + "|")
             for tol in sorted({t for _, t, _ in plain}, reverse=True):
-                cells = [f"{comp[(n, tol)]:.2e} / {comp[(n + ' plain sum', tol)]:.2e}" for n in OURS]
+                cells = [f"{comp[(n, tol)]:.2e} / {comp[(n + ' plain sum', tol)]:.2e}"
+                         if (n + ' plain sum', tol) in comp else "-" for n in OURS]
                 print(f"| {tol:.0e} | " + " | ".join(cells) + " |")
         print()
 

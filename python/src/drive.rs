@@ -1,16 +1,19 @@
-//! The step loop behind `simulate`: steps of the library's integrators, samples at given times
-//! from the continuous extension, events located by Brent's method on it, optional projection
-//! onto the level set of the integrals, the drift of the integrals, and a check for Ctrl-C
-//! between steps.
+//! `simulate` on the library's one driver ([`routh_core::simulate::integrate_span`]): this file
+//! adds only what SciPy's `solve_ivp` has and the library does not, as an observer of the
+//! steps: several events with SciPy's `terminal` counts and `direction`, located by Brent's
+//! method on the stepper's dense output; the states at every step end (SciPy's default
+//! output); the dense output of every step; and a check for Ctrl-C between steps.
 
-use crate::stepper::Stepper;
-use pyo3::PyResult;
-use routh_core::integrals::{Integrals, INTEGRAL_NAMES};
-use routh_core::integrate::{brent, Method, OdeSystem, Stats};
+use pyo3::{PyErr, PyResult};
+use routh_core::ball::AsBall;
+use routh_core::integrate::{brent, Method, OdeSystem, Stats, Stepper};
+use routh_core::problem::DenseSolution;
 use routh_core::projection::LevelSet;
-use routh_core::Body;
+use routh_core::simulate::{
+    integrate_span, project_onto, reduced, Drift, Next, Settings as LibrarySettings, Span,
+};
+use std::cell::RefCell;
 use std::collections::BTreeMap;
-use std::time::Instant;
 
 /// Steps between two checks for a pending Ctrl-C (a DOP853 step of (mg-eq) takes about a
 /// microsecond, so the check runs about every 0.3 ms and costs nothing measurable).
@@ -55,17 +58,6 @@ pub enum Ending {
     Failed(String),
 }
 
-/// The drift of one integral: initial value, last value, largest relative change.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Drift {
-    /// At the start.
-    pub initial: f64,
-    /// At the last step end or sample.
-    pub last: f64,
-    /// `max |H - H(t0)| / |H(t0)|` over step ends and samples (absolute when H(t0) = 0).
-    pub max_rel_drift: f64,
-}
-
 /// What a run produced.
 pub struct Run<const N: usize> {
     /// Times of the reported states.
@@ -76,10 +68,9 @@ pub struct Run<const N: usize> {
     pub t_events: Vec<Vec<f64>>,
     /// States at each event.
     pub y_events: Vec<Vec<[f64; N]>>,
-    /// Step ends `(t, y)` from the start on (after projection), for the dense output; empty
-    /// unless asked for.
-    pub knots: Vec<(f64, [f64; N])>,
-    /// Where the run stopped (the last knot, or the terminal event).
+    /// The dense output of every step (empty unless asked for).
+    pub dense: DenseSolution<N>,
+    /// Where the run stopped (the last step end, or the terminal event).
     pub t_last: f64,
     /// The state there.
     pub y_last: [f64; N],
@@ -89,7 +80,7 @@ pub struct Run<const N: usize> {
     pub ending: Ending,
     /// The drift of each integral the body has.
     pub drift: BTreeMap<&'static str, Drift>,
-    /// Wall time of the loop in seconds.
+    /// Wall time of the integration in seconds.
     pub elapsed_s: f64,
 }
 
@@ -116,61 +107,6 @@ pub struct Hooks<'h, const N: usize> {
     pub interrupt: &'h mut dyn FnMut() -> PyResult<()>,
 }
 
-struct DriftTracker {
-    initial: [Option<f64>; 5],
-    last: [Option<f64>; 5],
-    max: [f64; 5],
-}
-
-impl DriftTracker {
-    fn observe(&mut self, body: &Body, y: &[f64]) {
-        let x: [f64; 6] = std::array::from_fn(|i| y[i]);
-        self.last = Integrals::at(body, &x).values();
-        for i in 0..5 {
-            if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
-                let scale = if h0 == 0.0 { 1.0 } else { h0.abs() };
-                self.max[i] = self.max[i].max((h - h0).abs() / scale);
-            }
-        }
-    }
-
-    fn report(&self) -> BTreeMap<&'static str, Drift> {
-        (0..5)
-            .filter_map(|i| {
-                Some((
-                    INTEGRAL_NAMES[i],
-                    Drift {
-                        initial: self.initial[i]?,
-                        last: self.last[i]?,
-                        max_rel_drift: self.max[i],
-                    },
-                ))
-            })
-            .collect()
-    }
-}
-
-/// The projection of the reduced part of a state onto the level set through `x0`, if asked.
-pub struct Projector(Option<LevelSet>);
-
-impl Projector {
-    /// The level set through the reduced part of `x0` when `project`.
-    pub fn new(body: &Body, x0: &[f64], project: bool) -> Self {
-        let x: [f64; 6] = std::array::from_fn(|i| x0[i]);
-        Projector(project.then(|| LevelSet::through(body, &x)))
-    }
-
-    /// `y` with its reduced part projected.
-    pub fn apply<const N: usize>(&self, mut y: [f64; N]) -> [f64; N] {
-        if let Some(level) = &self.0 {
-            let mut x: [f64; 6] = std::array::from_fn(|i| y[i]);
-            level.project(&mut x);
-            y[..6].copy_from_slice(&x);
-        }
-        y
-    }
-}
-
 /// A crossing of zero by `g` from `g0` to `g1` that counts under `direction`.
 fn crosses(g0: f64, g1: f64, direction: f64) -> bool {
     let up = g0 < 0.0 && g1 >= 0.0;
@@ -178,211 +114,219 @@ fn crosses(g0: f64, g1: f64, direction: f64) -> bool {
     (up && direction >= 0.0) || (down && direction <= 0.0)
 }
 
+/// Why the observer ended a run early.
+enum Halt {
+    /// An exception of a hook, raised after the run.
+    Python(PyErr),
+    /// An event that could not be located: the run failed with this message.
+    Failed(String),
+}
+
+/// The events of a run: their previous values, occurrences and the Python hooks.
+struct Events<'h, const N: usize> {
+    hooks: Hooks<'h, N>,
+    g_prev: Vec<f64>,
+    t_events: Vec<Vec<f64>>,
+    y_events: Vec<Vec<[f64; N]>>,
+}
+
+impl<const N: usize> Events<'_, N> {
+    /// The zeros of event `i` on the last step `[ta, tb]` of `stepper`, where it changed from
+    /// `g0` to `g1` (`tb` itself when `g1 = 0`).
+    fn locate(&mut self, i: usize, g1: f64, stepper: &dyn Stepper<N>) -> Result<f64, Halt> {
+        let (ta, tb) = (stepper.t_prev(), stepper.t());
+        if g1 == 0.0 {
+            return Ok(tb);
+        }
+        let mut failure = None;
+        let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
+        let event = &mut self.hooks.event;
+        let located = brent(
+            |s| match event(i, s, &stepper.dense(s)) {
+                Ok(g) => g,
+                Err(e) => {
+                    failure.get_or_insert(e);
+                    f64::NAN
+                }
+            },
+            ta,
+            tb,
+            2.0 * f64::EPSILON * scale,
+            EVENT_ITERATIONS,
+        );
+        if let Some(e) = failure {
+            return Err(Halt::Python(e));
+        }
+        located.ok_or_else(|| {
+            Halt::Failed(format!(
+                "event {i} could not be located in [{ta}, {tb}] (its function is not finite \
+                 there)"
+            ))
+        })
+    }
+
+    /// The events on the last step of `stepper`, which ends at `(t, y)` after projection
+    /// (`raw`: the step end before it), in the order of time; the terminal one, if any, with
+    /// its (projected) state.
+    fn on_step(
+        &mut self,
+        stepper: &dyn Stepper<N>,
+        t: f64,
+        y: &[f64; N],
+        raw: &[f64; N],
+        project: &dyn Fn([f64; N]) -> [f64; N],
+    ) -> Result<Option<(f64, [f64; N])>, Halt> {
+        let ta = stepper.t_prev();
+        let dir = if t >= ta { 1.0 } else { -1.0 };
+        let mut found: Vec<(f64, usize)> = vec![];
+        for i in 0..self.g_prev.len() {
+            let g1 = (self.hooks.event)(i, t, raw).map_err(Halt::Python)?;
+            if crosses(self.g_prev[i], g1, self.hooks.rules[i].direction) {
+                found.push((self.locate(i, g1, stepper)?, i));
+            }
+            self.g_prev[i] = if raw == y {
+                g1
+            } else {
+                (self.hooks.event)(i, t, y).map_err(Halt::Python)?
+            };
+        }
+        found.sort_by(|a, b| ((a.0 - ta) * dir).total_cmp(&((b.0 - ta) * dir)));
+        for (te, i) in found {
+            let ye = project(if te == t { *raw } else { stepper.dense(te) });
+            self.t_events[i].push(te);
+            self.y_events[i].push(ye);
+            let rule = self.hooks.rules[i];
+            if rule.terminal > 0 && self.t_events[i].len() >= rule.terminal {
+                return Ok(Some((te, ye)));
+            }
+        }
+        Ok(None)
+    }
+}
+
 /// Integrate `sys` from `(t0, y0)` to `t1` (either direction) with `settings`, reporting
-/// states at `output`, locating the events of `hooks`. Fails only with the error of a hook;
-/// a failure of the integrator is returned as [`Ending::Failed`] with what was computed.
+/// states at `output`, locating the events of `hooks`, keeping the dense output of every step
+/// if `dense`. Fails only with the error of a hook or invalid settings; a failure of the
+/// integrator is returned as [`Ending::Failed`] with what was computed.
 #[allow(clippy::too_many_arguments)]
 pub fn drive<S: OdeSystem<N>, const N: usize>(
-    body: &Body,
+    body: &impl AsBall,
     sys: &S,
     t0: f64,
     y0: [f64; N],
     t1: f64,
     settings: &Settings,
     output: Output<'_>,
-    keep_knots: bool,
+    dense: bool,
     hooks: Hooks<'_, N>,
-) -> PyResult<Run<N>> {
-    let start = Instant::now();
-    let dir = if t1 >= t0 { 1.0 } else { -1.0 };
-    let projector = Projector::new(body, &y0, settings.project);
-    let initial = {
-        let x: [f64; 6] = std::array::from_fn(|i| y0[i]);
-        Integrals::at(body, &x).values()
-    };
-    let mut drift = DriftTracker {
-        initial,
-        last: initial,
-        max: [0.0; 5],
-    };
-    let n_events = hooks.rules.len();
-    let mut run = Run {
-        t: vec![],
-        y: vec![],
-        t_events: vec![vec![]; n_events],
-        y_events: vec![vec![]; n_events],
-        knots: vec![],
-        t_last: t0,
-        y_last: y0,
-        stats: Stats::default(),
-        ending: Ending::Reached,
-        drift: BTreeMap::new(),
-        elapsed_s: 0.0,
-    };
-    let times: &[f64] = match output {
-        Output::Steps => {
-            run.t.push(t0);
-            run.y.push(y0);
-            &[]
-        }
+) -> Result<Run<N>, PyErr> {
+    let steps_output = matches!(output, Output::Steps);
+    let samples = match output {
+        Output::Steps => &[][..],
         Output::Times(times) => times,
     };
-    let steps_output = matches!(output, Output::Steps);
-    let mut next = 0;
-    while next < times.len() && times[next] == t0 {
-        run.t.push(t0);
-        run.y.push(y0);
-        next += 1;
-    }
-    if keep_knots {
-        run.knots.push((t0, y0));
-    }
-    let mut g_prev = (0..n_events)
+    // The reported states: the samples, or else the start and every step end.
+    let reported = RefCell::new(if steps_output { vec![(t0, y0)] } else { vec![] });
+    let g_prev = (0..hooks.rules.len())
         .map(|i| (hooks.event)(i, t0, &y0))
         .collect::<PyResult<Vec<f64>>>()?;
-    let mut stepper = match Stepper::new(
-        sys,
-        settings.method,
-        t0,
-        y0,
-        t1,
-        settings.rtol,
-        settings.atol,
-        None,
-    ) {
-        Ok(s) => s,
-        Err(e) => {
-            run.ending = Ending::Failed(e.to_string());
-            run.drift = drift.report();
-            return Ok(run);
-        }
+    let n_events = g_prev.len();
+    let mut events = Events {
+        hooks,
+        g_prev,
+        t_events: vec![vec![]; n_events],
+        y_events: vec![vec![]; n_events],
     };
+    let level = settings
+        .project
+        .then(|| LevelSet::through(body, &reduced(&y0)));
+    let project = |mut y: [f64; N]| {
+        project_onto(level.as_ref(), &mut y);
+        y
+    };
+    let mut dense_solution = DenseSolution::default();
+    let mut halt = None;
+    let mut terminal = false;
     let mut steps = 0usize;
-    loop {
-        let ta = stepper.t();
-        if ta == t1 {
-            break;
-        }
-        let done = match stepper.step() {
-            Ok(done) => done,
-            Err(e) => {
-                run.ending = Ending::Failed(e.to_string());
-                break;
+    let observed = integrate_span(
+        body,
+        sys,
+        &Span {
+            t0,
+            y0,
+            t1,
+            samples,
+        },
+        &LibrarySettings {
+            method: settings.method,
+            rtol: settings.rtol,
+            atol: settings.atol,
+            project: settings.project,
+            ..LibrarySettings::default()
+        },
+        None,
+        &mut |t, y| {
+            reported.borrow_mut().push((t, *y));
+            Ok(())
+        },
+        &mut |t, y, stepper| {
+            if dense {
+                dense_solution.record(stepper);
             }
-        };
-        let tb = stepper.t();
-        let y_raw = stepper.y();
-        // Events on the unprojected step, in the order of time.
-        let mut found: Vec<(f64, usize)> = vec![];
-        for (i, (g0, rule)) in g_prev.iter_mut().zip(hooks.rules).enumerate() {
-            let g1 = (hooks.event)(i, tb, &y_raw)?;
-            if crosses(*g0, g1, rule.direction) {
-                let te = if g1 == 0.0 {
-                    tb
-                } else {
-                    let mut failure = None;
-                    let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
-                    let located = brent(
-                        |s| {
-                            let y = stepper.dense(s);
-                            match (hooks.event)(i, s, &y) {
-                                Ok(g) => g,
-                                Err(e) => {
-                                    failure.get_or_insert(e);
-                                    f64::NAN
-                                }
-                            }
-                        },
-                        ta,
-                        tb,
-                        2.0 * f64::EPSILON * scale,
-                        EVENT_ITERATIONS,
-                    );
-                    if let Some(e) = failure {
-                        return Err(e);
-                    }
-                    match located {
-                        Some(te) => te,
-                        None => {
-                            run.ending = Ending::Failed(format!(
-                                "event {i} could not be located in [{ta}, {tb}] (its function \
-                                 is not finite there)"
-                            ));
-                            break;
-                        }
-                    }
-                };
-                found.push((te, i));
-            }
-            *g0 = g1;
-        }
-        if matches!(run.ending, Ending::Failed(_)) {
-            break;
-        }
-        found.sort_by(|a, b| ((a.0 - ta) * dir).total_cmp(&((b.0 - ta) * dir)));
-        let mut stop = None;
-        for (te, i) in found {
-            let ye = projector.apply(if te == tb { y_raw } else { stepper.dense(te) });
-            run.t_events[i].push(te);
-            run.y_events[i].push(ye);
-            let rule = hooks.rules[i];
-            if rule.terminal > 0 && run.t_events[i].len() >= rule.terminal {
-                stop = Some((te, ye));
-                break;
-            }
-        }
-        let y_end = projector.apply(y_raw);
-        let t_until = stop.map_or(tb, |(te, _)| te);
-        while next < times.len() && (times[next] - t_until) * dir <= 0.0 {
-            let s = times[next];
-            let y = if s == tb {
-                y_end
+            let raw = if settings.project {
+                stepper.dense(t)
             } else {
-                projector.apply(stepper.dense(s))
+                *y
             };
-            drift.observe(body, &y);
-            run.t.push(s);
-            run.y.push(y);
-            next += 1;
-        }
-        if let Some((te, ye)) = stop {
+            let (next, end) = match events.on_step(stepper, t, y, &raw, &project) {
+                Err(h) => {
+                    halt = Some(h);
+                    return Ok(Next::Stop);
+                }
+                Ok(Some((te, ye))) => {
+                    terminal = true;
+                    (Next::StopAt { t: te, y: ye }, (te, ye))
+                }
+                Ok(None) => (Next::Continue, (t, *y)),
+            };
             if steps_output {
-                run.t.push(te);
-                run.y.push(ye);
+                reported.borrow_mut().push(end);
             }
-            drift.observe(body, &ye);
-            (run.t_last, run.y_last) = (te, ye);
-            if keep_knots {
-                run.knots.push((tb, y_end));
+            steps += 1;
+            if next == Next::Continue && steps % SIGNAL_CHECK_STEPS == 0 {
+                if let Err(e) = (events.hooks.interrupt)() {
+                    halt = Some(Halt::Python(e));
+                    return Ok(Next::Stop);
+                }
             }
-            run.ending = Ending::Terminal;
-            break;
-        }
-        if settings.project {
-            stepper.set_state(y_end);
-            for (i, g) in g_prev.iter_mut().enumerate() {
-                *g = (hooks.event)(i, tb, &y_end)?;
-            }
-        }
-        drift.observe(body, &y_end);
-        if steps_output {
-            run.t.push(tb);
-            run.y.push(y_end);
-        }
-        if keep_knots {
-            run.knots.push((tb, y_end));
-        }
-        (run.t_last, run.y_last) = (tb, y_end);
-        steps += 1;
-        if steps % SIGNAL_CHECK_STEPS == 0 {
-            (hooks.interrupt)()?;
-        }
-        if done {
-            break;
-        }
-    }
-    run.stats = stepper.stats();
-    run.drift = drift.report();
-    run.elapsed_s = start.elapsed().as_secs_f64();
-    Ok(run)
+            Ok(next)
+        },
+    )
+    .map_err(crate::convert::python_error)?;
+    let ending = match (halt, observed.failure) {
+        (Some(Halt::Python(e)), _) => return Err(e),
+        (Some(Halt::Failed(m)), _) => Ending::Failed(m),
+        (None, Some(e)) => Ending::Failed(e.to_string()),
+        (None, None) if terminal => Ending::Terminal,
+        (None, None) => Ending::Reached,
+    };
+    let reported = reported.into_inner();
+    let summary = observed.summary;
+    Ok(Run {
+        t: reported.iter().map(|r| r.0).collect(),
+        y: reported.iter().map(|r| r.1).collect(),
+        t_events: events.t_events,
+        y_events: events.y_events,
+        dense: dense_solution,
+        t_last: observed.t,
+        y_last: observed.y,
+        stats: Stats {
+            steps: summary.steps,
+            rejected: summary.rejected,
+            rhs_evals: summary.rhs_evals,
+        },
+        ending,
+        drift: summary.integrals,
+        elapsed_s: summary.elapsed_s,
+    })
 }

@@ -6,8 +6,8 @@
 //! array `(6, k)`, as in SciPy. Every formula lives in the library; this crate converts
 //! arguments and results, releases the interpreter lock while the library computes, and turns
 //! the library's errors into `ValueError` (bad input, naming the argument) or `RuntimeError`.
-//! One file per topic: the body, the problem and `simulate` (with its step loop, stepper,
-//! dense output and solution), the exact solution, the Hamiltonian flows of the first
+//! One file per topic: the body, the problem and `simulate` (with the events and the
+//! dense output on the library's driver, and the solution), the exact solution, the Hamiltonian flows of the first
 //! bracket, the steady motions, the audit.
 
 mod audit;
@@ -20,7 +20,6 @@ mod flows;
 mod problem;
 mod solution;
 mod steady;
-mod stepper;
 mod sweep;
 
 use pyo3::prelude::*;

@@ -277,7 +277,7 @@ impl PyProblem {
         } else {
             Output::Times(output)
         };
-        let run = py.detach(|| {
+        let mut run = py.detach(|| {
             drive(
                 &body,
                 sys,
@@ -294,17 +294,12 @@ impl PyProblem {
                 },
             )
         })?;
-        let sol = dense_output.then(|| {
-            DenseOutput::new(
-                body,
-                self.method,
-                self.rtol,
-                self.atol,
-                self.project.then_some(&y0),
-                &run.knots,
-                run.t_last,
-            )
-        });
+        let dense = std::mem::take(&mut run.dense);
+        let sol = if dense_output {
+            DenseOutput::new(body, self.project, dense, &y0, run.t_last)
+        } else {
+            None
+        };
         Solution::from_run(
             py,
             &body,

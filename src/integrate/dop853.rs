@@ -94,7 +94,7 @@ fn stages<S: OdeSystem<N>, const N: usize>(
 /// Hairer's initial step size guess `HINIT` for a method of order `order`, given
 /// `f0 = f(t, y)` (one right-hand-side call).
 #[allow(clippy::too_many_arguments)] // Hairer's argument list
-pub(super) fn hinit<S: OdeSystem<N>, const N: usize>(
+pub fn hinit<S: OdeSystem<N>, const N: usize>(
     sys: &S,
     t: f64,
     y: &[f64; N],

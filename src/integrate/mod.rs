@@ -10,8 +10,10 @@
 //!   last step, the state, the counters); [`drive`]: the one step loop, with dense
 //!   samples, projection onto invariant manifolds, event location and a per-step
 //!   observer that can stop the run; [`solve`] and [`solve_dense`] are two uses of it;
-//! * [`Vern9`]: Verner's 9(8) pair with its 9th-order interpolant (not yet a
-//!   [`Stepper`]: it has its own step loop, like [`Dop853`]'s fixed-step solver);
+//! * [`Vern9`]: Verner's 9(8) pair with its 9th-order interpolant;
+//! * [`Taylor`]: the Taylor-series method of adaptive order and step (Jorba–Zou) on the field
+//!   recorded into an expression tape ([`OdeSystem::record`]);
+//! * [`Method`] names them, [`stepper`] builds the one chosen (and resolves `auto`);
 //! * [`brent`]: a bracketing scalar root finder.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
@@ -21,21 +23,31 @@ mod dop853;
 mod event;
 mod rk4;
 pub mod tableau;
+pub mod taylor;
 mod vern9;
 pub mod vern9_tableau;
 
 use std::fmt;
 use std::str::FromStr;
 
-pub use dop853::{fixed_step_solve, Dop853};
+pub use dop853::{fixed_step_solve, hinit, Dop853};
 pub use event::brent;
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
-pub use vern9::{vern9_fixed_step_solve, Vern9};
+pub use taylor::Taylor;
+pub use vern9::Vern9;
 
 /// A first-order system `y' = f(t, y)` of fixed dimension `N`, in plain `f64`.
 pub trait OdeSystem<const N: usize> {
     /// The right-hand side `f(t, y)`.
     fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N];
+
+    /// The same field evaluated on tape variables, which records it for the Taylor method
+    /// ([`taylor::Tape`]): a system whose field is written generic over
+    /// [`Scalar`](crate::scalar::Scalar) returns `Some(field(t, y))`, the same generic code
+    /// as [`OdeSystem::rhs`]. `None` (the default): the system cannot be recorded.
+    fn record(&self, _t: taylor::Var, _y: &[taylor::Var; N]) -> Option<[taylor::Var; N]> {
+        None
+    }
 }
 
 impl<F, const N: usize> OdeSystem<N> for F
@@ -56,6 +68,13 @@ pub const DEFAULT_RK4_STEPS: usize = 10_000;
 pub enum Method {
     /// Adaptive DOP853 (see [`Dop853`]).
     Dop853,
+    /// Adaptive Verner 9(8) with its interpolant (see [`Vern9`]).
+    Vern9,
+    /// Taylor series of adaptive order and step (see [`Taylor`]); needs a system that can be
+    /// recorded ([`OdeSystem::record`]).
+    Taylor,
+    /// The fastest of the above for the requested tolerance ([`Method::resolve`]).
+    Auto,
     /// Classical Runge–Kutta of order 4 with a fixed number of equal steps.
     Rk4 {
         /// Number of equal steps over the whole interval.
@@ -63,20 +82,42 @@ pub enum Method {
     },
 }
 
+/// What `auto` picks: the method that reached the error of a tolerance fastest in the
+/// work–precision benchmark (BENCHMARKS.md, section "Work-precision", three cases to t = 1000):
+/// `(tol_min, method)` rows, the first with `tol >= tol_min` wins.
+pub const AUTO_TABLE: [(f64, Method); 2] = [(1e-6, Method::Vern9), (0.0, Method::Taylor)];
+
+impl Method {
+    /// The method that runs for the tolerance `tol = min(rtol, atol)`: [`AUTO_TABLE`] for
+    /// [`Method::Auto`], the method itself otherwise.
+    pub fn resolve(self, tol: f64) -> Method {
+        match self {
+            Method::Auto => AUTO_TABLE
+                .iter()
+                .find(|(tol_min, _)| tol >= *tol_min)
+                .map_or(Method::Taylor, |&(_, m)| m),
+            other => other,
+        }
+    }
+}
+
 /// Error returned when a [`Method`] name cannot be parsed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown integration method {0:?}: expected \"dop853\", \"rk4\" or \"rk4:<steps>\" with steps > 0")]
+#[error("unknown integration method {0:?}: expected \"dop853\", \"vern9\", \"taylor\", \"auto\", \"rk4\" or \"rk4:<steps>\" with steps > 0")]
 pub struct ParseMethodError(pub String);
 
 impl FromStr for Method {
     type Err = ParseMethodError;
 
-    /// Parses `"dop853"`, `"rk4"` (with [`DEFAULT_RK4_STEPS`] steps) or
-    /// `"rk4:<steps>"`, ignoring ASCII case.
+    /// Parses `"dop853"`, `"vern9"`, `"taylor"`, `"auto"`, `"rk4"` (with
+    /// [`DEFAULT_RK4_STEPS`] steps) or `"rk4:<steps>"`, ignoring ASCII case.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let lower = s.trim().to_ascii_lowercase();
         match lower.as_str() {
             "dop853" => Ok(Method::Dop853),
+            "vern9" => Ok(Method::Vern9),
+            "taylor" => Ok(Method::Taylor),
+            "auto" => Ok(Method::Auto),
             "rk4" => Ok(Method::Rk4 {
                 steps: DEFAULT_RK4_STEPS,
             }),
@@ -91,20 +132,42 @@ impl FromStr for Method {
 }
 
 impl serde::Serialize for Method {
-    /// As its name, `"dop853"` or `"rk4:<steps>"`.
+    /// As its name, `"dop853"`, `"vern9"`, `"taylor"`, `"auto"` or `"rk4:<steps>"`.
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         serializer.collect_str(self)
     }
 }
 
 impl fmt::Display for Method {
-    /// Writes `"dop853"` or `"rk4:<steps>"`, which [`FromStr`] parses back.
+    /// Writes the name that [`FromStr`] parses back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Method::Dop853 => write!(f, "dop853"),
+            Method::Vern9 => write!(f, "vern9"),
+            Method::Taylor => write!(f, "taylor"),
+            Method::Auto => write!(f, "auto"),
             Method::Rk4 { steps } => write!(f, "rk4:{steps}"),
         }
     }
+}
+
+/// The stepper of `method` for `sys` from `(t0, y0)` towards `t_end` with the tolerances and
+/// limits of `opts` ([`Method::Auto`] resolved for `min(rtol, atol)`; RK4 takes its equal steps
+/// and ignores `opts`). Errors of the stepper's constructor.
+pub fn stepper<'a, S: OdeSystem<N>, const N: usize>(
+    method: Method,
+    sys: &'a S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    opts: &Options,
+) -> Result<Box<dyn Stepper<N> + 'a>, IntegrateError> {
+    Ok(match method.resolve(opts.rtol.min(opts.atol)) {
+        Method::Dop853 => Box::new(Dop853::new(sys, t0, y0, t_end, opts)?),
+        Method::Vern9 => Box::new(Vern9::new(sys, t0, y0, t_end, opts)?),
+        Method::Taylor | Method::Auto => Box::new(Taylor::new(sys, t0, y0, t_end, opts)?),
+        Method::Rk4 { steps } => Box::new(Rk4::new(sys, t0, y0, t_end, steps)),
+    })
 }
 
 /// Options of the adaptive integrator.
@@ -220,6 +283,14 @@ pub enum IntegrateError {
     NonFinite {
         /// Time at which it was detected.
         t: f64,
+    },
+    /// The method cannot integrate this system.
+    #[error("method {method} cannot integrate this system: {reason}")]
+    Unsupported {
+        /// The method.
+        method: &'static str,
+        /// Why not.
+        reason: &'static str,
     },
 }
 

@@ -7,14 +7,16 @@
 //! 8th-order solution, the step-size controller and initial step of [`Dop853`](super::Dop853)
 //! with exponent 1/9, and compensated summation of the update
 //! ([`compensated_add`]). The interpolant costs nine more right-hand-side calls, made only
-//! when a step's dense output is first asked for.
+//! when a step's dense output is first asked for. A [`Stepper`]: it runs in the one driver
+//! [`drive`](super::drive); [`Vern9::fixed_steps`] takes equal steps without error control
+//! (for convergence-order studies) through the same step code.
 
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
 use super::dop853::hinit;
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use super::{IntegrateError, OdeSystem, Options, Stats};
+use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit used in the step-size-too-small test.
 const UROUND: f64 = 2.3e-16;
@@ -99,6 +101,8 @@ pub struct Vern9<'a, S, const N: usize> {
     compensated: bool,
     reject: bool,
     done: bool,
+    /// Equal steps of size `h` without error control ([`Vern9::fixed_steps`]).
+    fixed: bool,
     /// Stages 17..=25 of the last accepted step, computed on the first dense request.
     extra: Cell<Option<[[f64; N]; STAGES - 17]>>,
     stats: Cell<Stats>,
@@ -169,14 +173,40 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
             compensated: opts.compensated,
             reject: false,
             done,
+            fixed: false,
             extra: Cell::new(None),
             stats: Cell::new(stats),
         })
     }
 
-    /// Performs one accepted step and returns `Ok(true)` once `t_end` is reached (the last
-    /// step lands exactly on it). Errors as for [`Dop853::step`](super::Dop853::step).
-    pub fn step(&mut self) -> Result<bool, IntegrateError> {
+    /// Prepares `steps` equal steps from `(t0, y0)` to `t_end` without error control (for
+    /// convergence-order studies); the stages of the error estimate are skipped.
+    pub fn fixed_steps(
+        sys: &'a S,
+        t0: f64,
+        y0: [f64; N],
+        t_end: f64,
+        steps: usize,
+    ) -> Result<Self, IntegrateError> {
+        if steps == 0 {
+            return Err(IntegrateError::InvalidOption {
+                name: "steps",
+                value: 0.0,
+                rule: "must be > 0",
+            });
+        }
+        let h = (t_end - t0) / steps as f64;
+        let opts = Options {
+            h_init: (h != 0.0).then_some(h),
+            max_steps: steps,
+            ..Options::default()
+        };
+        let mut solver = Self::new(sys, t0, y0, t_end, &opts)?;
+        solver.fixed = true;
+        Ok(solver)
+    }
+
+    fn advance(&mut self) -> Result<bool, IntegrateError> {
         if self.done {
             return Ok(true);
         }
@@ -208,18 +238,28 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
             }
             let k = &mut self.k;
             k[0] = self.f;
-            stages(self.sys, self.t, h, &self.y, k, 1..STEP_STAGES);
-            stats.rhs_evals += STEP_STAGES - 1;
+            // The last stage only serves the error estimate (B[15] = 0).
+            let used = if self.fixed {
+                STEP_STAGES - 1
+            } else {
+                STEP_STAGES
+            };
+            stages(self.sys, self.t, h, &self.y, k, 1..used);
+            stats.rhs_evals += used - 1;
             let inc = weighted(&B, k);
-            let est = weighted(&E, k);
-            let mut err = 0.0;
-            for i in 0..N {
-                let y_new = self.y[i] + h * inc[i];
-                let sk = self.atol + self.rtol * self.y[i].abs().max(y_new.abs());
-                err += (est[i] / sk) * (est[i] / sk);
-            }
-            err = h.abs() * (err / N as f64).sqrt();
-            let fac = (SAFE * err.powf(-EXPO)).clamp(FAC_MIN, FAC_MAX);
+            let (err, fac) = if self.fixed {
+                (0.0, 1.0)
+            } else {
+                let est = weighted(&E, k);
+                let mut err = 0.0;
+                for i in 0..N {
+                    let y_new = self.y[i] + h * inc[i];
+                    let sk = self.atol + self.rtol * self.y[i].abs().max(y_new.abs());
+                    err += (est[i] / sk) * (est[i] / sk);
+                }
+                err = h.abs() * (err / N as f64).sqrt();
+                (err, (SAFE * err.powf(-EXPO)).clamp(FAC_MIN, FAC_MAX))
+            };
             if err <= 1.0 {
                 let t_new = if last { self.t_end } else { self.t + h };
                 let mut y_new = self.y;
@@ -266,24 +306,42 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
             stats.rejected += 1;
         }
     }
+}
+
+impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
+    /// One accepted step; `Ok(true)` once `t_end` is reached (the last step lands exactly on
+    /// it). Errors as for [`Dop853`](super::Dop853)'s step.
+    fn step(&mut self) -> Result<bool, IntegrateError> {
+        self.advance()
+    }
+
+    fn t_end(&self) -> f64 {
+        self.t_end
+    }
+
+    // The size of the last accepted step is `h_last`; `h` is the proposal for the next one.
+    #[allow(clippy::misnamed_getters)]
+    fn h(&self) -> f64 {
+        self.h_last
+    }
 
     /// Current time.
-    pub fn t(&self) -> f64 {
+    fn t(&self) -> f64 {
         self.t
     }
 
     /// Current state.
-    pub fn y(&self) -> &[f64; N] {
+    fn y(&self) -> &[f64; N] {
         &self.y
     }
 
     /// Start time of the last accepted step (`t0` before the first step).
-    pub fn t_prev(&self) -> f64 {
+    fn t_prev(&self) -> f64 {
         self.t_prev
     }
 
     /// Work counters so far.
-    pub fn stats(&self) -> Stats {
+    fn stats(&self) -> Stats {
         self.stats.get()
     }
 
@@ -293,7 +351,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
     /// [`set_state`](Self::set_state). The first call after a step computes the nine extra
     /// stages of the interpolant (nine right-hand-side calls); later calls on the same step
     /// are free. Before the first step it returns the initial state.
-    pub fn dense(&self, t: f64) -> [f64; N] {
+    fn dense(&self, t: f64) -> [f64; N] {
         if self.stats.get().steps == 0 {
             return self.y;
         }
@@ -332,7 +390,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
 
     /// Replaces the current state after a step (e.g. a projection). Recomputes the first
     /// stage of the next step (one right-hand-side call) and clears the summation residue.
-    pub fn set_state(&mut self, y: [f64; N]) {
+    fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.carry = [0.0; N];
         self.f = self.sys.rhs(self.t, &self.y);
@@ -340,27 +398,4 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
         stats.rhs_evals += 1;
         self.stats.set(stats);
     }
-}
-
-/// Integrates `sys` from `(t0, y0)` to `t_end` with `n` equal Verner 9 steps without error
-/// control (for convergence-order studies); returns `y(t_end)`.
-pub fn vern9_fixed_step_solve<S: OdeSystem<N>, const N: usize>(
-    sys: &S,
-    t0: f64,
-    y0: [f64; N],
-    t_end: f64,
-    n: usize,
-) -> [f64; N] {
-    let h = (t_end - t0) / n as f64;
-    let mut y = y0;
-    let mut carry = [0.0; N];
-    let mut k = [[0.0; N]; STAGES];
-    for step in 0..n {
-        let t = t0 + step as f64 * h;
-        k[0] = sys.rhs(t, &y);
-        stages(sys, t, h, &y, &mut k, 1..STEP_STAGES - 1);
-        let inc = weighted(&B, &k);
-        compensated_add(&mut y, &mut carry, &std::array::from_fn(|i| h * inc[i]));
-    }
-    y
 }

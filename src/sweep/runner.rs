@@ -1,18 +1,35 @@
 //! Running a sweep: the case of each run, one run as `routh simulate` does it plus the
 //! nutation from events and from the quadrature, and many runs on a pool of threads,
-//! handed to a writer chunk by chunk.
+//! handed to a writer chunk by chunk. With DOP853 the runs of one body are integrated
+//! together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the one-at-a-time
+//! integrator: the rows are the same, bit for bit, only faster.
 
 use super::design::Design;
 use super::record::{NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
-use super::turning::TurningPoints;
+use super::turning::{NutationEvents, TurningPoints};
+use crate::ball::AsBall;
+use crate::batch::{self, Field, Job, LaneEnd, Queue, LANES};
+use crate::body::Body;
 use crate::case::Case;
 use crate::error::{Result, RouthError};
-use crate::integrate::Method;
+use crate::integrate::{Method, Options, Stepper};
 use crate::quadrature::{ExactSolution, Motion};
-use crate::simulate::{integrate_observed, ReducedSystem, Settings};
+use crate::scalar::Scalar;
+use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
+use crate::state::State;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+/// The reduced field (mg-eq) for the batched integrator: the one generic
+/// [`crate::field::vector_field`], on lanes or on `f64`.
+impl<B: AsBall> Field<6> for ReducedSystem<'_, B> {
+    #[inline(always)]
+    fn eval<D: Scalar>(&self, y: &[D; 6]) -> [D; 6] {
+        crate::field::vector_field(self.0, y)
+    }
+}
 
 /// A sweep ready to run: the base case, the design, the settings of every run.
 #[derive(Debug, Clone)]
@@ -24,6 +41,91 @@ pub struct Sweep {
     design: Design,
     /// The settings of every run.
     pub settings: Settings,
+    /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
+    /// method is DOP853 (the default, `true`); `false` runs them one at a time. The rows are
+    /// the same, bit for bit: only the speed differs.
+    pub batch: bool,
+}
+
+/// A run waiting for a lane: its place among the rows, its number, case and initial state.
+struct Pending {
+    slot: usize,
+    k: u64,
+    case: Case,
+    x0: [f64; 6],
+}
+
+/// A run in a lane: what [`integrate_observed`] tracks along a run (the drift of the
+/// integrals, the turning points, the wall time).
+struct InLane<'b> {
+    run: &'b Pending,
+    drift: DriftTracker,
+    turning: TurningPoints<'b>,
+    start: Instant,
+}
+
+/// The runs of one body fed to the batched integrator, each reduced to its row as
+/// [`Sweep::run`] does it.
+struct LaneQueue<'b, I> {
+    sweep: &'b Sweep,
+    body: &'b Body,
+    pending: I,
+    lanes: [Option<InLane<'b>>; LANES],
+    rows: &'b mut [Option<Row>],
+    stop: &'b AtomicBool,
+}
+
+impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
+    fn next(&mut self, lane: usize) -> Option<Job<6>> {
+        if self.stop.load(Ordering::Relaxed) {
+            return None;
+        }
+        let run = self.pending.next()?;
+        self.lanes[lane] = Some(InLane {
+            run,
+            drift: DriftTracker::new(self.body, &run.x0),
+            turning: TurningPoints::new(self.body, &run.x0),
+            start: Instant::now(),
+        });
+        Some(Job {
+            t0: 0.0,
+            y0: run.x0,
+            t_end: self.sweep.settings.t_end,
+        })
+    }
+
+    /// As the observer of [`Sweep::run`]: the drift at the step end, then the turning points.
+    fn step(&mut self, lane: usize, step: &dyn Stepper<6>) {
+        if let Some(run) = self.lanes[lane].as_mut() {
+            run.drift.observe(self.body, step.y());
+            run.turning.observe(step);
+        }
+    }
+
+    fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+        let Some(done) = self.lanes[lane].take() else {
+            return;
+        };
+        let (sweep, run) = (self.sweep, done.run);
+        self.rows[run.slot] = Some(match end.failure {
+            Some(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
+            None => {
+                let summary = Summary {
+                    method: sweep.settings.method.to_string(),
+                    t_end: sweep.settings.t_end,
+                    steps: end.stats.steps,
+                    rejected: end.stats.rejected,
+                    rhs_evals: end.stats.rhs_evals,
+                    projected: false,
+                    initial_state: State::from_array(&run.x0),
+                    final_state: State::from_array(&end.y),
+                    integrals: done.drift.report(),
+                    elapsed_s: done.start.elapsed().as_secs_f64(),
+                };
+                sweep.finished(run.k, self.body, &run.case, summary, done.turning.summary())
+            }
+        });
+    }
 }
 
 /// The settings given beside the case file (on the command line or in Python); those left
@@ -112,6 +214,7 @@ impl Sweep {
             base,
             design,
             settings,
+            batch: true,
         };
         (0..sweep.runs())
             .into_par_iter()
@@ -182,27 +285,94 @@ impl Sweep {
         })
     }
 
-    /// Run number `k`: the integration of `routh simulate` on the run's case (the same
-    /// numbers, bit for bit), the turning points along it, and the quadrature when the body
-    /// is a Routh sphere. A failure (or a panic) becomes a row with status `failed`.
-    pub fn run(&self, k: u64) -> Row {
-        let values = self.design.point(k);
-        let failed = |message: String| Row {
+    /// A row of run `k` that could not be done, with the reason.
+    fn failed(&self, k: u64, message: String) -> Row {
+        Row {
             run: k,
-            values: values.clone(),
+            values: self.design.point(k),
             status: Status::Failed,
             message,
             summary: None,
             events: None,
             quadrature: None,
+        }
+    }
+
+    /// The case of run `k`, its body and its initial state `(gamma, M)`.
+    fn start(&self, k: u64) -> Result<(Case, Body, [f64; 6])> {
+        let case = self.case_of(k).map_err(|e| RouthError::Case {
+            file: self.source.clone(),
+            message: e.to_string(),
+        })?;
+        let body = case.body("routh sweep")?;
+        let x0 = case.initial.to_array();
+        Ok((case, body, x0))
+    }
+
+    /// The row of run `k` whose integration gave `summary` and `events`: with the quadrature's
+    /// nutation when the body is a Routh sphere.
+    fn finished(
+        &self,
+        k: u64,
+        body: &Body,
+        case: &Case,
+        summary: Summary,
+        events: NutationEvents,
+    ) -> Row {
+        let (quadrature, message) = if body.is_symmetric() {
+            match ExactSolution::new(body, &case.initial) {
+                Ok(exact) => {
+                    let precession = match &exact.motion {
+                        Motion::Nutation(n) => Some(n.advance),
+                        Motion::Steady { .. } => None,
+                    };
+                    (
+                        Some(NutationQuadrature {
+                            period: exact.period(),
+                            precession,
+                        }),
+                        String::new(),
+                    )
+                }
+                Err(e) => (None, format!("no quadrature: {e}")),
+            }
+        } else {
+            (
+                None,
+                "no quadrature: the body is not a Routh sphere (I1 != I2)".into(),
+            )
         };
+        Row {
+            run: k,
+            values: self.design.point(k),
+            status: Status::Ok,
+            message,
+            summary: Some(summary),
+            events: Some(events),
+            quadrature,
+        }
+    }
+
+    /// The rows of `attempt`, or, if it panicked, `fallback` of the panic's message.
+    fn settle<T>(attempt: std::thread::Result<T>, fallback: impl FnOnce(String) -> T) -> T {
+        attempt.unwrap_or_else(|panic| {
+            fallback(format!(
+                "internal error (panic): {}",
+                panic
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default()
+            ))
+        })
+    }
+
+    /// Run number `k`: the integration of `routh simulate` on the run's case (the same
+    /// numbers, bit for bit), the turning points along it, and the quadrature when the body
+    /// is a Routh sphere. A failure (or a panic) becomes a row with status `failed`.
+    pub fn run(&self, k: u64) -> Row {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let case = self.case_of(k).map_err(|e| RouthError::Case {
-                file: self.source.clone(),
-                message: e.to_string(),
-            })?;
-            let x0 = case.initial.to_array();
-            let body = case.body("routh sweep")?;
+            let (case, body, x0) = self.start(k)?;
             let mut turning = TurningPoints::new(&body, &x0);
             let observed = integrate_observed(
                 &body,
@@ -213,54 +383,87 @@ impl Sweep {
                 &mut |_, _| Ok(()),
                 &mut |step| turning.observe(step),
             )?;
-            let summary = match observed.failure {
-                Some(e) => return Err(e.into()),
-                None => observed.summary,
-            };
-            let (quadrature, message) = if body.is_symmetric() {
-                match ExactSolution::new(&body, &case.initial) {
-                    Ok(exact) => {
-                        let precession = match &exact.motion {
-                            Motion::Nutation(n) => Some(n.advance),
-                            Motion::Steady { .. } => None,
-                        };
-                        (
-                            Some(NutationQuadrature {
-                                period: exact.period(),
-                                precession,
-                            }),
-                            String::new(),
-                        )
-                    }
-                    Err(e) => (None, format!("no quadrature: {e}")),
-                }
-            } else {
-                (
-                    None,
-                    "no quadrature: the body is not a Routh sphere (I1 != I2)".into(),
-                )
-            };
-            Ok::<_, RouthError>(Row {
-                run: k,
-                values: values.clone(),
-                status: Status::Ok,
-                message,
-                summary: Some(summary),
-                events: Some(turning.summary()),
-                quadrature,
-            })
+            match observed.failure {
+                Some(e) => Err(e.into()),
+                None => Ok(self.finished(k, &body, &case, observed.summary, turning.summary())),
+            }
         }));
+        Self::settle(
+            attempt.map(|row| row.unwrap_or_else(|e: RouthError| self.failed(k, e.to_string()))),
+            |message| self.failed(k, message),
+        )
+    }
+
+    /// Whether the runs go through the batched integrator ([`crate::batch`]): asked for
+    /// ([`Sweep::batch`]), DOP853, and a time span to integrate.
+    fn in_lanes(&self) -> bool {
+        self.batch && self.settings.method == Method::Dop853 && self.settings.t_end > 0.0
+    }
+
+    /// The runs `runs` (on this thread), in their order, the runs of each body together in
+    /// [`LANES`] lanes of the batched DOP853: each row bitwise the row of [`Sweep::run`].
+    /// Once `stop` is set no run starts. Should the batch panic, its runs are run one at a
+    /// time (where a panicking run is a failed row).
+    fn run_in_lanes(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+        let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            let mut rows: Vec<Option<Row>> = vec![None; runs.len()];
+            let mut bodies: Vec<(Body, Vec<Pending>)> = Vec::new();
+            for (slot, &k) in runs.iter().enumerate() {
+                match self.start(k) {
+                    Err(e) => rows[slot] = Some(self.failed(k, e.to_string())),
+                    Ok((case, body, x0)) => {
+                        let run = Pending { slot, k, case, x0 };
+                        match bodies.iter_mut().find(|(b, _)| *b == body) {
+                            Some((_, group)) => group.push(run),
+                            None => bodies.push((body, vec![run])),
+                        }
+                    }
+                }
+            }
+            let opts = Options {
+                rtol: self.settings.rtol,
+                atol: self.settings.atol,
+                max_steps: self.settings.max_steps,
+                ..Options::default()
+            };
+            for (body, group) in &bodies {
+                let mut queue = LaneQueue {
+                    sweep: self,
+                    body,
+                    pending: group.iter(),
+                    lanes: std::array::from_fn(|_| None),
+                    rows: &mut rows,
+                    stop,
+                };
+                batch::integrate::<_, _, 6, LANES>(&ReducedSystem(body), &opts, &mut queue)?;
+            }
+            Ok::<_, RouthError>(rows.into_iter().flatten().collect())
+        }));
+        let one_at_a_time = || {
+            runs.iter()
+                .filter(|_| !stop.load(Ordering::Relaxed))
+                .map(|&k| self.run(k))
+                .collect()
+        };
         match attempt {
-            Ok(Ok(row)) => row,
-            Ok(Err(e)) => failed(e.to_string()),
-            Err(panic) => failed(format!(
-                "internal error (panic): {}",
-                panic
-                    .downcast_ref::<String>()
-                    .cloned()
-                    .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-                    .unwrap_or_default()
-            )),
+            Ok(Ok(rows)) => rows,
+            _ => one_at_a_time(),
+        }
+    }
+
+    /// The rows of `runs` in their order, on the current rayon pool: in lanes
+    /// ([`Sweep::run_in_lanes`], in pieces of a few hundred runs) or one run at a time. Once
+    /// `stop` is set no run starts.
+    fn run_many(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+        if self.in_lanes() {
+            let piece = (runs.len() / (4 * rayon::current_num_threads())).clamp(4 * LANES, 512);
+            runs.par_chunks(piece)
+                .flat_map_iter(|part| self.run_in_lanes(part, stop))
+                .collect()
+        } else {
+            runs.par_iter()
+                .filter_map(|&k| (!stop.load(Ordering::Relaxed)).then(|| self.run(k)))
+                .collect()
         }
     }
 
@@ -276,10 +479,7 @@ impl Sweep {
         write: &mut dyn FnMut(&[Row]) -> Result<()>,
     ) -> Result<Completion> {
         for part in todo.chunks(chunk.max(1)) {
-            let rows: Vec<Row> = part
-                .par_iter()
-                .filter_map(|&k| (!stop.load(Ordering::Relaxed)).then(|| self.run(k)))
-                .collect();
+            let rows = self.run_many(part, stop);
             if !rows.is_empty() {
                 write(&rows)?;
             }
@@ -309,6 +509,7 @@ impl Sweep {
                 rule: "the thread pool must start",
             })?;
         let todo: Vec<u64> = (start..stop).collect();
-        Ok(pool.install(|| todo.par_iter().map(|&k| self.run(k)).collect()))
+        let never = AtomicBool::new(false);
+        Ok(pool.install(|| self.run_many(&todo, &never)))
     }
 }

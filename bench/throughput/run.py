@@ -1,0 +1,190 @@
+"""Throughput of many runs: trajectories per second per core, ours against heyoka and NumPy.
+
+    python3 bench/throughput/run.py [--runs 1024] [--repeat 3] [--tols 1e-12,1e-8]
+
+from the repository root. The ensemble: RUNS runs of the default body, omega = (0.5, 0.2, 8),
+tilts spread evenly over (0.05, 1.5), to t = 10 (the initial states come from routh:
+`batch_throughput states N`). On one core, in one interleaved run, for each tolerance:
+* routh one at a time: DOP853, one run after the other (the sweep's `--no-batch` loop);
+* routh lanes4, lanes8: the batched DOP853 (src/batch) with 4 and 8 lanes;
+* heyoka ensemble: `ensemble_propagate_until` with one worker thread (a copy of the
+  integrator per run, as heyoka does it);
+* heyoka batch: `taylor_adaptive_batch` with heyoka's recommended SIMD width, the runs fed
+  batch by batch;
+* NumPy RK4: classical RK4 on all runs at once (arrays of RUNS), with the fixed number of steps
+  that reaches the error of our DOP853 at that tolerance (found from the h^4 law, then checked).
+Each time is the minimum of REPEAT runs (RK4: one run), heyoka's compilation excluded. The error
+of each is the largest over the runs of the max-norm error of the final state relative to the
+max norm of the reference state, the reference being routh's Vern9 at rtol = atol = 1e-15
+(checked against heyoka at tol = 1e-15). The field of heyoka and NumPy is bench/work_precision's
+model.field, the one Python definition (checked there against ours). The venv is the one of
+bench/work_precision/run.py (heyoka, NumPy from PyPI), created the same way if missing.
+Writes results.json beside this file and prints the table of BENCHMARKS.md.
+"""
+import argparse
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import time
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+sys.path.insert(0, str(ROOT / "bench" / "work_precision"))
+import model  # noqa: E402
+import run as work_precision  # noqa: E402
+
+T_END = 10.0
+OURS = ["one", "lanes4", "lanes8"]
+
+
+def setup():
+    """The venv of the work-precision benchmark, and our benchmark binary."""
+    venv = work_precision.VENV
+    if not (venv / "bin" / "python").exists():
+        work_precision.sh(sys.executable, "-m", "venv", str(venv))
+        work_precision.sh(str(venv / "bin" / "pip"), "install", "--quiet", "heyoka", "scipy", "sympy", "numpy")
+    out = work_precision.sh("cargo", "bench", "--bench", "batch_throughput", "--no-run",
+                            "--message-format=json", cwd=ROOT, capture_output=True).stdout
+    exe = [json.loads(line).get("executable") for line in out.splitlines() if '"executable"' in line]
+    return next(e for e in exe if e and "batch_throughput" in e)
+
+
+def routh(bench, mode, tol, states, repeat):
+    text = "\n".join(" ".join(repr(v) for v in x) for x in states) + "\n"
+    r = json.loads(subprocess.run([bench, mode, repr(tol), repr(T_END), str(repeat)], input=text,
+                                  capture_output=True, text=True, check=True).stdout)
+    if "error" in r:
+        raise RuntimeError(r["error"])
+    return r["time_s"], r["finals"], {"steps": r["steps"], "rhs_evals": r["rhs_evals"]}
+
+
+def error(finals, reference):
+    return max(work_precision.rel_error(x, ref) for x, ref in zip(finals, reference))
+
+
+def uptime():
+    return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--runs", type=int, default=1024)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--tols", default="1e-12,1e-8")
+    args = ap.parse_args()
+    bench = setup()
+    venv = work_precision.VENV
+    if pathlib.Path(sys.prefix).resolve() != venv.resolve():
+        os.execv(str(venv / "bin" / "python"), [str(venv / "bin" / "python"), __file__] + sys.argv[1:])
+    import heyoka as hy
+    import numpy as np
+
+    load_before = uptime()
+    states = [[float(v) for v in line.split()] for line in
+              subprocess.run([bench, "states", str(args.runs)], capture_output=True, text=True,
+                             check=True).stdout.splitlines()]
+    p, _ = model.load("default")
+    x0 = np.array(states).T.copy()  # (6, runs)
+    _, reference, _ = routh(bench, "vern9", 1e-15, states, 1)
+
+    xs = hy.make_vars("g1", "g2", "g3", "M1", "M2", "M3")
+    field = list(zip(xs, model.field(p, xs)))
+    simd = hy.recommended_simd_size()
+    n_batches = -(-args.runs // simd)
+    padded = np.concatenate([x0, np.repeat(x0[:, -1:], n_batches * simd - args.runs, axis=1)], axis=1)
+
+    def heyoka_ensemble(tol, repeat):
+        ta = hy.taylor_adaptive(field, x0[:, 0].copy(), tol=tol)
+
+        def gen(ta_copy, i):
+            ta_copy.time = 0.0
+            ta_copy.state[:] = x0[:, i]
+            return ta_copy
+
+        best, out = float("inf"), None
+        for _ in range(repeat):
+            start = time.perf_counter()
+            out = hy.ensemble_propagate_until(ta, T_END, args.runs, gen, max_workers=1)
+            best = min(best, time.perf_counter() - start)
+        return best, [list(r[0].state) for r in out], {"steps": sum(int(r[4]) for r in out),
+                                                        "order": ta.order}
+
+    def heyoka_batch(tol, repeat):
+        ta = hy.taylor_adaptive_batch(field, padded[:, :simd].copy(), tol=tol)
+        best, finals = float("inf"), None
+        for _ in range(repeat):
+            finals = np.empty_like(padded)
+            start = time.perf_counter()
+            for b in range(n_batches):
+                ta.set_time(0.0)
+                ta.state[:] = padded[:, b * simd:(b + 1) * simd]
+                ta.propagate_until(T_END)
+                finals[:, b * simd:(b + 1) * simd] = ta.state
+            best = min(best, time.perf_counter() - start)
+        return best, finals[:, :args.runs].T.tolist(), {"simd": simd, "order": ta.order}
+
+    def rk4(steps):
+        h = T_END / steps
+        x = [row.copy() for row in x0]
+        for _ in range(steps):
+            k1 = model.field(p, x)
+            k2 = model.field(p, [x[i] + 0.5 * h * k1[i] for i in range(6)])
+            k3 = model.field(p, [x[i] + 0.5 * h * k2[i] for i in range(6)])
+            k4 = model.field(p, [x[i] + h * k3[i] for i in range(6)])
+            x = [x[i] + (h / 6.0) * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]) for i in range(6)]
+        return np.array(x).T.tolist()
+
+    def numpy_rk4(target):
+        """The fewest steps (from the h^4 law, then checked) whose error is at most `target`."""
+        steps = 500
+        err = error(rk4(steps), reference)
+        while err > target:
+            steps = int(steps * 1.05 * (err / target) ** 0.25) + 1
+            start = time.perf_counter()
+            finals = rk4(steps)
+            elapsed = time.perf_counter() - start
+            err = error(finals, reference)
+        return elapsed, finals, {"steps": steps}
+
+    check = error(heyoka_ensemble(1e-15, 1)[1], reference)
+    results = {"runs": args.runs, "t_end": T_END, "repeat": args.repeat, "load_before": load_before,
+               "versions": {"heyoka": hy.__version__, "numpy": np.__version__},
+               "reference": "routh vern9 1e-15", "heyoka_1e-15_vs_reference": check, "rows": []}
+    print(f"reference: routh Vern9 at 1e-15; heyoka at 1e-15 differs from it by {check:.1e}", flush=True)
+    for tol in [float(t) for t in args.tols.split(",")]:
+        rows = []
+        for name, f in [("routh one at a time", lambda: routh(bench, "one", tol, states, args.repeat)),
+                        ("routh lanes4", lambda: routh(bench, "lanes4", tol, states, args.repeat)),
+                        ("routh lanes8", lambda: routh(bench, "lanes8", tol, states, args.repeat)),
+                        ("heyoka ensemble", lambda: heyoka_ensemble(tol, args.repeat)),
+                        ("heyoka batch", lambda: heyoka_batch(tol, args.repeat))]:
+            t, finals, extra = f()
+            rows.append({"method": name, "tol": tol, "time_s": t, "per_s": args.runs / t,
+                         "error": error(finals, reference), **extra})
+            print(f"tol {tol:.0e} {name:20} {t:8.3f} s {args.runs / t:10.0f} runs/s  "
+                  f"error {rows[-1]['error']:.1e}", flush=True)
+        target = rows[0]["error"]
+        t, finals, extra = numpy_rk4(target)
+        rows.append({"method": "NumPy RK4", "tol": tol, "time_s": t, "per_s": args.runs / t,
+                     "error": error(finals, reference), **extra})
+        print(f"tol {tol:.0e} {'NumPy RK4':20} {t:8.3f} s {args.runs / t:10.0f} runs/s  "
+              f"error {rows[-1]['error']:.1e} ({extra['steps']} steps)", flush=True)
+        results["rows"] += rows
+    results["load_after"] = uptime()
+    (HERE / "results.json").write_text(json.dumps(results, indent=1) + "\n")
+    print(f"load before: {load_before}\nload after:  {results['load_after']}")
+    print("| tol | method | runs/s per core | error vs 1e-15 reference | ratio lanes8 / this |")
+    print("|---|---|---|---|---|")
+    for tol in sorted({r["tol"] for r in results["rows"]}, reverse=True):
+        rows = [r for r in results["rows"] if r["tol"] == tol]
+        lanes = next(r for r in rows if r["method"] == "routh lanes8")
+        for r in rows:
+            note = f" ({r['steps']} steps)" if r["method"] == "NumPy RK4" else ""
+            print(f"| {tol:.0e} | {r['method']}{note} | {r['per_s']:.0f} | {r['error']:.1e} | "
+                  f"{lanes['per_s'] / r['per_s']:.2f} |")
+
+
+if __name__ == "__main__":
+    main()

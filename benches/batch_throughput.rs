@@ -1,0 +1,170 @@
+//! Our side of the throughput benchmark (`bench/throughput/run.py` drives it).
+//!
+//! `batch_throughput MODE TOL T_END REPEAT < states`: reads initial states of the default
+//! body (six numbers `gamma1 gamma2 gamma3 M1 M2 M3` a line) from stdin, integrates each to
+//! `T_END` at rtol = atol = TOL on one thread, REPEAT times, and prints one JSON object: the
+//! minimum wall time of the whole ensemble, the final states, and the summed steps and field
+//! evaluations. MODE:
+//! * `one`: one run after the other with [`Dop853`] (the sweep's `--no-batch` loop);
+//! * `lanes4`, `lanes8`: the batched DOP853 of [`routh::batch`] with 4 or 8 lanes;
+//! * `vern9`: one run after the other with [`Vern9`] (for the reference at 1e-15).
+//!
+//! `batch_throughput states N`: prints the N initial states of the benchmark, one a line: the
+//! default body with omega = (0.5, 0.2, 8) and gamma = (sin tilt, 0, cos tilt), the tilts
+//! spread evenly over (0.05, 1.5) (ends excluded), M = I_Q omega (om-m).
+//!
+//! Build with `cargo bench --bench batch_throughput --no-run`.
+
+use routh::batch::{self, Job, LaneEnd, Queue};
+use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Vern9};
+use routh::simulate::ReducedSystem;
+use routh::state::{Normalise, State};
+use routh::Body;
+use std::io::BufRead;
+use std::time::Instant;
+
+/// Collects the final states of the runs in the order of the jobs.
+struct Finals {
+    jobs: Vec<Job<6>>,
+    next: usize,
+    in_lane: Vec<usize>,
+    finals: Vec<[f64; 6]>,
+    stats: Stats,
+    failure: Option<IntegrateError>,
+}
+
+impl Queue<6> for Finals {
+    fn next(&mut self, lane: usize) -> Option<Job<6>> {
+        let job = *self.jobs.get(self.next)?;
+        self.in_lane[lane] = self.next;
+        self.next += 1;
+        Some(job)
+    }
+
+    fn step(&mut self, _lane: usize, _step: &dyn Stepper<6>) {}
+
+    fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+        self.finals[self.in_lane[lane]] = end.y;
+        self.stats.steps += end.stats.steps;
+        self.stats.rhs_evals += end.stats.rhs_evals;
+        if end.failure.is_some() {
+            self.failure = end.failure;
+        }
+    }
+}
+
+fn lanes<const L: usize>(
+    body: &Body,
+    x0: &[[f64; 6]],
+    t_end: f64,
+    opts: &Options,
+) -> Result<(Vec<[f64; 6]>, Stats), IntegrateError> {
+    let mut queue = Finals {
+        jobs: x0.iter().map(|&y0| Job { t0: 0.0, y0, t_end }).collect(),
+        next: 0,
+        in_lane: vec![0; L],
+        finals: vec![[0.0; 6]; x0.len()],
+        stats: Stats::default(),
+        failure: None,
+    };
+    batch::integrate::<_, _, 6, L>(&ReducedSystem(body), opts, &mut queue)?;
+    match queue.failure {
+        Some(e) => Err(e),
+        None => Ok((queue.finals, queue.stats)),
+    }
+}
+
+/// One run after the other with a stepper that has `new`, `step`, `y` and `stats`.
+macro_rules! one_by_one {
+    ($stepper:ident, $body:expr, $x0:expr, $t_end:expr, $opts:expr) => {{
+        let sys = ReducedSystem($body);
+        let mut finals = Vec::with_capacity($x0.len());
+        let mut total = Stats::default();
+        for &y0 in $x0 {
+            let mut s = $stepper::new(&sys, 0.0, y0, $t_end, $opts)?;
+            while !s.step()? {}
+            finals.push(*s.y());
+            total.steps += s.stats().steps;
+            total.rhs_evals += s.stats().rhs_evals;
+        }
+        Ok::<_, IntegrateError>((finals, total))
+    }};
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| a != "--bench")
+        .collect();
+    let usage =
+        "usage: batch_throughput one|lanes4|lanes8|vern9 TOL T_END REPEAT < states | states N";
+    if let [cmd, n] = &args[..] {
+        assert_eq!(cmd, "states", "{usage}");
+        let n: usize = n.parse().expect(usage);
+        for j in 0..n {
+            let tilt = 0.05 + 1.45 * (j as f64 + 0.5) / n as f64;
+            let x = State::from_omega(
+                &Body::default(),
+                [tilt.sin(), 0.0, tilt.cos()],
+                [0.5, 0.2, 8.0],
+                Normalise::Reject,
+            )
+            .expect("a valid state")
+            .to_array();
+            println!("{}", x.map(|v| format!("{v:?}")).join(" "));
+        }
+        return;
+    }
+    let (mode, tol, t_end, repeat) = match &args[..] {
+        [m, tol, t, r] => (
+            m.as_str(),
+            tol.parse::<f64>().expect(usage),
+            t.parse::<f64>().expect(usage),
+            r.parse::<usize>().expect(usage),
+        ),
+        _ => panic!("{usage}"),
+    };
+    let x0: Vec<[f64; 6]> = std::io::stdin()
+        .lock()
+        .lines()
+        .map(|line| {
+            let v: Vec<f64> = line
+                .expect("stdin")
+                .split_whitespace()
+                .map(|w| w.parse().expect("a number"))
+                .collect();
+            v.try_into().expect("six numbers a line")
+        })
+        .collect();
+    let body = Body::default();
+    let opts = Options {
+        rtol: tol,
+        atol: tol,
+        ..Options::default()
+    };
+    let mut best = f64::INFINITY;
+    let mut result = None;
+    for _ in 0..repeat.max(1) {
+        let start = Instant::now();
+        let r = match mode {
+            "one" => one_by_one!(Dop853, &body, &x0, t_end, &opts),
+            "vern9" => one_by_one!(Vern9, &body, &x0, t_end, &opts),
+            "lanes4" => lanes::<4>(&body, &x0, t_end, &opts),
+            "lanes8" => lanes::<8>(&body, &x0, t_end, &opts),
+            _ => panic!("{usage}"),
+        };
+        best = best.min(start.elapsed().as_secs_f64());
+        result = Some(r);
+    }
+    let json = match result.expect("at least one repetition") {
+        Ok((finals, stats)) => serde_json::json!({
+            "time_s": best,
+            "runs": x0.len(),
+            "steps": stats.steps,
+            "rhs_evals": stats.rhs_evals,
+            "finals": finals,
+        }),
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
+    };
+    println!("{json}");
+}

@@ -1,0 +1,44 @@
+//! Cost of one Taylor step against its order (`src/integrate/taylor`): the expansion of the
+//! default case's field (mg-eq) through one state to the orders 5, 10, 15, 20, 25, 30 (the
+//! Jorba–Zou order is 15 at tolerance 1e-12 and 20 at 1e-16). The tape's size (operations,
+//! of which products, quotients and square roots) is printed beside the times, so that the
+//! `O(n_ops p^2)` law can be checked: the time divided by `p^2` should settle to a constant as
+//! `p` grows. Run with `cargo bench --bench taylor`; figures are recorded in BENCHMARKS.md.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use routh::case::Case;
+use routh::integrate::taylor::Tape;
+use routh::simulate::ReducedSystem;
+use std::hint::black_box;
+use std::time::Duration;
+
+const ORDERS: [usize; 6] = [5, 10, 15, 20, 25, 30];
+
+fn expansion(c: &mut Criterion) {
+    let case = Case::default_case().expect("the built-in default case is valid");
+    let x = case.initial.to_array();
+    let sys = ReducedSystem(&case.ball);
+    let mut tape = Tape::record(&sys, 30).expect("the reduced system records");
+    println!(
+        "tape of (mg-eq), default case: {} operations, {} of them products, quotients or square roots",
+        tape.len(),
+        tape.nonlinear_len()
+    );
+    let mut group = c.benchmark_group("taylor expansion (default case)");
+    for p in ORDERS {
+        group.bench_with_input(BenchmarkId::from_parameter(p), &p, |b, &p| {
+            b.iter(|| {
+                tape.expand(0.0, black_box(&x), p);
+                tape.state_coefficient(0, p)
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().measurement_time(Duration::from_secs(3)).warm_up_time(Duration::from_secs(1));
+    targets = expansion
+}
+criterion_main!(benches);

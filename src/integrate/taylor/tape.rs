@@ -1,0 +1,628 @@
+//! An expression tape of a vector field, recorded once through the [`Scalar`] trait, and the
+//! recurrences that give the Taylor coefficients of every intermediate quantity from it.
+//!
+//! Recording: the field, written once generic over [`Scalar`] (e.g. (m-eq)/(mg-eq) in
+//! [`crate::field`]), is called with [`Var`]s. Each arithmetic operation on them appends a node
+//! to a thread-local recorder, with three simplifications made at record time:
+//! * constant folding: an operation on constants is a constant (the body's parameters, such as
+//!   `m R` or `2 R m G`, are folded into single numbers), with the same `f64` operation;
+//! * exact identities only: `x + 0 = x`, `x * 1 = x`, `x * (-1) = -x`, `x / 1 = x`, `x * 0 = 0`
+//!   (the last one changes at most the sign of a zero, or drops a NaN of a non-finite `x`, which
+//!   the integrator refuses anyway);
+//! * common-subexpression elimination: an operation already on the tape with the same operands
+//!   is not recorded twice (sums and products with their operands in a canonical order, which
+//!   IEEE arithmetic allows: `a + b` and `a * b` are commutative bit for bit).
+//!
+//! Compilation: the nodes that the outputs depend on are laid out in slots
+//! `[inputs y_1..y_N, time, constants, operations]` and the operations become a flat array of
+//! [`Instr`] (a `match` on a small enum per operation and order: no dynamic dispatch, no
+//! allocation). Every slot owns `stride` contiguous Taylor coefficients
+//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`), so the convolutions below read
+//! two contiguous runs.
+//!
+//! Recurrences for `w^[k]` (order `k`, given all orders below `k`; R. E. Moore, *Interval
+//! Analysis* (1966), ch. 11; A. Jorba, M. Zou, Experimental Math. 14 (2005) 99–117, sect. 2):
+//! * `w = a ± b`: `a^[k] ± b^[k]`; `w = c a`: `c a^[k]`;
+//! * `w = a b`: `sum_{j=0..k} a^[j] b^[k-j]`;
+//! * `w = a / b`: `(a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]`;
+//! * `w = sqrt(a)`: `(a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0])`;
+//! * `w = a b + c` (fused): the product's sum plus `c^[k]`.
+//!
+//! At order 0 every recurrence is the `f64` operation itself, so the tape reproduces the `f64`
+//! field bit for bit. Cost of all orders `0..p`: `O(p)` for each linear operation and
+//! `O(p^2)` for each product, quotient and square root: `O(n_ops p^2)` per step.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use crate::integrate::OdeSystem;
+use crate::scalar::Scalar;
+
+/// A recorded operation; constants as their bits (so that nodes can be hashed for
+/// common-subexpression elimination).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum Node {
+    /// State component `i`.
+    Input(u32),
+    /// The independent variable.
+    Time,
+    /// A constant that an operation needs as a series (`[c, 0, 0, ...]`).
+    Const(u64),
+    Add(u32, u32),
+    Sub(u32, u32),
+    Mul(u32, u32),
+    Div(u32, u32),
+    Neg(u32),
+    Sqrt(u32),
+    MulAdd(u32, u32, u32),
+    /// `a + c`.
+    AddC(u32, u64),
+    /// `c - a`.
+    CSub(u64, u32),
+    /// `a * c`.
+    MulC(u32, u64),
+    /// `a / c`.
+    DivC(u32, u64),
+    /// `c / a`.
+    CDiv(u64, u32),
+}
+
+/// The nodes recorded so far and the index of each (for common-subexpression elimination).
+#[derive(Default)]
+struct Recorder {
+    nodes: Vec<Node>,
+    index: HashMap<Node, u32>,
+}
+
+impl Recorder {
+    fn push(&mut self, node: Node) -> u32 {
+        if let Some(&i) = self.index.get(&node) {
+            return i;
+        }
+        let i = self.nodes.len() as u32;
+        self.nodes.push(node);
+        self.index.insert(node, i);
+        i
+    }
+}
+
+thread_local! {
+    /// The recorders of the recordings under way on this thread (innermost last).
+    static RECORDERS: RefCell<Vec<Recorder>> = const { RefCell::new(Vec::new()) };
+}
+
+fn record(node: Node) -> Var {
+    RECORDERS.with(|r| {
+        let mut stack = r.borrow_mut();
+        let recorder = stack
+            .last_mut()
+            .expect("a taylor::Var node is only used inside Tape::record");
+        Var(Value::Node(recorder.push(node)))
+    })
+}
+
+/// A number on the tape: a constant, or a node recorded by [`Tape::record`].
+///
+/// Implements [`Scalar`], so that the generic field can be called with it; its operations
+/// record themselves (folding constants). Obtained only inside [`OdeSystem::record`].
+#[derive(Debug, Clone, Copy)]
+pub struct Var(Value);
+
+#[derive(Debug, Clone, Copy)]
+enum Value {
+    Const(f64),
+    Node(u32),
+}
+
+impl Var {
+    fn node(self) -> Option<u32> {
+        match self.0 {
+            Value::Node(i) => Some(i),
+            Value::Const(_) => None,
+        }
+    }
+
+    /// The node of `self`, recording a constant as a [`Node::Const`].
+    fn as_node(self) -> u32 {
+        match self.0 {
+            Value::Node(i) => i,
+            Value::Const(c) => record(Node::Const(c.to_bits())).node().expect("a node"),
+        }
+    }
+}
+
+fn constant(c: f64) -> Var {
+    Var(Value::Const(c))
+}
+
+impl Add for Var {
+    type Output = Var;
+    fn add(self, other: Var) -> Var {
+        match (self.0, other.0) {
+            (Value::Const(a), Value::Const(b)) => constant(a + b),
+            (Value::Node(a), Value::Const(c)) | (Value::Const(c), Value::Node(a)) => {
+                if c == 0.0 {
+                    self_or(a)
+                } else {
+                    record(Node::AddC(a, c.to_bits()))
+                }
+            }
+            (Value::Node(a), Value::Node(b)) => record(Node::Add(a.min(b), a.max(b))),
+        }
+    }
+}
+
+fn self_or(a: u32) -> Var {
+    Var(Value::Node(a))
+}
+
+impl Sub for Var {
+    type Output = Var;
+    fn sub(self, other: Var) -> Var {
+        match (self.0, other.0) {
+            (Value::Const(a), Value::Const(b)) => constant(a - b),
+            // a - c = a + (-c) exactly in IEEE arithmetic.
+            (Value::Node(_), Value::Const(c)) => self + constant(-c),
+            (Value::Const(c), Value::Node(a)) => record(Node::CSub(c.to_bits(), a)),
+            (Value::Node(a), Value::Node(b)) => record(Node::Sub(a, b)),
+        }
+    }
+}
+
+impl Mul for Var {
+    type Output = Var;
+    fn mul(self, other: Var) -> Var {
+        match (self.0, other.0) {
+            (Value::Const(a), Value::Const(b)) => constant(a * b),
+            (Value::Node(a), Value::Const(c)) | (Value::Const(c), Value::Node(a)) => {
+                if c == 0.0 {
+                    constant(0.0)
+                } else if c == 1.0 {
+                    self_or(a)
+                } else if c == -1.0 {
+                    record(Node::Neg(a))
+                } else {
+                    record(Node::MulC(a, c.to_bits()))
+                }
+            }
+            (Value::Node(a), Value::Node(b)) => record(Node::Mul(a.min(b), a.max(b))),
+        }
+    }
+}
+
+impl Div for Var {
+    type Output = Var;
+    fn div(self, other: Var) -> Var {
+        match (self.0, other.0) {
+            (Value::Const(a), Value::Const(b)) => constant(a / b),
+            (Value::Node(a), Value::Const(c)) => {
+                if c == 1.0 {
+                    self_or(a)
+                } else {
+                    record(Node::DivC(a, c.to_bits()))
+                }
+            }
+            (Value::Const(c), Value::Node(a)) => record(Node::CDiv(c.to_bits(), a)),
+            (Value::Node(a), Value::Node(b)) => record(Node::Div(a, b)),
+        }
+    }
+}
+
+impl Neg for Var {
+    type Output = Var;
+    fn neg(self) -> Var {
+        match self.0 {
+            Value::Const(c) => constant(-c),
+            Value::Node(a) => record(Node::Neg(a)),
+        }
+    }
+}
+
+impl Add<f64> for Var {
+    type Output = Var;
+    fn add(self, c: f64) -> Var {
+        self + constant(c)
+    }
+}
+
+impl Sub<f64> for Var {
+    type Output = Var;
+    fn sub(self, c: f64) -> Var {
+        self - constant(c)
+    }
+}
+
+impl Mul<f64> for Var {
+    type Output = Var;
+    fn mul(self, c: f64) -> Var {
+        self * constant(c)
+    }
+}
+
+impl Div<f64> for Var {
+    type Output = Var;
+    fn div(self, c: f64) -> Var {
+        self / constant(c)
+    }
+}
+
+impl Scalar for Var {
+    fn from_f64(c: f64) -> Self {
+        constant(c)
+    }
+
+    fn sqrt(self) -> Self {
+        match self.0 {
+            Value::Const(c) => constant(c.sqrt()),
+            Value::Node(a) => record(Node::Sqrt(a)),
+        }
+    }
+
+    /// `1 / self`, as `f64::recip` computes it.
+    fn recip(self) -> Self {
+        constant(1.0) / self
+    }
+
+    /// Fused exactly where `f64`'s [`Scalar::mul_add`] is (targets with an FMA instruction),
+    /// so that order 0 of the tape is the `f64` field bit for bit.
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        if !cfg!(target_feature = "fma") {
+            return self * a + b;
+        }
+        match (self.0, a.0, b.0) {
+            (Value::Const(x), Value::Const(y), Value::Const(z)) => constant(x.mul_add(y, z)),
+            _ => record(Node::MulAdd(self.as_node(), a.as_node(), b.as_node())),
+        }
+    }
+}
+
+/// One operation of the compiled tape; its result goes to slot `first_op + position`.
+/// Operands are the offsets `slot * stride` of their coefficients; constants inline.
+#[derive(Debug, Clone, Copy)]
+enum Instr {
+    Add(u32, u32),
+    Sub(u32, u32),
+    Mul(u32, u32),
+    Div(u32, u32),
+    Neg(u32),
+    Sqrt(u32),
+    MulAdd(u32, u32, u32),
+    AddC(u32, f64),
+    CSub(f64, u32),
+    MulC(u32, f64),
+    DivC(u32, f64),
+    CDiv(f64, u32),
+}
+
+/// A field `y' = f(t, y)` of dimension `N` as a compiled expression tape, with the storage of
+/// the Taylor coefficients of all its slots up to order `max_order`.
+#[derive(Debug, Clone)]
+pub struct Tape<const N: usize> {
+    code: Vec<Instr>,
+    /// Slot of the time.
+    time: usize,
+    /// First slot written by `code`.
+    first_op: usize,
+    /// Slot of each output component `f_i`.
+    outputs: [usize; N],
+    /// Coefficients per slot: `coef[s * stride + k] = x_s^[k]`, `k <= max_order`.
+    coef: Vec<f64>,
+    /// The same, reversed within each slot: `rev[s * stride + max_order - k] = x_s^[k]`, so
+    /// that the convolutions `sum_j a^[j] b^[k-j]` read both runs forward (a dot product),
+    /// followed by `PAD` zeros that are never written: a dot product of order `k` can then run
+    /// over `k + 1` rounded up to a multiple of 4 (the extra terms pair an order above `k`
+    /// of the forward run, finite, with a zero).
+    rev: Vec<f64>,
+    max_order: usize,
+    /// `max_order + 1 + PAD`.
+    stride: usize,
+}
+
+/// Zeros after each reversed run (see [`Tape`]).
+const PAD: usize = 4;
+
+impl<const N: usize> Tape<N> {
+    /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
+    /// coefficients up to order `max_order`. `None` if the system cannot be recorded.
+    pub fn record<S: OdeSystem<N> + ?Sized>(sys: &S, max_order: usize) -> Option<Self> {
+        RECORDERS.with(|r| r.borrow_mut().push(Recorder::default()));
+        let inputs: [Var; N] = std::array::from_fn(|i| record(Node::Input(i as u32)));
+        let time = record(Node::Time);
+        let outputs = sys.record(time, &inputs);
+        let outputs = outputs.map(|out| out.map(Var::as_node));
+        let recorder = RECORDERS.with(|r| r.borrow_mut().pop().expect("pushed above"));
+        outputs.map(|out| Self::compile(&recorder.nodes, &out, max_order))
+    }
+
+    /// Lays the nodes that `outputs` depend on out in slots and builds the instruction array.
+    fn compile(nodes: &[Node], outputs: &[u32; N], max_order: usize) -> Self {
+        let mut live = vec![false; nodes.len()];
+        for &o in outputs {
+            live[o as usize] = true;
+        }
+        for i in (0..nodes.len()).rev() {
+            if live[i] {
+                for operand in operands(&nodes[i]) {
+                    live[operand as usize] = true;
+                }
+            }
+        }
+        // Slots: inputs 0..N, time N, then constants, then operations in recording order
+        // (which is topological: operands are recorded before their uses).
+        let mut slot = vec![usize::MAX; nodes.len()];
+        let mut constants = vec![];
+        let mut ops = vec![];
+        for (i, node) in nodes.iter().enumerate() {
+            match *node {
+                Node::Input(k) => slot[i] = k as usize,
+                Node::Time => slot[i] = N,
+                Node::Const(bits) if live[i] => constants.push((i, f64::from_bits(bits))),
+                _ if live[i] => ops.push(i),
+                _ => {}
+            }
+        }
+        let first_op = N + 1 + constants.len();
+        for (j, &(i, _)) in constants.iter().enumerate() {
+            slot[i] = N + 1 + j;
+        }
+        for (j, &i) in ops.iter().enumerate() {
+            slot[i] = first_op + j;
+        }
+        let stride = max_order + 1 + PAD;
+        let s = |a: u32| (slot[a as usize] * stride) as u32;
+        let code = ops
+            .iter()
+            .map(|&i| match nodes[i] {
+                Node::Add(a, b) => Instr::Add(s(a), s(b)),
+                Node::Sub(a, b) => Instr::Sub(s(a), s(b)),
+                Node::Mul(a, b) => Instr::Mul(s(a), s(b)),
+                Node::Div(a, b) => Instr::Div(s(a), s(b)),
+                Node::Neg(a) => Instr::Neg(s(a)),
+                Node::Sqrt(a) => Instr::Sqrt(s(a)),
+                Node::MulAdd(a, b, c) => Instr::MulAdd(s(a), s(b), s(c)),
+                Node::AddC(a, c) => Instr::AddC(s(a), f64::from_bits(c)),
+                Node::CSub(c, a) => Instr::CSub(f64::from_bits(c), s(a)),
+                Node::MulC(a, c) => Instr::MulC(s(a), f64::from_bits(c)),
+                Node::DivC(a, c) => Instr::DivC(s(a), f64::from_bits(c)),
+                Node::CDiv(c, a) => Instr::CDiv(f64::from_bits(c), s(a)),
+                Node::Input(_) | Node::Time | Node::Const(_) => unreachable!("not an operation"),
+            })
+            .collect::<Vec<_>>();
+        let mut tape = Tape {
+            coef: vec![0.0; (first_op + code.len()) * stride],
+            rev: vec![0.0; (first_op + code.len()) * stride],
+            code,
+            time: N,
+            first_op,
+            outputs: outputs.map(|o| slot[o as usize]),
+            max_order,
+            stride,
+        };
+        for (j, &(_, c)) in constants.iter().enumerate() {
+            tape.set(N + 1 + j, 0, c);
+        }
+        tape
+    }
+
+    /// Number of operations on the compiled tape.
+    pub fn len(&self) -> usize {
+        self.code.len()
+    }
+
+    /// Whether the tape has no operation (the field is a constant or a copy of its inputs).
+    pub fn is_empty(&self) -> bool {
+        self.code.is_empty()
+    }
+
+    /// Number of products, quotients and square roots (the operations of cost `O(k)` at order
+    /// `k`).
+    pub fn nonlinear_len(&self) -> usize {
+        self.code
+            .iter()
+            .filter(|i| {
+                matches!(
+                    i,
+                    Instr::Mul(..)
+                        | Instr::Div(..)
+                        | Instr::Sqrt(..)
+                        | Instr::MulAdd(..)
+                        | Instr::CDiv(..)
+                )
+            })
+            .count()
+    }
+
+    /// The highest order the coefficient storage holds.
+    pub fn max_order(&self) -> usize {
+        self.max_order
+    }
+
+    /// The field `f(t, y)` from the tape (order 0 of the recurrences): the same numbers, bit
+    /// for bit, as the `f64` field it was recorded from.
+    pub fn evaluate(&mut self, t: f64, y: &[f64; N]) -> [f64; N] {
+        self.seed(t, y);
+        self.order_zero();
+        self.outputs.map(|o| self.coef[o * self.stride])
+    }
+
+    /// Taylor coefficients `y^[0..=p]` of the solution through `(t, y)`: on return,
+    /// [`Tape::state_coefficient`]`(i, k)` holds `y_i^[k]` for `k <= p` (`p <= max_order`).
+    /// From `y^[k+1] = f^[k] / (k + 1)`: one pass of the tape per order.
+    pub fn expand(&mut self, t: f64, y: &[f64; N], p: usize) {
+        assert!(
+            p <= self.max_order,
+            "order {p} above the tape's {}",
+            self.max_order
+        );
+        self.seed(t, y);
+        for k in 0..p {
+            // Dot products of fixed length (unrolled) for the usual orders.
+            match (k + 1).div_ceil(4) * 4 {
+                0 => self.order_zero(),
+                _ if k == 0 => self.order_zero(),
+                4 => self.order::<4>(k),
+                8 => self.order::<8>(k),
+                12 => self.order::<12>(k),
+                16 => self.order::<16>(k),
+                20 => self.order::<20>(k),
+                24 => self.order::<24>(k),
+                28 => self.order::<28>(k),
+                32 => self.order::<32>(k),
+                _ => self.order::<0>(k),
+            }
+            let inv = 1.0 / (k + 1) as f64;
+            for i in 0..N {
+                let f = self.coef[self.outputs[i] * self.stride + k];
+                self.set(i, k + 1, f * inv);
+            }
+        }
+        // The orders above k of the forward runs meet zeros in the dot products: they must
+        // stay finite for the next expansion. A non-finite intermediate shows in the series
+        // of the state (or, if it does not, in the next expansion's, as a NaN).
+        let finite = (0..N).all(|i| self.state_series(i, p).iter().all(|v| v.is_finite()));
+        if !finite {
+            self.coef.iter_mut().for_each(|v| *v = 0.0);
+            self.rev.iter_mut().for_each(|v| *v = 0.0);
+            for i in 0..N {
+                self.set(i, 0, f64::NAN);
+            }
+        }
+    }
+
+    /// `y_i^[k]` after [`Tape::expand`].
+    #[inline(always)]
+    pub fn state_coefficient(&self, i: usize, k: usize) -> f64 {
+        self.coef[i * self.stride + k]
+    }
+
+    /// The coefficients `y_i^[0..=p]` after [`Tape::expand`].
+    #[inline(always)]
+    pub fn state_series(&self, i: usize, p: usize) -> &[f64] {
+        &self.coef[i * self.stride..=i * self.stride + p]
+    }
+
+    /// Stores `x_slot^[k]` in both layouts.
+    #[inline(always)]
+    fn set(&mut self, slot: usize, k: usize, value: f64) {
+        self.coef[slot * self.stride + k] = value;
+        self.rev[slot * self.stride + self.max_order - k] = value;
+    }
+
+    fn seed(&mut self, t: f64, y: &[f64; N]) {
+        for (i, &v) in y.iter().enumerate() {
+            self.set(i, 0, v);
+        }
+        self.set(self.time, 0, t);
+        if self.max_order > 0 {
+            self.set(self.time, 1, 1.0);
+        }
+    }
+
+    /// Order 0 of every operation: the `f64` operations of the field themselves.
+    fn order_zero(&mut self) {
+        for j in 0..self.code.len() {
+            let c = &self.coef;
+            let value = match self.code[j] {
+                Instr::Add(a, b) => c[a as usize] + c[b as usize],
+                Instr::Sub(a, b) => c[a as usize] - c[b as usize],
+                Instr::Mul(a, b) => c[a as usize] * c[b as usize],
+                Instr::Div(a, b) => c[a as usize] / c[b as usize],
+                Instr::Neg(a) => -c[a as usize],
+                Instr::Sqrt(a) => c[a as usize].sqrt(),
+                Instr::MulAdd(a, b, d) => c[a as usize].mul_add(c[b as usize], c[d as usize]),
+                Instr::AddC(a, k) => c[a as usize] + k,
+                Instr::CSub(k, a) => k - c[a as usize],
+                Instr::MulC(a, k) => c[a as usize] * k,
+                Instr::DivC(a, k) => c[a as usize] / k,
+                Instr::CDiv(k, a) => k / c[a as usize],
+            };
+            self.set(self.first_op + j, 0, value);
+        }
+    }
+
+    /// Order `k >= 1` of every operation, from the orders below `k` and order `k` of the
+    /// inputs. The dot products run over `L` terms (`k + 1 <= L <= k + 4`; `L = 0`: over
+    /// `k + 1` rounded up to a multiple of 4, not unrolled).
+    fn order<const L: usize>(&mut self, k: usize) {
+        let stride = self.stride;
+        let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
+        // Start of the reversed run of orders k, k-1, ..., 0 within a slot.
+        let back = self.max_order - k;
+        for j in 0..self.code.len() {
+            let (c, r) = (&self.coef, &self.rev);
+            let dest = (self.first_op + j) * stride;
+            let fwd = |a: usize| &c[a..a + len];
+            let rwd = |a: usize| &r[a + back..a + back + len];
+            let value = match self.code[j] {
+                Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
+                Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
+                Instr::Neg(a) | Instr::CSub(_, a) => -c[a as usize + k],
+                Instr::AddC(a, _) => c[a as usize + k],
+                Instr::MulC(a, m) => c[a as usize + k] * m,
+                Instr::DivC(a, m) => c[a as usize + k] / m,
+                // sum_{j=0..k} a^[j] b^[k-j]
+                Instr::Mul(a, b) => dot::<L>(fwd(a as usize), rwd(b as usize)),
+                Instr::MulAdd(a, b, d) => {
+                    dot::<L>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
+                }
+                // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
+                Instr::Div(a, b) => {
+                    let b = b as usize;
+                    (c[a as usize + k] - dot::<L>(fwd(b + 1), rwd(dest + 1))) / c[b]
+                }
+                Instr::CDiv(_, b) => {
+                    let b = b as usize;
+                    -dot::<L>(fwd(b + 1), rwd(dest + 1)) / c[b]
+                }
+                // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
+                // padded terms would meet w^[k] of the previous expansion).
+                Instr::Sqrt(a) => {
+                    let w = &c[dest + 1..dest + k];
+                    let w_rev = &r[dest + back + 1..dest + back + k];
+                    (c[a as usize + k] - dot::<0>(w, w_rev)) / (2.0 * c[dest])
+                }
+            };
+            self.coef[dest + k] = value;
+            self.rev[dest + back] = value;
+        }
+    }
+}
+
+/// `sum_j a[j] b[j]` over `L` terms (unrolled), or over the length of `a` for `L = 0`, in four
+/// partial sums so that the additions do not wait on each other.
+#[inline(always)]
+fn dot<const L: usize>(a: &[f64], b: &[f64]) -> f64 {
+    let n = if L == 0 { a.len() } else { L };
+    let (a, b) = (&a[..n], &b[..n]);
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let mut s = [0.0; 4];
+    for (l, (x, y)) in a4.remainder().iter().zip(b4.remainder()).enumerate() {
+        s[l] = x * y;
+    }
+    for (x, y) in a4.zip(b4) {
+        for l in 0..4 {
+            s[l] += x[l] * y[l];
+        }
+    }
+    (s[0] + s[1]) + (s[2] + s[3])
+}
+
+/// The operand nodes of a node.
+fn operands(node: &Node) -> impl Iterator<Item = u32> {
+    let list: [Option<u32>; 3] = match *node {
+        Node::Input(_) | Node::Time | Node::Const(_) => [None, None, None],
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            [Some(a), Some(b), None]
+        }
+        Node::Neg(a)
+        | Node::Sqrt(a)
+        | Node::AddC(a, _)
+        | Node::CSub(_, a)
+        | Node::MulC(a, _)
+        | Node::DivC(a, _)
+        | Node::CDiv(_, a) => [Some(a), None, None],
+        Node::MulAdd(a, b, c) => [Some(a), Some(b), Some(c)],
+    };
+    list.into_iter().flatten()
+}
