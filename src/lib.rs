@@ -40,6 +40,7 @@ pub mod batch;
 pub mod body;
 #[cfg(feature = "io")]
 pub mod case;
+pub mod diagram;
 pub mod differential;
 pub mod error;
 pub mod field;

@@ -36,10 +36,10 @@ const FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 pub const SIZE: (u32, u32) = (960, 640);
 
 /// Margin around the chart and sizes of the label areas, in pixels.
-const MARGIN: u32 = 20;
-const X_LABEL_AREA: u32 = 60;
-const Y_LABEL_AREA: u32 = 90;
-const TITLE_HEIGHT: u32 = 40;
+pub(crate) const MARGIN: u32 = 20;
+pub(crate) const X_LABEL_AREA: u32 = 60;
+pub(crate) const Y_LABEL_AREA: u32 = 90;
+pub(crate) const TITLE_HEIGHT: u32 = 40;
 
 /// The colours of successive series (the "tab10" palette).
 const PALETTE: [RGBColor; 6] = [
@@ -370,7 +370,7 @@ pub fn plotting_area() -> (u32, u32) {
 
 /// A tick label on an axis spanning `span`: round-off zeros (|v| < 1e-9 span) as `0`, exponent
 /// notation on very long or short axes, else four decimals without trailing zeros, no `-0`.
-fn tick_label(v: f64, span: f64) -> String {
+pub fn tick_label(v: f64, span: f64) -> String {
     if v.abs() < 1e-9 * span {
         return "0".to_string();
     }
@@ -495,42 +495,66 @@ impl Plot {
 
     /// Draw into `dir/<name>.<ext>` (written atomically) and return the path.
     pub fn render(&self, dir: &Path, format: Format) -> Result<std::path::PathBuf> {
-        register_font();
         let path = dir.join(format!("{}.{}", self.name, format.extension()));
-        let failed = |e: &dyn std::fmt::Display| RouthError::Plot {
-            figure: path.display().to_string(),
-            message: e.to_string(),
-        };
-        match format {
-            Format::Svg => {
-                let mut text = String::new();
-                {
-                    let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                    self.draw(&root).map_err(|e| failed(&e))?;
-                    root.present().map_err(|e| failed(&e))?;
-                }
-                crate::output::write_bytes_atomic(&path, text.as_bytes())?;
-            }
-            Format::Png => {
-                let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
-                {
-                    let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
-                    self.draw(&root).map_err(|e| failed(&e))?;
-                    root.present().map_err(|e| failed(&e))?;
-                }
-                write_atomic(&path, |w| {
-                    let mut encoder = png::Encoder::new(w, SIZE.0, SIZE.1);
-                    encoder.set_color(png::ColorType::Rgb);
-                    encoder.set_depth(png::BitDepth::Eight);
-                    encoder.set_compression(png::Compression::Best);
-                    encoder.set_filter(png::FilterType::Paeth);
-                    let mut writer = encoder.write_header().map_err(|e| failed(&e))?;
-                    writer.write_image_data(&pixels).map_err(|e| failed(&e))
-                })?;
-            }
-        }
+        render_figure(self, &path, format)?;
         Ok(path)
     }
+}
+
+/// Something drawn onto a figure of [`SIZE`] by any plotters backend.
+pub trait Figure {
+    /// Draw onto `root` (already the whole figure).
+    fn draw_on<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>>;
+}
+
+impl Figure for Plot {
+    fn draw_on<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+        self.draw(root)
+    }
+}
+
+/// Draw `figure` into `path` in `format` (written atomically, with the shipped font).
+pub fn render_figure(figure: &impl Figure, path: &Path, format: Format) -> Result<()> {
+    register_font();
+    let failed = |e: &dyn std::fmt::Display| RouthError::Plot {
+        figure: path.display().to_string(),
+        message: e.to_string(),
+    };
+    match format {
+        Format::Svg => {
+            let mut text = String::new();
+            {
+                let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
+                figure.draw_on(&root).map_err(|e| failed(&e))?;
+                root.present().map_err(|e| failed(&e))?;
+            }
+            crate::output::write_bytes_atomic(path, text.as_bytes())?;
+        }
+        Format::Png => {
+            let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
+            {
+                let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
+                figure.draw_on(&root).map_err(|e| failed(&e))?;
+                root.present().map_err(|e| failed(&e))?;
+            }
+            write_atomic(path, |w| {
+                let mut encoder = png::Encoder::new(w, SIZE.0, SIZE.1);
+                encoder.set_color(png::ColorType::Rgb);
+                encoder.set_depth(png::BitDepth::Eight);
+                encoder.set_compression(png::Compression::Best);
+                encoder.set_filter(png::FilterType::Paeth);
+                let mut writer = encoder.write_header().map_err(|e| failed(&e))?;
+                writer.write_image_data(&pixels).map_err(|e| failed(&e))
+            })?;
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

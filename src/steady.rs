@@ -89,15 +89,21 @@ pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
     lift.max(0.0).sqrt() / (body.i3 + body.m * body.radius * l)
 }
 
-/// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs).
-pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
-    let (_, mut j) = jacobian(|x| vector_field(body, x), &state.to_array());
+/// The generator `L` of the rotations about e3, `L x = (e3 x gamma, e3 x M)`: the symmetry
+/// of (mg-eq) for I1 = I2, whose orbits the steady motions follow.
+pub fn rotation_generator() -> SMatrix<f64, 6, 6> {
     let mut rotation = SMatrix::<f64, 6, 6>::zeros();
     for block in [0, 3] {
         rotation[(block, block + 1)] = -1.0;
         rotation[(block + 1, block)] = 1.0;
     }
-    j -= rotation * precession;
+    rotation
+}
+
+/// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs).
+pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
+    let (_, mut j) = jacobian(|x| vector_field(body, x), &state.to_array());
+    j -= rotation_generator() * precession;
     let max = spectral_abscissa(&j).ok_or_else(|| RouthError::Singular {
         formula: "the eigenvalues of the Jacobian of (mg-eq)",
         reason: format!(

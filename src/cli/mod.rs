@@ -3,6 +3,7 @@
 
 mod animate;
 mod audit;
+mod diagram;
 mod exact;
 mod flow;
 mod plot;
@@ -36,6 +37,9 @@ enum Command {
     Exact(exact::Args),
     /// The stationary motions of the case's body and their stability (Routh's threshold).
     Steady(steady::Args),
+    /// The energy-momentum diagram of the case's body: critical curves, number of tori,
+    /// focus-focus points and their monodromy, the sleeping tops (PNG, SVG, CSV).
+    Diagram(diagram::Args),
     /// Many runs of a case over the quantities of its [sweep] table (grid or random design),
     /// one row per run, written to CSV or Parquet.
     Sweep(sweep::Args),
@@ -81,6 +85,7 @@ pub fn main() -> ExitCode {
         Command::Exact(args) => exact::run(args),
         Command::Steady(args) => steady::run(args),
         Command::Sweep(args) => sweep::run(args),
+        Command::Diagram(args) => diagram::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,231 @@
+//! The energy–momentum diagram at a fixed Jellett H3: the window of the plane (K, H1), the
+//! critical curves and the vertical spins in it, the number of tori on a grid of values, the
+//! focus–focus points and the monodromy around them.
+
+use super::monodromy::{monodromy, Monodromy};
+use super::relative_equilibria::{critical_curves, vertical_spin_at, CriticalCurve};
+use super::relative_equilibria::{RelativeEquilibrium, Value};
+use super::stability::StabilityType;
+use super::tori::torus_count;
+use crate::body::Body;
+use crate::error::{Result, RouthError};
+use serde::Serialize;
+
+/// How finely the diagram is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Resolution {
+    /// Tilts at which the steady precessions are computed.
+    pub tilts: usize,
+    /// Columns (K) of the grid of torus counts; the rows (H1) are two thirds as many.
+    pub grid: usize,
+    /// Points of the monodromy loop.
+    pub loop_points: usize,
+}
+
+impl Default for Resolution {
+    fn default() -> Self {
+        Resolution {
+            tilts: 400,
+            grid: 150,
+            loop_points: 64,
+        }
+    }
+}
+
+/// The largest tilts and grid columns accepted (the work grows like their product with the
+/// 4096 samples of Q' per count).
+pub const MAX_RESOLUTION: usize = 5000;
+
+/// A rectangle of the plane (K, H1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Window {
+    /// The range of K.
+    pub k: (f64, f64),
+    /// The range of H1.
+    pub h1: (f64, f64),
+}
+
+/// The torus counts on a grid of values (cell centres).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TorusGrid {
+    /// The values of K (columns).
+    pub k: Vec<f64>,
+    /// The values of H1 (rows).
+    pub h1: Vec<f64>,
+    /// `tori[row][column]`: the number of tori, `None` at a critical value.
+    pub tori: Vec<Vec<Option<usize>>>,
+}
+
+/// The energy–momentum diagram at one H3.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Diagram {
+    /// Jellett's H3 of the plane.
+    #[serde(rename = "H3")]
+    pub h3: f64,
+    /// The window drawn.
+    pub window: Window,
+    /// The vertical spins (gamma3 = +1, then -1) at this H3.
+    pub vertical_spins: Vec<RelativeEquilibrium>,
+    /// The critical curves of the steady precessions.
+    pub critical_curves: Vec<CriticalCurve>,
+    /// The focus–focus relative equilibria.
+    pub focus_focus: Vec<RelativeEquilibrium>,
+    /// The monodromy around the first focus–focus point, if any.
+    pub monodromy: Option<Monodromy>,
+    /// The number of tori on a grid of the window.
+    pub tori: TorusGrid,
+}
+
+/// `(lo, hi)` of finite values, or `None`.
+fn range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .filter(|v| v.is_finite())
+        .fold(None, |acc: Option<(f64, f64)>, v| {
+            Some(acc.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))
+        })
+}
+
+fn check_resolution(name: &'static str, value: usize, least: usize) -> Result<()> {
+    if (least..=MAX_RESOLUTION).contains(&value) {
+        Ok(())
+    } else {
+        Err(RouthError::Option {
+            name,
+            value: value.to_string(),
+            rule: "must be between 2 (8 for the loop) and 5000",
+        })
+    }
+}
+
+impl Diagram {
+    /// The diagram of `body` at Jellett's `h3`; `marked` values (the case's own) are kept
+    /// inside the window.
+    pub fn new(body: &Body, h3: f64, marked: &[Value], resolution: Resolution) -> Result<Self> {
+        body.require_symmetric("the energy-momentum diagram")?;
+        if !h3.is_finite() {
+            return Err(RouthError::Option {
+                name: "h3",
+                value: h3.to_string(),
+                rule: "must be finite",
+            });
+        }
+        check_resolution("tilts", resolution.tilts, 2)?;
+        check_resolution("grid", resolution.grid, 2)?;
+        check_resolution("loop_points", resolution.loop_points, 8)?;
+        let vertical_spins = [1.0, -1.0]
+            .into_iter()
+            .map(|pole| vertical_spin_at(body, pole, h3))
+            .collect::<Result<Vec<_>>>()?;
+        let anchors: Vec<Value> = vertical_spins
+            .iter()
+            .map(|v| v.value)
+            .chain(marked.iter().copied())
+            .collect();
+        let (k_lo, k_hi) = range(anchors.iter().map(|v| v.k)).unwrap_or((-1.0, 1.0));
+        let k_span = (k_hi - k_lo).max(1e-3 * (1.0 + k_hi.abs()));
+        let k = (k_lo - 0.6 * k_span, k_hi + 0.6 * k_span);
+        let k_limit = 3.0 * k.0.abs().max(k.1.abs());
+        let critical_curves = critical_curves(body, h3, resolution.tilts, k_limit)?;
+        let inside = critical_curves
+            .iter()
+            .flat_map(|c| &c.points)
+            .filter(|p| p.value.k >= k.0 && p.value.k <= k.1)
+            .map(|p| p.value.h1);
+        let (h_lo, _) = range(inside.chain(anchors.iter().map(|v| v.h1))).unwrap_or((0.0, 1.0));
+        let (_, h_top) = range(anchors.iter().map(|v| v.h1)).unwrap_or((0.0, 1.0));
+        let h_span = (h_top - h_lo).max(1e-3 * (1.0 + h_top.abs()));
+        let window = Window {
+            k,
+            h1: (h_lo - 0.1 * h_span, h_top + 0.6 * h_span),
+        };
+        let focus_focus: Vec<RelativeEquilibrium> = vertical_spins
+            .iter()
+            .filter(|v| v.stability == StabilityType::FocusFocus)
+            .cloned()
+            .collect();
+        // The loop's semi-axes: a fixed fraction of the window, so that it is round on the figure.
+        let radii = (
+            0.04 * (window.k.1 - window.k.0),
+            0.04 * (window.h1.1 - window.h1.0),
+        );
+        let monodromy = focus_focus
+            .first()
+            .map(|centre| monodromy(body, centre, radii, resolution.loop_points))
+            .transpose()?;
+        let tori = torus_grid(body, h3, &window, resolution.grid)?;
+        Ok(Diagram {
+            h3,
+            window,
+            vertical_spins,
+            critical_curves,
+            focus_focus,
+            monodromy,
+            tori,
+        })
+    }
+}
+
+/// The torus counts at the centres of a grid of `columns` x `2 columns / 3` cells.
+fn torus_grid(body: &Body, h3: f64, window: &Window, columns: usize) -> Result<TorusGrid> {
+    let rows = (2 * columns / 3).max(2);
+    let centres = |(lo, hi): (f64, f64), n: usize| -> Vec<f64> {
+        (0..n)
+            .map(|i| lo + (hi - lo) * (i as f64 + 0.5) / n as f64)
+            .collect()
+    };
+    let (ks, hs) = (centres(window.k, columns), centres(window.h1, rows));
+    let tori = hs
+        .iter()
+        .map(|&h1| {
+            ks.iter()
+                .map(|&k| Ok(torus_count(body, Value { h1, h3, k })?.tori()))
+                .collect::<Result<Vec<_>>>()
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(TorusGrid {
+        k: ks,
+        h1: hs,
+        tori,
+    })
+}
+
+/// The sleeping tops (vertical spins) in the plane (H3, K): for each pole, the spins at
+/// `samples` values of H3 in `[-h3_max, h3_max]`, each classified, and Routh's threshold
+/// value of H3 (`None` for the pole where the centre of mass is not above the geometric
+/// centre, which is stable at every spin).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SleepingTop {
+    /// gamma3 = +1 or -1.
+    pub pole: f64,
+    /// The vertical spins along the line.
+    pub spins: Vec<RelativeEquilibrium>,
+    /// |H3| at Routh's threshold spin.
+    pub threshold_h3: Option<f64>,
+}
+
+/// The two lines of sleeping tops in the plane (H3, K) (see [`SleepingTop`]).
+pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<SleepingTop>> {
+    [1.0, -1.0]
+        .into_iter()
+        .map(|pole| {
+            let spins = (0..samples)
+                .map(|i| {
+                    let h3 = h3_max * (2.0 * i as f64 / (samples - 1) as f64 - 1.0);
+                    vertical_spin_at(body, pole, h3)
+                })
+                .collect::<Result<Vec<_>>>()?;
+            let threshold = crate::steady::routh_threshold(body, pole);
+            let threshold_h3 = if threshold > 0.0 {
+                let state = crate::steady::vertical_spin_state(body, pole, threshold)?;
+                Some(crate::integrals::jellett(body, &state.to_array()).abs())
+            } else {
+                None
+            };
+            Ok(SleepingTop {
+                pole,
+                spins,
+                threshold_h3,
+            })
+        })
+        .collect()
+}
