@@ -396,6 +396,28 @@ pub struct Outcome<const N: usize> {
     pub stats: Stats,
 }
 
+/// The checks of a stepper's start: `t0` and `t_end` finite
+/// ([`IntegrateError::InvalidOption`] naming them), `y0` finite ([`IntegrateError::NonFinite`]).
+pub(crate) fn check_start<const N: usize>(
+    t0: f64,
+    y0: &[f64; N],
+    t_end: f64,
+) -> Result<(), IntegrateError> {
+    for (name, value) in [("t0", t0), ("t_end", t_end)] {
+        if !value.is_finite() {
+            return Err(IntegrateError::InvalidOption {
+                name,
+                value,
+                rule: "must be finite",
+            });
+        }
+    }
+    if y0.iter().any(|v| !v.is_finite()) {
+        return Err(IntegrateError::NonFinite { t: t0 });
+    }
+    Ok(())
+}
+
 /// Checks that `samples` are finite, strictly monotone in the direction from `t0` to
 /// `t_end` and within the closed interval; names the first offending sample.
 pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), IntegrateError> {

@@ -16,7 +16,7 @@ use std::cell::Cell;
 use super::compensated::compensated_add;
 use super::dop853::hinit;
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
+use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit used in the step-size-too-small test.
 const UROUND: f64 = 2.3e-16;
@@ -120,18 +120,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
         opts.validate()?;
-        for (name, value) in [("t0", t0), ("t_end", t_end)] {
-            if !value.is_finite() {
-                return Err(IntegrateError::InvalidOption {
-                    name,
-                    value,
-                    rule: "must be finite",
-                });
-            }
-        }
-        if y0.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrateError::NonFinite { t: t0 });
-        }
+        check_start(t0, &y0, t_end)?;
         let f0 = sys.rhs(t0, &y0);
         if f0.iter().any(|v| !v.is_finite()) {
             return Err(IntegrateError::NonFinite { t: t0 });

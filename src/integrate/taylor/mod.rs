@@ -32,7 +32,7 @@ pub mod tape;
 pub use tape::{Tape, Var};
 
 use super::compensated::compensated_add;
-use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
+use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit of the step-size-too-small test.
 const UROUND: f64 = 2.3e-16;
@@ -134,18 +134,7 @@ impl<const N: usize> Taylor<N> {
         max_order: usize,
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
-        for (name, value) in [("t0", t0), ("t_end", t_end)] {
-            if !value.is_finite() {
-                return Err(IntegrateError::InvalidOption {
-                    name,
-                    value,
-                    rule: "must be finite",
-                });
-            }
-        }
-        if y0.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrateError::NonFinite { t: t0 });
-        }
+        check_start(t0, &y0, t_end)?;
         let tape = Tape::record(sys, max_order).ok_or(IntegrateError::Unsupported {
             method: "taylor",
             reason: "the system's field is not recorded through Scalar (OdeSystem::record)",

@@ -15,7 +15,7 @@
 //!
 //! Compilation: the nodes that the outputs depend on are laid out in slots
 //! `[inputs y_1..y_N, time, constants, operations]` and the operations become a flat array of
-//! [`Instr`] (a `match` on a small enum per operation and order: no dynamic dispatch, no
+//! `Instr` (a `match` on a small enum per operation and order: no dynamic dispatch, no
 //! allocation). Every slot owns `stride` contiguous Taylor coefficients
 //! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`), so the convolutions below read
 //! two contiguous runs.
