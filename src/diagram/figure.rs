@@ -72,7 +72,11 @@ fn mesh<'a, DB: DrawingBackend>(
 }
 
 /// A marked value: a black triangle with its label.
-fn mark<DB: DrawingBackend>(chart: &mut Chart<'_, DB>, label: &str, at: (f64, f64)) -> Drawn<DB> {
+fn mark<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    label: &str,
+    at: (f64, f64),
+) -> Drawn<DB> {
     chart.draw_series(std::iter::once(
         EmptyElement::at(at)
             + TriangleMarker::new((0, 0), 8, BLACK.filled())
@@ -82,8 +86,8 @@ fn mark<DB: DrawingBackend>(chart: &mut Chart<'_, DB>, label: &str, at: (f64, f6
 }
 
 /// The legend box at `position`.
-fn legend<DB: DrawingBackend>(
-    chart: &mut Chart<'_, DB>,
+fn legend<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
     position: SeriesLabelPosition,
 ) -> Drawn<DB> {
     chart
