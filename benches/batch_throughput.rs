@@ -13,6 +13,9 @@
 //! default body with omega = (0.5, 0.2, 8) and gamma = (sin tilt, 0, cos tilt), the tilts
 //! spread evenly over (0.05, 1.5) (ends excluded), M = I_Q omega (om-m).
 //!
+//! `cargo bench --bench batch_throughput` (no arguments): our three loops on the 1024 runs to
+//! t = 10 at 1e-12 and 1e-8, as a table (the peers need `bench/throughput/run.py`).
+//!
 //! Build with `cargo bench --bench batch_throughput --no-run`.
 
 use routh::batch::{self, Job, LaneEnd, Queue};
@@ -76,66 +79,51 @@ fn lanes<const L: usize>(
 
 /// One run after the other with a stepper that has `new`, `step`, `y` and `stats`.
 macro_rules! one_by_one {
-    ($stepper:ident, $body:expr, $x0:expr, $t_end:expr, $opts:expr) => {{
-        let sys = ReducedSystem($body);
-        let mut finals = Vec::with_capacity($x0.len());
-        let mut total = Stats::default();
-        for &y0 in $x0 {
-            let mut s = $stepper::new(&sys, 0.0, y0, $t_end, $opts)?;
-            while !s.step()? {}
-            finals.push(*s.y());
-            total.steps += s.stats().steps;
-            total.rhs_evals += s.stats().rhs_evals;
-        }
-        Ok::<_, IntegrateError>((finals, total))
-    }};
+    ($stepper:ident, $body:expr, $x0:expr, $t_end:expr, $opts:expr) => {
+        (|| {
+            let sys = ReducedSystem($body);
+            let mut finals = Vec::with_capacity($x0.len());
+            let mut total = Stats::default();
+            for &y0 in $x0 {
+                let mut s = $stepper::new(&sys, 0.0, y0, $t_end, $opts)?;
+                while !s.step()? {}
+                finals.push(*s.y());
+                total.steps += s.stats().steps;
+                total.rhs_evals += s.stats().rhs_evals;
+            }
+            Ok::<_, IntegrateError>((finals, total))
+        })()
+    };
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args()
-        .skip(1)
-        .filter(|a| a != "--bench")
-        .collect();
-    let usage =
-        "usage: batch_throughput one|lanes4|lanes8|vern9 TOL T_END REPEAT < states | states N";
-    if let [cmd, n] = &args[..] {
-        assert_eq!(cmd, "states", "{usage}");
-        let n: usize = n.parse().expect(usage);
-        for j in 0..n {
+/// The benchmark's initial states: see the module documentation.
+fn states(n: usize) -> Vec<[f64; 6]> {
+    (0..n)
+        .map(|j| {
             let tilt = 0.05 + 1.45 * (j as f64 + 0.5) / n as f64;
-            let x = State::from_omega(
+            State::from_omega(
                 &Body::default(),
                 [tilt.sin(), 0.0, tilt.cos()],
                 [0.5, 0.2, 8.0],
                 Normalise::Reject,
             )
             .expect("a valid state")
-            .to_array();
-            println!("{}", x.map(|v| format!("{v:?}")).join(" "));
-        }
-        return;
-    }
-    let (mode, tol, t_end, repeat) = match &args[..] {
-        [m, tol, t, r] => (
-            m.as_str(),
-            tol.parse::<f64>().expect(usage),
-            t.parse::<f64>().expect(usage),
-            r.parse::<usize>().expect(usage),
-        ),
-        _ => panic!("{usage}"),
-    };
-    let x0: Vec<[f64; 6]> = std::io::stdin()
-        .lock()
-        .lines()
-        .map(|line| {
-            let v: Vec<f64> = line
-                .expect("stdin")
-                .split_whitespace()
-                .map(|w| w.parse().expect("a number"))
-                .collect();
-            v.try_into().expect("six numbers a line")
+            .to_array()
         })
-        .collect();
+        .collect()
+}
+
+type Ensemble = Result<(Vec<[f64; 6]>, Stats), IntegrateError>;
+
+/// The minimum wall time of `repeat` integrations of the ensemble `x0` with `mode`, and the
+/// result of the last; `None` for an unknown mode.
+fn measure(
+    mode: &str,
+    tol: f64,
+    t_end: f64,
+    repeat: usize,
+    x0: &[[f64; 6]],
+) -> Option<(f64, Ensemble)> {
     let body = Body::default();
     let opts = Options {
         rtol: tol,
@@ -147,24 +135,80 @@ fn main() {
     for _ in 0..repeat.max(1) {
         let start = Instant::now();
         let r = match mode {
-            "one" => one_by_one!(Dop853, &body, &x0, t_end, &opts),
-            "vern9" => one_by_one!(Vern9, &body, &x0, t_end, &opts),
-            "lanes4" => lanes::<4>(&body, &x0, t_end, &opts),
-            "lanes8" => lanes::<8>(&body, &x0, t_end, &opts),
-            _ => panic!("{usage}"),
+            "one" => one_by_one!(Dop853, &body, x0, t_end, &opts),
+            "vern9" => one_by_one!(Vern9, &body, x0, t_end, &opts),
+            "lanes4" => lanes::<4>(&body, x0, t_end, &opts),
+            "lanes8" => lanes::<8>(&body, x0, t_end, &opts),
+            _ => return None,
         };
         best = best.min(start.elapsed().as_secs_f64());
         result = Some(r);
     }
-    let json = match result.expect("at least one repetition") {
-        Ok((finals, stats)) => serde_json::json!({
-            "time_s": best,
-            "runs": x0.len(),
-            "steps": stats.steps,
-            "rhs_evals": stats.rhs_evals,
-            "finals": finals,
-        }),
-        Err(e) => serde_json::json!({ "error": e.to_string() }),
-    };
-    println!("{json}");
+    Some((best, result?))
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| a != "--bench")
+        .collect();
+    let usage =
+        "usage: batch_throughput [one|lanes4|lanes8|vern9 TOL T_END REPEAT < states | states N]";
+    match &args[..] {
+        [] => {
+            // `cargo bench`: the table of BENCHMARKS.md for our three loops, without the peers.
+            let x0 = states(1024);
+            for tol in [1e-12, 1e-8] {
+                for mode in ["one", "lanes4", "lanes8"] {
+                    let (t, r) = measure(mode, tol, 10.0, 3, &x0).expect("a known mode");
+                    let (_, stats) = r.expect("the benchmark runs succeed");
+                    println!(
+                        "tol {tol:.0e} {mode:7} {t:.3} s  {:.0} runs/s  {} steps  {} field evaluations",
+                        x0.len() as f64 / t,
+                        stats.steps,
+                        stats.rhs_evals
+                    );
+                }
+            }
+        }
+        [cmd, n] if cmd == "states" => {
+            for x in states(n.parse().expect(usage)) {
+                println!("{}", x.map(|v| format!("{v:?}")).join(" "));
+            }
+        }
+        [mode, tol, t_end, repeat] => {
+            let x0: Vec<[f64; 6]> = std::io::stdin()
+                .lock()
+                .lines()
+                .map(|line| {
+                    let v: Vec<f64> = line
+                        .expect("stdin")
+                        .split_whitespace()
+                        .map(|w| w.parse().expect("a number"))
+                        .collect();
+                    v.try_into().expect("six numbers a line")
+                })
+                .collect();
+            let (best, result) = measure(
+                mode,
+                tol.parse().expect(usage),
+                t_end.parse().expect(usage),
+                repeat.parse().expect(usage),
+                &x0,
+            )
+            .expect(usage);
+            let json = match result {
+                Ok((finals, stats)) => serde_json::json!({
+                    "time_s": best,
+                    "runs": x0.len(),
+                    "steps": stats.steps,
+                    "rhs_evals": stats.rhs_evals,
+                    "finals": finals,
+                }),
+                Err(e) => serde_json::json!({ "error": e.to_string() }),
+            };
+            println!("{json}");
+        }
+        _ => panic!("{usage}"),
+    }
 }

@@ -13,7 +13,7 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
-    "__version__", "MAX_VALUES", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
+    "__version__", "MAX_VALUES", "Ball", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
     "audit", "default_case", "load_case", "routh_threshold", "simulate", "steady_precessions",
     "sweep", "vertical_spin",
 ]
@@ -25,6 +25,47 @@ _FloatArray = npt.NDArray[np.float64]
 _EventFunction = Callable[[float, _FloatArray], float]
 _EventLike = Union["Event", str, _EventFunction]
 _Record = dict[str, Any]
+
+@final
+class Ball:
+    """The general unbalanced ball: mass m, radius R, principal moments I1, I2, I3 about the
+    centre of mass (each > 0, triangle inequalities), the centre of mass at com = (x, y, z)
+    from the geometric centre in the body frame (|com| < R; Body's offset a is com = (0, 0, -a)),
+    gravity G >= 0. Units: any consistent set (SI if the parameters are SI).
+
+    model (decided with the relative tolerance 1e-12): "routh-sphere" (I1 = I2, com on e3:
+    integrals H1, H2, H3, H4, K), "chaplygin" (com = 0: H1, H4, MM = (M, M),
+    Mgamma = (M, gamma)) or "general" (H1 and H4 only; not integrable)."""
+
+    def __new__(
+        cls, m: float, R: float, I1: float, I2: float, I3: float,
+        com: Optional[_ArrayLike] = None, G: float = 9.81,
+    ) -> "Ball": ...
+    @property
+    def m(self) -> float: ...
+    @property
+    def R(self) -> float: ...
+    @property
+    def I1(self) -> float: ...
+    @property
+    def I2(self) -> float: ...
+    @property
+    def I3(self) -> float: ...
+    @property
+    def com(self) -> Tuple[float, float, float]: ...
+    @property
+    def G(self) -> float: ...
+    @property
+    def model(self) -> Literal["routh-sphere", "chaplygin", "general"]: ...
+    def field(self, x: _ArrayLike, unit_tolerance: Optional[float] = ...) -> _FloatArray:
+        """The vector field (mg-eq) dx/dt at x, shape (6,) or (6, k)."""
+    def omega(self, x: _ArrayLike, unit_tolerance: Optional[float] = ...) -> _FloatArray:
+        """The angular velocity omega = I_Q^-1 M (om-m), rad per unit time, body frame."""
+    def integrals(
+        self, x: _ArrayLike, unit_tolerance: Optional[float] = ...
+    ) -> dict[str, Any]:
+        """The integrals of the ball's model at x by name (only those it has): H1 (energy,
+        int-g), H4 = |gamma|^2, and H2, H3, K (Routh sphere) or MM, Mgamma (Chaplygin)."""
 
 @final
 class Body:
@@ -83,7 +124,7 @@ class DenseOutput:
     """The state at any time of the span, as SciPy's OdeSolution."""
 
     def __new__(
-        cls, body: Body, level: Optional[Sequence[float]], times: Sequence[float],
+        cls, body: Union[Body, Ball], level: Optional[Sequence[float]], times: Sequence[float],
         nodes: Sequence[float], t_last: float,
     ) -> "DenseOutput":
         """Rebuild from pickled fields (used by pickle)."""
@@ -137,7 +178,7 @@ class Problem:
     """An initial-value problem: body, x0, t_span and the integration settings."""
 
     def __new__(
-        cls, body: Body, x0: _ArrayLike, t_span: Union[float, Sequence[float]],
+        cls, body: Union[Body, Ball], x0: _ArrayLike, t_span: Union[float, Sequence[float]],
         rtol: float = 1e-12, atol: float = 1e-12, method: str = "dop853",
         project: bool = False, full: bool = False,
     ) -> "Problem": ...
@@ -146,7 +187,7 @@ class Problem:
         path: Union[str, PathLike[str], None] = None, full: bool = False
     ) -> "Problem": ...
     @property
-    def body(self) -> Body: ...
+    def body(self) -> Union[Body, Ball]: ...
     @property
     def x0(self) -> _FloatArray: ...
     @property
@@ -168,7 +209,7 @@ class Problem:
     ) -> Solution: ...
 
 def simulate(
-    body: Body, x0: _ArrayLike, t_span: Union[float, Sequence[float], None] = None,
+    body: Union[Body, Ball], x0: _ArrayLike, t_span: Union[float, Sequence[float], None] = None,
     rtol: float = 1e-12, atol: float = 1e-12, method: str = "dop853",
     project: bool = False, samples: int = 0, *, t_eval: Optional[_ArrayLike] = None,
     events: Union[_EventLike, Sequence[_EventLike], None] = None,
@@ -184,7 +225,7 @@ class ExactSolution:
     def __new__(cls, body: Body, x0: _ArrayLike) -> "ExactSolution": ...
     def __call__(self, t: _ArrayLike) -> _FloatArray: ...
     @property
-    def body(self) -> Body: ...
+    def body(self) -> Union[Body, Ball]: ...
     @property
     def x0(self) -> _FloatArray: ...
     @property
@@ -255,4 +296,4 @@ def sweep(
 def default_case() -> Tuple[Body, _FloatArray, float, float, float]: ...
 def load_case(
     path: Union[str, PathLike[str]]
-) -> Tuple[Body, _FloatArray, float, float, float]: ...
+) -> Tuple[Union[Body, Ball], _FloatArray, float, float, float]: ...

@@ -140,9 +140,93 @@ pub fn spectral_abscissa(j: &SMatrix<f64, 6, 6>) -> Option<f64> {
     })
 }
 
+/// The largest magnitude of the Jacobian (and of Q, Q', Q'') that the stability analysis
+/// takes: the Schur iteration squares the entries, which must stay far below `f64::MAX`.
+const LARGEST_MAGNITUDE: f64 = 1e150;
+
+/// Magnitudes outside `[1 / EXTREME, EXTREME]` are named as the cause of an overflow or
+/// underflow.
+const EXTREME: f64 = 1e50;
+
+/// The body's parameters and the spin that lie outside `[1 / EXTREME, EXTREME]` in magnitude
+/// (the cause of an overflow or underflow), or all of them if none does.
+fn extreme_parameters(body: &Body, spin: f64) -> String {
+    let all = [
+        ("m", body.m),
+        ("R", body.radius),
+        ("a", body.a),
+        ("I1", body.i1),
+        ("I3", body.i3),
+        ("G", body.gravity),
+        ("the spin omega3", spin),
+    ];
+    let extreme: Vec<String> = all
+        .iter()
+        .filter(|(_, v)| v.abs() >= EXTREME || (*v != 0.0 && v.abs() <= 1.0 / EXTREME))
+        .map(|(name, v)| format!("{name} = {v:e}"))
+        .collect();
+    if extreme.is_empty() {
+        let all: Vec<String> = all.iter().map(|(n, v)| format!("{n} = {v:e}")).collect();
+        format!("the parameters {}", all.join(", "))
+    } else {
+        extreme.join(" and ")
+    }
+}
+
+/// `value` if it is finite and at most [`LARGEST_MAGNITUDE`]; else the
+/// [`RouthError::Overflow`] of `quantity` at `state`, caused by the extreme parameters of
+/// `body` and `spin`: an overflow if the value is infinite or large, or if a parameter or the
+/// state is large (a NaN from infinity minus infinity), else an underflow (a NaN from 0 / 0).
+fn representable(
+    body: &Body,
+    spin: f64,
+    state: &[f64; 6],
+    quantity: &'static str,
+    value: f64,
+) -> Result<f64> {
+    if value.is_finite() && value.abs() <= LARGEST_MAGNITUDE {
+        return Ok(value);
+    }
+    let large = [body.m, body.radius, body.i1, body.i3, body.gravity, spin]
+        .iter()
+        .chain(state)
+        .any(|v| v.abs() >= EXTREME);
+    let direction = if large || value.is_infinite() || value.abs() > LARGEST_MAGNITUDE {
+        "overflow"
+    } else {
+        "underflow"
+    };
+    Err(RouthError::Overflow {
+        cause: extreme_parameters(body, spin),
+        quantity,
+        direction,
+        value,
+    })
+}
+
 fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
+    let spin = state.omega(body)[2];
     let red = Reduction::of_state(body, state)?;
     let (_, _, q2) = red.q_derivatives(state.gamma[2]);
+    if !q2.is_finite() {
+        representable(
+            body,
+            spin,
+            &state.to_array(),
+            "the second derivative Q''(gamma3) of the reduced potential",
+            q2,
+        )?;
+    }
+    let jacobian_norm = jacobian(|x| vector_field(body, x), &state.to_array())
+        .1
+        .norm();
+    representable(
+        body,
+        spin,
+        &state.to_array(),
+        "the Jacobian of (mg-eq) at the steady motion",
+        jacobian_norm,
+    )?;
     let (max_re, norm) = max_real_eigenvalue(body, state, precession)?;
     Ok(Stability {
         q_second_derivative: q2,
@@ -233,6 +317,22 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
     };
     let w = spin.abs().max((body.gravity / body.radius).sqrt()).max(1.0);
     let (fm, f0, fp) = (slope(-w)?, slope(0.0)?, slope(w)?);
+    for f in [fm, f0, fp] {
+        if !f.is_finite() {
+            representable(
+                body,
+                spin,
+                &tilted_state(body, theta, w, spin)?.to_array(),
+                "the slope Q'(cos theta) of the condition of steady precession",
+                f,
+            )?;
+        }
+    }
+    // The coefficients of the quadratic in omega_t / w, scaled to at most 1 so that the
+    // discriminant cannot overflow (they are of the size of w^2 (m R^2)^2 ...).
+    let scale = fm.abs().max(f0.abs()).max(fp.abs());
+    let scale = if scale > 0.0 { scale } else { 1.0 };
+    let (fm, f0, fp) = (fm / scale, f0 / scale, fp / scale);
     let (a2, a1, a0) = (0.5 * (fp + fm) - f0, 0.5 * (fp - fm), f0);
     let disc = a1 * a1 - 4.0 * a2 * a0;
     if disc < 0.0 || a2 == 0.0 {

@@ -124,13 +124,14 @@ proptest! {
         t in 0.0f64..100.0,
         tip in -1e-3f64..1e-3,
     ) {
-        // Near the vertical spins (tip small) and at any tilt: the hard places. Without the
-        // exact solution, which takes seconds on these near-steady states (docs/reliability.md).
+        // Near the vertical spins (tip small) and at any tilt: the hard places, with the exact
+        // solution (these near-steady states took seconds before the quadrature's panels,
+        // docs/reliability.md).
         let theta = if tilt > 3.1 { tip } else { tilt };
         properties::numerics(&[
             1.0, 1.0, a, 0.4, 0.4, 0.5, 9.81, -1.0,
             theta.sin(), 0.0, theta.cos(), 0.1 * tip, 0.0, spin, t, tilt,
-        ], false);
+        ], true);
     }
 }
 
@@ -150,4 +151,78 @@ fn the_finiteness_check_fails_on_an_overflowing_body() {
     )
     .unwrap();
     properties::field_and_integrals_finite(&body, &state);
+}
+
+/// The crash the `numerics` fuzz target found (docs/reliability.md): a body with
+/// I3 = 7e-304 and m R^2 = 10, for which the AD derivatives of Routh's g overflow and
+/// `steady` reported `Q'' = NaN`. The reduction now refuses such bodies with the reason.
+#[test]
+fn fuzz_crash_tiny_moment_is_refused_not_nan() {
+    let body = routh::Body::new(
+        999.9695825404498,
+        0.09999999999999998,
+        0.09999999999999948,
+        0.09999999999999998,
+        0.09999999999999998,
+        7.073954810965889e-304,
+        7.268183591365776e-308,
+    )
+    .unwrap();
+    let refusal = routh::steady::vertical_spin(&body, 1.0, -1.1732762318796806e-125).unwrap_err();
+    assert!(
+        refusal.to_string().contains("derivatives of g overflow"),
+        "{refusal}"
+    );
+    let bytes: &[u8] = &[
+        196, 196, 196, 196, 0, 215, 0, 255, 255, 255, 247, 255, 255, 255, 255, 255, 255, 255, 255,
+        255, 65, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+        255, 255, 255, 255, 255, 255, 255, 255, 0, 2, 255, 255, 255, 255, 11, 255, 0, 0, 0, 0, 0,
+        0, 198, 33, 42, 0, 0, 35, 196, 33, 196, 196, 196, 196, 255, 165, 165, 165, 165, 255, 0, 0,
+        0, 0, 0, 0, 7, 255, 255, 255, 255, 32, 0, 0, 0, 0, 0, 198, 33, 0, 0, 0, 0, 0, 7, 255, 255,
+        255, 255, 32, 0, 0, 0, 0, 0, 198, 33, 42, 0, 0, 35, 196, 33, 196, 196, 196, 196, 255, 165,
+        165, 165, 165, 255, 0, 215, 0, 255, 255, 255, 255, 0, 215, 196, 255, 196, 0, 196, 196, 0,
+        38, 10, 255,
+    ];
+    properties::numerics(&properties::decode_f64s(bytes), true);
+    // Negative control: a moment at the limit is accepted.
+    let sane = routh::Body {
+        i3: 1e-59 * 10.0,
+        ..body
+    };
+    assert!(routh::quadrature::Reduction::new(&sane, 1.0, 0.0, 0.0).is_ok());
+}
+
+/// The timeout the `numerics` fuzz target found (1.5 s, docs/reliability.md): a body of mass
+/// 1000 with a = 0.993 R, whose Q has a singularity 0.005 beyond gamma3 = -1, at rest
+/// (omega 1e-309) with gamma horizontal. Every sample of the quadrature bisected its
+/// Gauss-Legendre rule toward the singularity; the work is now bounded (`WORK_BUDGET`) and
+/// the motion refused with the reason. No panic, no NaN.
+#[test]
+fn fuzz_timeout_near_singular_body_is_refused() {
+    let bytes: &[u8] = &[
+        196, 196, 196, 196, 0, 215, 0, 239, 255, 255, 247, 255, 255, 255, 255, 255, 255, 255, 255,
+        255, 255, 65, 49, 255, 255, 35, 255, 255, 255, 245, 255, 255, 255, 255, 255, 255, 255, 255,
+        147, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+        255, 255, 255, 255, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 27,
+        0, 0, 0, 0, 0, 0, 0, 255, 251, 255, 255, 255, 0, 0, 0, 36, 255, 248, 255, 255, 255, 255,
+        40, 0, 0, 0, 0, 17, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 25, 0, 0, 0, 0, 0,
+        20, 20, 147, 147, 147, 20, 20, 147, 163, 147, 147, 147, 0, 215, 0, 255, 255, 255, 255, 255,
+        0, 196, 255, 196, 0, 196, 10, 255,
+    ];
+    let values = properties::decode_f64s(bytes);
+    properties::numerics(&values, true);
+    let [m, r, a, i1, _, i3, g] = values[..7].try_into().unwrap();
+    let body = routh::Body::new(m, r, a, i1, i1, i3, g).unwrap();
+    let state = routh::State::from_omega(
+        &body,
+        [values[8], values[9], values[10]],
+        [values[11], values[12], values[13]],
+        routh::state::Normalise::Rescale,
+    )
+    .unwrap();
+    let refusal = routh::quadrature::ExactSolution::new(&body, &state).unwrap_err();
+    assert!(
+        matches!(refusal, routh::RouthError::Singular { .. }),
+        "{refusal}"
+    );
 }

@@ -19,7 +19,8 @@ max norm of the reference state, the reference being routh's Vern9 at rtol = ato
 (checked against heyoka at tol = 1e-15). The field of heyoka and NumPy is bench/work_precision's
 model.field, the one Python definition (checked there against ours). The venv is the one of
 bench/work_precision/run.py (heyoka, NumPy from PyPI), created the same way if missing.
-Writes results.json beside this file and prints the table of BENCHMARKS.md.
+Then, for the comparison at equal error, our lanes8 alone at tighter tolerances
+(--equal-error-tols). Writes results.json beside this file and prints the table of BENCHMARKS.md.
 """
 import argparse
 import json
@@ -73,6 +74,8 @@ def main():
     ap.add_argument("--runs", type=int, default=1024)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--tols", default="1e-12,1e-8")
+    ap.add_argument("--equal-error-tols", default="1e-10,1e-13,1e-14,1e-15",
+                    help="our lanes8 alone at these tolerances, for the comparison at equal error")
     args = ap.parse_args()
     bench = setup()
     venv = work_precision.VENV
@@ -172,6 +175,13 @@ def main():
         print(f"tol {tol:.0e} {'NumPy RK4':20} {t:8.3f} s {args.runs / t:10.0f} runs/s  "
               f"error {rows[-1]['error']:.1e} ({extra['steps']} steps)", flush=True)
         results["rows"] += rows
+    # At equal error: our lanes at tighter tolerances, to set beside heyoka's errors above.
+    for tol in [float(t) for t in args.equal_error_tols.split(",") if t]:
+        t, finals, extra = routh(bench, "lanes8", tol, states, args.repeat)
+        results["rows"].append({"method": "routh lanes8 (equal error)", "tol": tol, "time_s": t,
+                                "per_s": args.runs / t, "error": error(finals, reference), **extra})
+        print(f"tol {tol:.0e} {'routh lanes8':20} {t:8.3f} s {args.runs / t:10.0f} runs/s  "
+              f"error {results['rows'][-1]['error']:.1e}", flush=True)
     results["load_after"] = uptime()
     (HERE / "results.json").write_text(json.dumps(results, indent=1) + "\n")
     print(f"load before: {load_before}\nload after:  {results['load_after']}")
@@ -179,7 +189,8 @@ def main():
     print("|---|---|---|---|---|")
     for tol in sorted({r["tol"] for r in results["rows"]}, reverse=True):
         rows = [r for r in results["rows"] if r["tol"] == tol]
-        lanes = next(r for r in rows if r["method"] == "routh lanes8")
+        lanes = next((r for r in results["rows"] if r["method"] == "routh lanes8" and r["tol"] == tol),
+                     rows[0])
         for r in rows:
             note = f" ({r['steps']} steps)" if r["method"] == "NumPy RK4" else ""
             print(f"| {tol:.0e} | {r['method']}{note} | {r['per_s']:.0f} | {r['error']:.1e} | "

@@ -24,20 +24,43 @@ pub struct PyBody {
     pub inner: routh_core::Body,
 }
 
-impl PyBody {
-    /// Apply `f` to each checked point of `x` (`(6,)` or `(6, k)`), returning `(6,)`-shaped
-    /// or `(3,)`-shaped results stacked the same way; the interpreter lock is released meanwhile.
-    fn map_points<'py, const M: usize>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        unit_tolerance: Option<f64>,
-        f: impl Fn(&[f64; 6]) -> [f64; M] + Sync,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let (points, single) = checked_points(x, unit_tolerance)?;
-        let out: Vec<[f64; M]> = py.detach(|| points.iter().map(&f).collect());
-        columns(py, &out, single)
+/// Apply `f` to each checked point of `x` (`(6,)` or `(6, k)`), returning `(M,)`-shaped or
+/// `(M, k)`-shaped results; the interpreter lock is released meanwhile.
+pub fn map_points<'py, const M: usize>(
+    py: Python<'py>,
+    x: &Bound<'py, PyAny>,
+    unit_tolerance: Option<f64>,
+    f: impl Fn(&[f64; 6]) -> [f64; M] + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (points, single) = checked_points(x, unit_tolerance)?;
+    let out: Vec<[f64; M]> = py.detach(|| points.iter().map(&f).collect());
+    columns(py, &out, single)
+}
+
+/// The integrals `names[i]` (the i-th value of `values(x)`) at the checked points of `x`, as a
+/// dict of numbers or arrays; those that are not integrals (`None`) are `None` if `keep_none`,
+/// else left out.
+pub fn integrals_dict<'py, const K: usize>(
+    py: Python<'py>,
+    x: &Bound<'py, PyAny>,
+    unit_tolerance: Option<f64>,
+    names: &[&str; K],
+    keep_none: bool,
+    values: impl Fn(&[f64; 6]) -> [Option<f64>; K] + Sync,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (points, single) = checked_points(x, unit_tolerance)?;
+    let values: Vec<[Option<f64>; K]> = py.detach(|| points.iter().map(&values).collect());
+    let dict = PyDict::new(py);
+    for (i, name) in names.iter().enumerate() {
+        let column: Option<Vec<f64>> = values.iter().map(|v| v[i]).collect();
+        match (column, single) {
+            (None, _) if keep_none => dict.set_item(*name, py.None())?,
+            (None, _) => {}
+            (Some(c), true) => dict.set_item(*name, c[0])?,
+            (Some(c), false) => dict.set_item(*name, PyArray1::from_vec(py, c))?,
+        }
     }
+    Ok(dict)
 }
 
 /// The points of the argument `x`, each finite and, unless `unit_tolerance` is None, with
@@ -181,7 +204,7 @@ impl PyBody {
         x: &Bound<'py, PyAny>,
         unit_tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        self.map_points(py, x, unit_tolerance, |p| vector_field(&self.inner, p))
+        map_points(py, x, unit_tolerance, |p| vector_field(&self.inner, p))
     }
 
     /// The angular velocity `omega = I_Q^{-1} M` of (om-m) at `x` (rad per unit time, body
@@ -193,7 +216,7 @@ impl PyBody {
         x: &Bound<'py, PyAny>,
         unit_tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        self.map_points(py, x, unit_tolerance, |p| {
+        map_points(py, x, unit_tolerance, |p| {
             State::from_array(p).omega(&self.inner)
         })
     }
@@ -211,24 +234,10 @@ impl PyBody {
         x: &Bound<'py, PyAny>,
         unit_tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let (points, single) = checked_points(x, unit_tolerance)?;
         let body = self.inner;
-        let values: Vec<[Option<f64>; 5]> = py.detach(|| {
-            points
-                .iter()
-                .map(|p| Integrals::at(&body, p).values())
-                .collect()
-        });
-        let dict = PyDict::new(py);
-        for (i, name) in INTEGRAL_NAMES.iter().enumerate() {
-            let column: Option<Vec<f64>> = values.iter().map(|v| v[i]).collect();
-            match (column, single) {
-                (None, _) => dict.set_item(*name, py.None())?,
-                (Some(c), true) => dict.set_item(*name, c[0])?,
-                (Some(c), false) => dict.set_item(*name, PyArray1::from_vec(py, c))?,
-            }
-        }
-        Ok(dict)
+        integrals_dict(py, x, unit_tolerance, &INTEGRAL_NAMES, true, |p| {
+            Integrals::at(&body, p).values()
+        })
     }
 
     /// The phase-space point `(gamma, M)` with `M = I_Q omega` (om-m), as a numpy 6-vector;

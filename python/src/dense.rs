@@ -5,7 +5,7 @@
 //! interpolation, which reproduces it to round-off. With projection, each value is projected
 //! onto the level set of the integrals through the initial state, as the run's samples are.
 
-use crate::body::PyBody;
+use crate::ball::Rolling;
 use crate::convert::{bad_argument, check_size, columns, times};
 use numpy::PyArray1;
 use pyo3::prelude::*;
@@ -14,7 +14,6 @@ use routh_core::motion::FULL_DIM;
 use routh_core::problem::{DenseSolution, DENSE_NODES};
 use routh_core::projection::LevelSet;
 use routh_core::simulate::{project_onto, reduced};
-use routh_core::Body;
 
 /// The dense solution of the reduced or of the full motion.
 #[derive(Clone)]
@@ -28,7 +27,7 @@ enum Steps {
 /// with `full=True`). Picklable.
 #[pyclass(name = "DenseOutput", module = "routh", frozen)]
 pub struct DenseOutput {
-    body: Body,
+    body: Rolling,
     /// The state at the start, for the level set of the projection (None: no projection).
     level: Option<[f64; 6]>,
     steps: Steps,
@@ -59,7 +58,7 @@ impl DenseOutput {
     /// The dense output of a run (its `t_last` may lie inside the last step: a terminal
     /// event); `project`: the run projected onto the level set through its initial state.
     pub fn new<const N: usize>(
-        body: Body,
+        body: Rolling,
         project: bool,
         dense: DenseSolution<N>,
         y0: &[f64; N],
@@ -120,7 +119,7 @@ impl DenseOutput {
     /// Rebuild from the pickled fields (used by pickle).
     #[new]
     fn py_new(
-        body: PyRef<'_, PyBody>,
+        body: &Bound<'_, PyAny>,
         level: Option<[f64; 6]>,
         times: Vec<f64>,
         nodes: Vec<f64>,
@@ -137,7 +136,7 @@ impl DenseOutput {
             ));
         };
         Ok(DenseOutput {
-            body: body.inner,
+            body: Rolling::extract("body", body)?,
             level,
             steps,
             t_last,
@@ -155,7 +154,7 @@ impl DenseOutput {
             Steps::Full(s) => flat_nodes(s),
         };
         let args = (
-            PyBody { inner: d.body },
+            d.body.to_object(py)?,
             d.level,
             d.times().to_vec(),
             nodes,

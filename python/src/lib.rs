@@ -6,11 +6,12 @@
 //! array `(6, k)`, as in SciPy. Every formula lives in the library; this crate converts
 //! arguments and results, releases the interpreter lock while the library computes, and turns
 //! the library's errors into `ValueError` (bad input, naming the argument) or `RuntimeError`.
-//! One file per topic: the body, the problem and `simulate` (with the events and the
+//! One file per topic: the body, the general ball, the problem and `simulate` (with the events and the
 //! dense output on the library's driver, and the solution), the exact solution, the Hamiltonian flows of the first
 //! bracket, the steady motions, the audit.
 
 mod audit;
+mod ball;
 mod body;
 mod convert;
 mod dense;
@@ -30,6 +31,7 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add("__version__", env!("CARGO_PKG_VERSION"))?;
     module.add("MAX_VALUES", convert::MAX_VALUES)?;
     module.add_class::<body::PyBody>()?;
+    module.add_class::<ball::PyBall>()?;
     module.add_class::<problem::PyProblem>()?;
     module.add_class::<problem::PyEvent>()?;
     module.add_class::<solution::Solution>()?;

@@ -1,7 +1,7 @@
 //! The classes `Problem` and `Event`, the function `simulate`, and the cases (TOML files of
 //! `routh simulate`).
 
-use crate::body::PyBody;
+use crate::ball::Rolling;
 use crate::convert::{bad_argument, check_size, phase_point, python_error, times, vector};
 use crate::dense::DenseOutput;
 use crate::drive::{drive, EventRule, Hooks, Output, Settings};
@@ -10,6 +10,7 @@ use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
+use routh_core::ball::AsBall;
 use routh_core::case::Case;
 use routh_core::integrate::{Method, OdeSystem, Options};
 use routh_core::motion::{initial_full, FullMotion};
@@ -57,11 +58,11 @@ impl Named {
         }
     }
 
-    fn value(&self, body: &routh_core::Body, y: &[f64]) -> f64 {
+    fn value(&self, body: &impl AsBall, y: &[f64]) -> f64 {
         let gamma = [y[0], y[1], y[2]];
         match *self {
             Named::ThetaDot => {
-                let omega = body.angular_velocity(&gamma, &[y[3], y[4], y[5]]);
+                let omega = body.ball().angular_velocity(&gamma, &[y[3], y[4], y[5]]);
                 gamma[1] * omega[0] - gamma[0] * omega[1]
             }
             Named::Gamma3(c) => gamma[2] - c,
@@ -207,7 +208,7 @@ fn read_events(py: Python<'_>, events: Option<&Bound<'_, PyAny>>) -> PyResult<Ve
     }
 }
 
-/// An initial-value problem: a body, the initial state `x0 = (gamma, M)` (6 numbers, finite,
+/// An initial-value problem: a body (a `Body` or a `Ball`), the initial state `x0 = (gamma, M)` (6 numbers, finite,
 /// |gamma| = 1 within 1e-12), the time span `t_span` (a number `t_end`, meaning `(0, t_end)`,
 /// or a pair `(t0, t1)`; `t1 < t0` integrates backward in time), the integrator `method`
 /// (`"dop853"`: adaptive, order 8, with `rtol`/`atol`; `"rk4"` or `"rk4:<steps>"`: classical
@@ -216,7 +217,7 @@ fn read_events(py: Python<'_>, events: Option<&Bound<'_, PyAny>>) -> PyResult<Ve
 /// quaternion and the position of the centre of mass: the motion in space). Picklable.
 #[pyclass(name = "Problem", module = "routh", frozen)]
 pub struct PyProblem {
-    body: routh_core::Body,
+    body: Rolling,
     x0: [f64; 6],
     t_span: (f64, f64),
     rtol: f64,
@@ -258,7 +259,7 @@ impl PyProblem {
         };
         let rules: Vec<EventRule> = events.iter().map(|e| e.get().rule).collect();
         let kinds: Vec<&What> = events.iter().map(|e| &e.get().what).collect();
-        let body = self.body;
+        let body = self.body.ball();
         let mut event = |i: usize, t: f64, y: &[f64; N]| -> PyResult<f64> {
             match kinds[i] {
                 What::Named(named, _) => Ok(named.value(&body, y)),
@@ -296,7 +297,7 @@ impl PyProblem {
         })?;
         let dense = std::mem::take(&mut run.dense);
         let sol = if dense_output {
-            DenseOutput::new(body, self.project, dense, &y0, run.t_last)
+            DenseOutput::new(self.body, self.project, dense, &y0, run.t_last)
         } else {
             None
         };
@@ -380,7 +381,7 @@ impl PyProblem {
     #[pyo3(signature = (body, x0, t_span, rtol = 1e-12, atol = 1e-12, method = "dop853", project = false, full = false))]
     #[allow(clippy::too_many_arguments)]
     fn new(
-        body: PyRef<'_, PyBody>,
+        body: &Bound<'_, PyAny>,
         x0: &Bound<'_, PyAny>,
         t_span: &Bound<'_, PyAny>,
         rtol: f64,
@@ -405,7 +406,7 @@ impl PyProblem {
         .validate()
         .map_err(|e| PyValueError::new_err(e.to_string()))?;
         Ok(PyProblem {
-            body: body.inner,
+            body: Rolling::extract("body", body)?,
             x0,
             t_span,
             rtol,
@@ -423,7 +424,7 @@ impl PyProblem {
     fn from_case(path: Option<PathBuf>, full: bool) -> PyResult<Self> {
         let case = Case::load(path.as_deref()).map_err(python_error)?;
         Ok(PyProblem {
-            body: case.body("a Python Problem").map_err(python_error)?,
+            body: Rolling::of_case(&case, "a Python Problem"),
             x0: case.initial.to_array(),
             t_span: (0.0, case.integration.t_end),
             rtol: case.integration.rtol,
@@ -434,10 +435,10 @@ impl PyProblem {
         })
     }
 
-    /// The body.
+    /// The body (a `Body` or a `Ball`).
     #[getter]
-    fn body(&self) -> PyBody {
-        PyBody { inner: self.body }
+    fn body<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.body.to_object(py)
     }
 
     /// The initial state `(gamma, M)`.
@@ -489,7 +490,7 @@ impl PyProblem {
         let p = slf.get();
         let py = slf.py();
         let args = (
-            PyBody { inner: p.body },
+            p.body.to_object(py)?,
             p.x0.to_vec(),
             p.t_span,
             p.rtol,
@@ -504,7 +505,7 @@ impl PyProblem {
     fn __repr__(&self) -> String {
         format!(
             "Problem(body={}, x0={:?}, t_span={:?}, rtol={:?}, atol={:?}, method={:?}, project={}, full={})",
-            PyBody { inner: self.body }.__repr__(),
+            self.body.repr(),
             self.x0,
             self.t_span,
             self.rtol,
@@ -533,7 +534,7 @@ impl PyProblem {
             Some(ts) => (ts.as_slice(), false),
             None => (&[][..], true),
         };
-        let body = self.body;
+        let body = self.body.ball();
         if self.full {
             let y0 = initial_full(&State::from_array(&self.x0));
             self.solve_with(
@@ -576,7 +577,7 @@ impl PyProblem {
 #[allow(clippy::too_many_arguments)]
 pub fn simulate(
     py: Python<'_>,
-    body: PyRef<'_, PyBody>,
+    body: &Bound<'_, PyAny>,
     x0: &Bound<'_, PyAny>,
     t_span: Option<&Bound<'_, PyAny>>,
     rtol: f64,
@@ -607,14 +608,13 @@ pub fn simulate(
     )
 }
 
-/// A case as the tuple `(Body, x0, t_end, rtol, atol)`, x0 a numpy 6-vector.
-type CaseTuple<'py> = (PyBody, Bound<'py, PyArray1<f64>>, f64, f64, f64);
+/// A case as the tuple `(body, x0, t_end, rtol, atol)`, the body a `Body` (centre of mass on
+/// the e3 axis) or a `Ball`, x0 a numpy 6-vector.
+type CaseTuple<'py> = (Bound<'py, PyAny>, Bound<'py, PyArray1<f64>>, f64, f64, f64);
 
 fn case_tuple(py: Python<'_>, case: Case) -> PyResult<CaseTuple<'_>> {
     Ok((
-        PyBody {
-            inner: case.body("a Python Body").map_err(python_error)?,
-        },
+        Rolling::of_case(&case, "a Python Body").to_object(py)?,
         PyArray1::from_slice(py, &case.initial.to_array()),
         case.integration.t_end,
         case.integration.rtol,

@@ -8,8 +8,8 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
+use routh_core::ball::AsBall;
 use routh_core::motion::{full_columns, FULL_DIM};
-use routh_core::Body;
 
 /// The result of `simulate` (as SciPy's `solve_ivp`): `t` (shape `(k,)`), `y` (shape `(n, k)`,
 /// n = 6 for `(gamma, M)`, 12 with `full=True` for `(gamma, M, q, x, y)`), `sol` (a
@@ -61,7 +61,7 @@ fn rows<'py, const N: usize>(
 /// The space columns of the full motion at the samples: `q`, `com`, `contact`.
 fn space<'py>(
     py: Python<'py>,
-    body: &Body,
+    body: &impl AsBall,
     ys: &[[f64; FULL_DIM]],
 ) -> PyResult<Bound<'py, PyDict>> {
     let cols: Vec<[f64; 9]> = ys.iter().map(|y| full_columns(body, y)).collect();
@@ -84,7 +84,7 @@ impl Solution {
     #[allow(clippy::too_many_arguments)]
     pub fn from_run<const N: usize>(
         py: Python<'_>,
-        body: &Body,
+        body: &impl AsBall,
         run: Run<N>,
         method: String,
         projected: bool,

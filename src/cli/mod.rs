@@ -52,9 +52,22 @@ pub fn json<T: serde::Serialize>(value: &T) -> String {
     serde_json::to_string_pretty(value).expect("serialisable output") + "\n"
 }
 
-/// Print `value` as pretty JSON on stdout.
+/// Print `value` as pretty JSON on stdout. A reader that closed the pipe early (`routh audit
+/// --json | head -c 10`) ends the process quietly with exit code 0, as `print!` would panic;
+/// any other write error is reported with exit code 2.
 pub fn print_json<T: serde::Serialize>(value: &T) {
-    print!("{}", json(value));
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out
+        .write_all(json(value).as_bytes())
+        .and_then(|()| out.flush())
+    {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("error: standard output: {e}");
+        std::process::exit(2);
+    }
 }
 
 /// Parse the arguments, run the command, map errors to exit code 2.

@@ -41,7 +41,7 @@ pub struct Args {
     /// that needs more is a row with that reason.
     #[arg(long)]
     pub max_steps: Option<usize>,
-    /// Integrator: `dop853` or `rk4` / `rk4:<steps>`.
+    /// Integrator: `dop853`, `vern9`, `taylor`, `auto` or `rk4` / `rk4:<steps>`.
     #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
     pub method: Method,
     /// Worker threads (default: one per core).

@@ -8,6 +8,7 @@
 
 pub mod gauss;
 pub mod nutation;
+pub mod panels;
 pub mod reduction;
 
 pub use nutation::{Accuracy, ExactSolution, Motion, Nutation};

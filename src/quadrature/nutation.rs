@@ -18,25 +18,37 @@ use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::gauss::GaussLegendre;
+use crate::quadrature::panels::{Piecewise, Sample};
 use crate::quadrature::reduction::Reduction;
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
 use num_dual::first_derivative;
+use std::cell::Cell;
 use std::f64::consts::{PI, TAU};
 
-/// First number of Chebyshev nodes tried for the series of `dt/dsigma`.
-const FIRST_NODES: usize = 32;
-/// Most nodes tried; a series that needs more passes so close to a separatrix (or to the
-/// axis) that the quadrature refuses it rather than spend seconds on it.
-const MAX_NODES: usize = 8192;
-/// A series has converged when its last quarter of coefficients is below this, relative to its
-/// largest coefficient, or below the round-off floor of its samples (whichever is larger).
-const SERIES_TOLERANCE: f64 = 2e-14;
+/// Most samples spent on the panels of one nutation; a level set that needs more lies within
+/// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
+/// Bisection toward a near-singularity at distance epsilon costs about
+/// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
+const SAMPLE_BUDGET: usize = 6400;
 /// Turning points closer than this to a pole are snapped to it (a motion through the axis).
 const POLE_SNAP: f64 = 1e-12;
-/// Gauss-Legendre nodes for the divided differences of Q (see `Nutation::cofactor`).
+/// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
+/// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation, about
+/// 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close to R and a
+/// large m) every sample bisects toward it, and with the sample budget that took 1.5 s on a
+/// fuzz input. Ordinary motions use 2 pieces per sample.
+const WORK_BUDGET: usize = 100_000;
+/// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
+/// (accurate over long intervals), below it from the second derivative (no cancellation).
+const WIDE_NUTATION: f64 = 1.0 / 16.0;
+/// Gauss-Legendre nodes per direction of the double integral of a narrow nutation's cofactor:
+/// over a width below `WIDE_NUTATION` Q'' is so close to a polynomial that 8 nodes (exact to
+/// degree 15) leave an error far below round-off unless a singularity of Q lies within
+/// about the width of the nutation.
+const NARROW_NODES: usize = 8;
 /// First step of the outward search for the turning points.
 const FIRST_SEARCH_STEP: f64 = 1e-8;
 /// Largest step of that search (Q is smooth; a pair of roots closer than this is not sought).
@@ -45,75 +57,16 @@ const MAX_SEARCH_STEP: f64 = 1.0 / 128.0;
 /// rotations about e3 is below this many machine epsilons of `|J| |x|` (the round-off scale of
 /// the field: J is its Jacobian, x the state).
 const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
+/// A turning point is a double root of Q (a separatrix) when the round-off of Q moves it by
+/// more than `1 / SEPARATRIX_MARGIN` of its distance to the other root of the local quadratic
+/// of Q: the round-off is an estimate of its typical size, not a bound, and a double root
+/// within a few such sizes cannot be told from a separatrix.
+const SEPARATRIX_MARGIN: f64 = 16.0;
 /// Absolute round-off of the integrals H1, H3, K computed from a state, in machine epsilons of
 /// the sum of the magnitudes of their terms. Here and below the round-off is estimated, not
 /// bounded: a few epsilons per sum of terms, errors of independent samples adding in
 /// quadrature (docs/quadrature.md, section 5).
 const INTEGRAL_EPSILONS: f64 = 2.0;
-
-/// A cosine series `c0/2 + sum_k c_k cos(k sigma)` and its integral from 0.
-#[derive(Debug, Clone, PartialEq)]
-struct CosineSeries(Vec<f64>);
-
-impl CosineSeries {
-    /// The series interpolating `samples` at the nodes `(j + 1/2) pi / n` (a DCT-II). The
-    /// cosines come from a table of `cos(m pi / (2n))` indexed by `k (2j + 1) mod 4n`, exact
-    /// integer arithmetic: computing `cos(k (j + 1/2) pi / n)` directly rounds an argument of
-    /// size `n^2`, and that error (1e-9 at n = 8192) would raise the noise of the coefficients
-    /// with n instead of letting them fall.
-    fn from_samples(samples: &[f64]) -> Self {
-        let n = samples.len();
-        let table: Vec<f64> = (0..4 * n)
-            .map(|m| (m as f64 * PI / (2 * n) as f64).cos())
-            .collect();
-        let coef = (0..n)
-            .map(|k| {
-                let sum: f64 = samples
-                    .iter()
-                    .enumerate()
-                    .map(|(j, v)| v * table[(k * (2 * j + 1)) % (4 * n)])
-                    .sum();
-                2.0 * sum / n as f64
-            })
-            .collect();
-        CosineSeries(coef)
-    }
-
-    /// The largest magnitude of the last quarter of the coefficients.
-    fn tail(&self) -> f64 {
-        let n = self.0.len();
-        self.0[3 * n / 4..]
-            .iter()
-            .fold(0.0_f64, |m, c| m.max(c.abs()))
-    }
-
-    /// Whether the tail is negligible: below `SERIES_TOLERANCE` of the largest coefficient, or
-    /// below `floor`, the noise of the coefficients that the round-off of the samples leaves
-    /// (it does not fall with n, so asking for less would never end).
-    fn converged(&self, floor: f64) -> bool {
-        let largest = self.0.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
-        self.tail() <= SERIES_TOLERANCE * largest + floor
-    }
-
-    /// The mean over one period, `c0 / 2`.
-    fn mean(&self) -> f64 {
-        0.5 * self.0[0]
-    }
-
-    /// The value and the integral from 0 at `sigma`.
-    fn value_and_integral(&self, sigma: f64) -> (f64, f64) {
-        let (sin1, cos1) = sigma.sin_cos();
-        let (mut sk, mut ck) = (0.0, 1.0);
-        let mut value = self.mean();
-        let mut integral = self.mean() * sigma;
-        for (k, c) in self.0.iter().enumerate().skip(1) {
-            (sk, ck) = (sk * cos1 + ck * sin1, ck * cos1 - sk * sin1);
-            value += c * ck;
-            integral += c * sk / k as f64;
-        }
-        (value, integral)
-    }
-}
 
 /// A nutation: the tilt oscillates between `u1` and `u2`, the whole state is periodic up to
 /// a rotation about e3 by `advance` per period.
@@ -128,20 +81,29 @@ pub struct Nutation {
     pub through_top: bool,
     /// Whether the lower turning point is the pole gamma3 = -1.
     pub through_bottom: bool,
+    /// `1 - u2` and `1 + u1`, accurate near the poles (see `Turning`).
+    gap_top: f64,
+    gap_bottom: f64,
     /// Nutation period T.
     pub period: f64,
     /// Advance of the precession angle psi per period.
     pub advance: f64,
-    /// Number of Chebyshev nodes used.
+    /// Number of samples (Chebyshev nodes of all panels) kept.
     pub nodes: usize,
     /// Estimated relative error of the period: the truncation and round-off of its series and
     /// the round-off of the turning points.
     pub period_error: f64,
     /// Estimated absolute error of the advance per period (radians).
     pub advance_error: f64,
-    time: CosineSeries,
-    angle: CosineSeries,
+    /// `dt/dsigma` and `dpsi/dsigma` (less its pole parts) on `[0, pi]`.
+    series: Piecewise,
     rule: GaussLegendre,
+    /// The rule of the double integral of a narrow nutation's cofactor.
+    narrow_rule: GaussLegendre,
+    /// Where Q is not analytic ([`Reduction::singularities`]).
+    singularities: Vec<(f64, f64)>,
+    /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
+    work: Cell<usize>,
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
@@ -277,9 +239,41 @@ fn rotated(state: &State, angle: f64) -> State {
     }
 }
 
+/// A turning point u of Q and its distance `gap = 1 - |u|` from the pole on its side, found
+/// in that variable near the pole: there u itself carries an absolute rounding of `eps`,
+/// a relative error `eps / gap` of `1 - |u|`, which the poles of `dpsi/dt` at `u = +-1`
+/// turn into an error of the precession angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Turning {
+    u: f64,
+    gap: f64,
+}
+
+/// Below this distance from a pole a turning point is refined in the distance itself.
+const NEAR_POLE: f64 = 1.0 / 8.0;
+
 /// The turning point of Q met by going from `u0` in direction `dir` (+1 or -1): a geometric
-/// search for the first sign change, refined by Brent's method.
-fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
+/// search for the first sign change, refined by Brent's method (near the pole `dir`, in the
+/// distance from it, [`Reduction::q_near_pole`]).
+fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<Turning> {
+    let u = turning_point_u(red, u0, dir)?;
+    let gap = 1.0 - dir * u;
+    if !(gap < NEAR_POLE) || gap == 0.0 {
+        return Ok(Turning { u, gap });
+    }
+    // Q > 0 toward u0 (larger gap), Q < 0 toward the pole.
+    let q = |v: f64| red.q_near_pole(dir, v);
+    let (inner, outer) = (gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON, gap * (1.0 - 1e-6));
+    let gap = if q(inner) > 0.0 && q(outer) < 0.0 {
+        brent(q, outer, inner, 0.0, 200).unwrap_or(gap)
+    } else {
+        gap
+    };
+    Ok(Turning { u, gap })
+}
+
+/// The turning point as u (see [`turning_point`]).
+fn turning_point_u(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
     let q = |u: f64| red.q(u);
     let end = dir;
     let (mut prev, mut step) = (u0, FIRST_SEARCH_STEP);
@@ -394,22 +388,17 @@ impl ExactSolution {
             };
             return Ok(steady(u0, omega_fit, accuracy));
         }
-        let mut u1 = turning_point(&red, u0, -1.0)?;
-        let mut u2 = turning_point(&red, u0, 1.0)?;
+        let lower = turning_point(&red, u0, -1.0)?;
+        let upper = turning_point(&red, u0, 1.0)?;
+        let (u1, u2) = (lower.u, upper.u);
         let mid = 0.5 * (u1 + u2);
         let noise_mid = red.q_noise(mid, errors).max(red.q_noise(u0, errors));
         if red.q(mid).max(red.q(u0)) <= 4.0 * noise_mid {
             return Self::unresolved_nutation(&red, u0, u2 - u1, noise_mid)
                 .map(|(rate, accuracy)| steady(u0, rate, accuracy));
         }
-        let through_top = 1.0 - u2 <= POLE_SNAP;
-        let through_bottom = u1 + 1.0 <= POLE_SNAP;
-        if through_top {
-            u2 = 1.0;
-        }
-        if through_bottom {
-            u1 = -1.0;
-        }
+        let (lower, upper) = (lower.snapped(-1.0), upper.snapped(1.0));
+        let (u1, u2) = (lower.u, upper.u);
         let mut root_error = 0.0;
         for u in [u1, u2] {
             let (_, dq, q2) = red.q_derivatives(u);
@@ -420,7 +409,7 @@ impl ExactSolution {
             // (Q'^2 <= noise |Q''|) the two roots are one double root within the accuracy of
             // the integrals: the level set is a separatrix, and which side the motion lies on
             // is not decided by the integrals.
-            if !(dq * dq > noise * q2.abs()) {
+            if !(dq * dq > SEPARATRIX_MARGIN * noise * q2.abs()) {
                 return Err(RouthError::Separatrix {
                     u_min: u1,
                     u_max: u2,
@@ -435,7 +424,7 @@ impl ExactSolution {
         }
         let omega = initial.omega(body);
         let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
-        let mut nutation = Nutation::new(red, u1, u2, through_top, through_bottom, initial, udot0)?;
+        let mut nutation = Nutation::new(red, lower, upper, initial, udot0)?;
         match Self::sensitivity(&nutation, mid, errors, initial, udot0) {
             Some((period, advance)) => {
                 nutation.period_error += period;
@@ -446,20 +435,33 @@ impl ExactSolution {
                 nutation.advance_error += root_error * nutation.advance.abs();
             }
         }
-        // The state moves at `velocity` (relative sizes: gamma against 1, M against |M|), so a
-        // time error dt = T dT/T per period moves it by `velocity dt`; an error of psi rotates
-        // its horizontal part.
-        let x = initial.to_array();
-        let field = vector_field(body, &x);
-        let m_size = x[3..]
+        // The state moves at `velocity` (relative sizes: gamma against 1, M against |M| of the
+        // initial state), so a time error dt = T dT/T per period moves it by `velocity dt`; an
+        // error of psi rotates its horizontal part. Both vary along the nutation: their largest
+        // values at the turning points, the quarter phases and the widest tilt are taken.
+        let m_size = initial
+            .m
             .iter()
             .map(|v| v * v)
             .sum::<f64>()
             .sqrt()
             .max(f64::MIN_POSITIVE);
         let size = |v: &[f64], scale: f64| v.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
-        let velocity = size(&field[..3], 1.0) + size(&field[3..], m_size);
-        let horizontal = size(&x[..2], 1.0) + size(&x[3..5], m_size);
+        let widest = (0.5 * (u1 + u2) / (0.5 * (u2 - u1)))
+            .clamp(-1.0, 1.0)
+            .acos();
+        let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
+        for sigma in [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0] {
+            let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
+            let x = State {
+                gamma,
+                m: body.angular_momentum(&gamma, &omega),
+            }
+            .to_array();
+            let field = vector_field(body, &x);
+            velocity = velocity.max(size(&field[..3], 1.0) + size(&field[3..], m_size));
+            horizontal = horizontal.max(size(&x[..2], 1.0) + size(&x[3..5], m_size));
+        }
         let per_period = velocity * nutation.period * nutation.period_error
             + horizontal * nutation.advance_error;
         let accuracy = Accuracy {
@@ -503,21 +505,9 @@ impl ExactSolution {
             moved(2, red.k),
         )
         .ok()?;
-        let lo = turning_point(&other, mid, -1.0).ok()?;
-        let hi = turning_point(&other, mid, 1.0).ok()?;
-        let (lo, hi) = (
-            if nutation.through_bottom && lo + 1.0 <= POLE_SNAP {
-                -1.0
-            } else {
-                lo
-            },
-            if nutation.through_top && 1.0 - hi <= POLE_SNAP {
-                1.0
-            } else {
-                hi
-            },
-        );
-        let alt = Nutation::new(other, lo, hi, lo == -1.0, hi == 1.0, initial, udot0).ok()?;
+        let lo = turning_point(&other, mid, -1.0).ok()?.snapped(-1.0);
+        let hi = turning_point(&other, mid, 1.0).ok()?.snapped(1.0);
+        let alt = Nutation::new(other, lo, hi, initial, udot0).ok()?;
         Some((
             (alt.period - nutation.period).abs() / (k * nutation.period),
             (alt.advance - nutation.advance).abs() / k,
@@ -598,37 +588,66 @@ impl ExactSolution {
     }
 }
 
-/// Where a phase sigma puts the tilt: u, the signed sin theta, and `(du/dt) / s * f`.
+/// Where a phase sigma puts the tilt: u, `1 - u` and `1 + u` (from the distances to the
+/// turning points, without the rounding of u), the signed sin theta, and `(du/dt) / s * f`.
 struct Phase {
     u: f64,
+    one_minus: f64,
+    one_plus: f64,
     s: f64,
     udot_over_s_times_f: f64,
+}
+
+impl Turning {
+    /// The pole itself when the turning point is within `POLE_SNAP` of it (a motion through
+    /// the axis).
+    fn snapped(self, pole: f64) -> Self {
+        if self.gap <= POLE_SNAP {
+            Turning { u: pole, gap: 0.0 }
+        } else {
+            self
+        }
+    }
+}
+
+impl Phase {
+    /// `1 - p u` for a pole `p = +-1`.
+    fn one_minus_pole(&self, pole: f64) -> f64 {
+        if pole > 0.0 {
+            self.one_minus
+        } else {
+            self.one_plus
+        }
+    }
 }
 
 impl Nutation {
     fn new(
         red: Reduction,
-        u1: f64,
-        u2: f64,
-        through_top: bool,
-        through_bottom: bool,
+        lower: Turning,
+        upper: Turning,
         initial: &State,
         udot0: f64,
     ) -> Result<Self> {
+        let (u1, u2) = (lower.u, upper.u);
         let mut nut = Nutation {
             reduction: red,
             u1,
             u2,
-            through_top,
-            through_bottom,
+            gap_bottom: lower.gap,
+            gap_top: upper.gap,
+            through_top: upper.gap == 0.0,
+            through_bottom: lower.gap == 0.0,
             period: 0.0,
             advance: 0.0,
             nodes: 0,
             period_error: 0.0,
             advance_error: 0.0,
-            time: CosineSeries(vec![]),
-            angle: CosineSeries(vec![]),
+            series: Piecewise::default(),
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
+            narrow_rule: GaussLegendre::new(NARROW_NODES),
+            singularities: red.singularities(),
+            work: Cell::new(0),
             sigma0: 0.0,
             psi_ref: 0.0,
             poles: vec![],
@@ -638,7 +657,7 @@ impl Nutation {
         // they would make psi turn too fast for a cosine series. Their parts
         // `c_p / (1 - p u)` with `c_p = p N(p) f(p) / (2 A R)` are subtracted from the samples
         // and integrated in closed form (`pole_angle`); the remainder is smooth.
-        for (pole, through) in [(1.0, through_top), (-1.0, through_bottom)] {
+        for (pole, through) in [(1.0, nut.through_top), (-1.0, nut.through_bottom)] {
             let (p, _) = nut.cofactor_with_noise(pole);
             if !through && p > 0.0 && p.is_finite() {
                 let strength = pole * red.jellett_remainder(pole)
@@ -648,103 +667,40 @@ impl Nutation {
             }
         }
         let half = 0.5 * (u2 - u1);
-        let eps = f64::EPSILON;
-        let mut n = FIRST_NODES;
-        loop {
-            let mut dt = Vec::with_capacity(n);
-            let mut dpsi = Vec::with_capacity(n);
-            let (mut noise_dt, mut noise_dpsi) = (0.0, 0.0);
-            let (mut square_dt, mut square_dpsi) = (0.0, 0.0);
-            for j in 0..n {
-                let sigma = (j as f64 + 0.5) * PI / n as f64;
-                let phase = nut.phase(sigma, false);
-                let (p, p_noise) = nut.cofactor_with_noise(phase.u);
-                if p.is_nan() || p <= 0.0 {
-                    return Err(RouthError::Singular {
-                        formula: "the reduced equation (du/dt)^2 = Q(u)",
-                        reason: format!(
-                            "Q / ((u - u1)(u2 - u)) = {p:e} <= 0 at gamma3 = {} between the \
-                             turning points {u1} and {u2}",
-                            phase.u
-                        ),
-                    });
-                }
-                let f = p.sqrt().recip();
-                let quotient = nut.jellett_quotient(phase.u);
-                let rate = red.precession_from_quotient(phase.u, quotient);
-                // Round-off of the rate: its two terms, and Jellett's remainder N, a difference
-                // of H3 and C h omega3, divided by 1 - u^2.
-                let b = &red.body;
-                let spin = red.spin(phase.u);
-                let remainder_noise =
-                    red.h3.abs() + (b.i3 * (b.radius * phase.u + b.a) * spin).abs();
-                let rate_noise = eps
-                    * ((phase.u * quotient).abs() / (b.i1 * b.radius)
-                        + spin.abs()
-                        + remainder_noise / ((1.0 - phase.u * phase.u) * b.i1 * b.radius));
-                let f_noise = 0.5 * f * p_noise;
-                dt.push(f);
-                let singular: f64 = nut
-                    .poles
-                    .iter()
-                    .map(|(pole, c)| c / (1.0 - pole * phase.u))
-                    .sum();
-                dpsi.push(rate * f - singular);
-                let dpsi_noise = rate.abs() * f_noise + rate_noise * f;
-                noise_dt += f_noise;
-                noise_dpsi += dpsi_noise;
-                square_dt += f_noise * f_noise;
-                square_dpsi += dpsi_noise * dpsi_noise;
-            }
-            // The coefficients are sums of n samples times 2/n: their noise is at most twice
-            // the mean noise of a sample.
-            let floor_dt = 2.0 * noise_dt / n as f64;
-            let floor_dpsi = 2.0 * noise_dpsi / n as f64;
-            let time = CosineSeries::from_samples(&dt);
-            let angle = CosineSeries::from_samples(&dpsi);
-            let (time_ok, angle_ok) = (time.converged(floor_dt), angle.converged(floor_dpsi));
-            if time_ok && angle_ok {
-                nut.nodes = n;
-                nut.period = TAU * time.mean();
-                nut.advance = TAU * angle.mean() + nut.pole_angle(TAU);
-                // T = pi c0 and the advance pi b0: their errors are those of the means c0 and
-                // b0 of the samples, the truncation (bounded by the tail) plus the round-off of
-                // the samples, independent from sample to sample, so adding in quadrature.
-                let mean_noise = |square: f64| 2.0 * square.sqrt() / n as f64;
-                nut.period_error = (time.tail() + mean_noise(square_dt)) / time.0[0].abs();
-                nut.advance_error = PI * (angle.tail() + mean_noise(square_dpsi));
-                nut.time = time;
-                nut.angle = angle;
-                break;
-            }
-            if n >= MAX_NODES {
-                let reason = if time_ok {
-                    format!(
-                        "the motion passes so close to the axis (gamma3 up to {u2}, down to {u1}) \
-                         that psi turns too fast to resolve with {n} nodes"
-                    )
-                } else {
-                    format!(
-                        "the series of dt/dsigma needs more than {n} nodes (period > {:.6e}): the \
-                         level set is within the resolution of the quadrature of a separatrix",
-                        TAU * time.mean()
-                    )
-                };
-                return Err(if time_ok {
+        let built = Piecewise::build(SAMPLE_BUDGET, |sigma, rho| nut.sample(sigma, rho))?;
+        let series = match built {
+            Ok(series) => series,
+            Err(unresolved) => {
+                let n = unresolved.samples;
+                return Err(if unresolved.time_converged {
                     RouthError::Singular {
                         formula: "the precession angle psi",
-                        reason,
+                        reason: format!(
+                            "the motion passes so close to the axis (gamma3 up to {u2}, down to \
+                             {u1}) that psi turns too fast to resolve with {n} samples"
+                        ),
                     }
                 } else {
                     RouthError::Separatrix {
                         u_min: u1,
                         u_max: u2,
-                        reason,
+                        reason: format!(
+                            "dt/dsigma is not resolved with {n} samples (period > {:.6e}): \
+                             the level set is within the resolution of f64 of a separatrix",
+                            2.0 * unresolved.partial_time
+                        ),
                     }
                 });
             }
-            n *= 2;
-        }
+        };
+        nut.nodes = series.nodes;
+        nut.period = series.full_integral(0);
+        nut.advance = series.full_integral(1) + nut.pole_angle(TAU);
+        // T and the advance are twice the half integrals: their errors are twice the
+        // truncation plus the round-off of the samples.
+        nut.period_error = 2.0 * (series.truncation[0] + series.noise[0]) / nut.period;
+        nut.advance_error = 2.0 * (series.truncation[1] + series.noise[1]);
+        nut.series = series;
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
         // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
         // only to the square root of its error, the rate du/dt fixes it well.
@@ -755,7 +711,7 @@ impl Nutation {
             cos0.clamp(-1.0, 1.0).acos()
         };
         for _ in 0..3 {
-            let (f, _) = nut.time.value_and_integral(sigma0);
+            let (f, _) = nut.series.value_and_integral(0, sigma0);
             sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
         }
         nut.sigma0 = sigma0;
@@ -781,45 +737,128 @@ impl Nutation {
         Ok(nut)
     }
 
-    /// `P(u) = Q(u) / ((u - u1)(u2 - u))`, with the factor of the nearer turning point
-    /// divided out exactly: `Q(u) / (u - u1) = int_0^1 Q'(u1 + tau (u - u1)) d tau` (as
-    /// `Q(u1) = 0`), by Gauss-Legendre quadrature of the derivative from automatic
-    /// differentiation. Dividing Q itself would lose the digits that cancel in Q near a root.
-    /// Also returns the relative round-off of P: that of Q' (`eps` times the sum of the
-    /// magnitudes of the slopes of the terms of Q, at both ends) against the mean slope.
+    /// `P(u) = Q(u) / ((u - u1)(u2 - u))` as minus the second divided difference
+    /// `Q[u1, u, u2]`, which is smooth in u for any u1, u2: the turning points are roots of Q
+    /// only to its round-off, and dividing Q by `(u - u1)(u2 - u)` (or Q' from the nearer
+    /// turning point, as before) would make P jump by that round-off over `(u2 - u1)^2`
+    /// between the two halves of the nutation, a jump no series resolves. Computed without
+    /// dividing Q itself:
+    ///
+    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)` with
+    ///   `Q[a, b] = int_0^1 Q'(a + tau (b - a)) d tau`;
+    /// * a narrow one: by Hermite-Genocchi, `Q[u1, u, u2] =
+    ///   int_0^1 int_0^1 s Q''(u1 + s (u - u1) + s t (u2 - u)) dt ds`, whose round-off does
+    ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`).
+    ///
+    /// Q' and Q'' by automatic differentiation, the integrals by Gauss-Legendre. Also returns
+    /// the relative round-off of P: `eps` times the magnitudes of the slopes (curvatures) of
+    /// the terms of Q, against P.
     fn cofactor_with_noise(&self, u: f64) -> (f64, f64) {
         let red = &self.reduction;
-        let slope = |from: f64| {
-            let mean = self
-                .rule
-                .integrate(|tau| red.q_derivatives(from + tau * (u - from)).1);
-            let scale = red.q_slope_scale(from).max(red.q_slope_scale(u));
-            (mean, f64::EPSILON * scale / mean.abs())
-        };
-        if u - self.u1 <= self.u2 - u {
-            let (mean, noise) = slope(self.u1);
-            (mean / (self.u2 - u), noise)
+        let (u1, u2) = (self.u1, self.u2);
+        let width = u2 - u1;
+        if width > WIDE_NUTATION {
+            let difference = |a: f64, b: f64| {
+                let (mean, pieces) = self
+                    .rule
+                    .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1);
+                self.work.set(self.work.get() + pieces);
+                mean
+            };
+            let p = (difference(u1, u) - difference(u, u2)) / width;
+            let scale = red.q_slope_scale(u1) + red.q_slope_scale(u) + red.q_slope_scale(u2);
+            (p, f64::EPSILON * scale / (width * p.abs()))
         } else {
-            let (mean, noise) = slope(self.u2);
-            (-mean / (u - self.u1), noise)
+            let p = -self.narrow_rule.integrate(|s| {
+                s * self
+                    .narrow_rule
+                    .integrate(|t| red.q_derivatives(u1 + s * (u - u1) + s * t * (u2 - u)).2)
+            });
+            (p, f64::EPSILON * red.q_curvature_scale(u) / p.abs())
         }
+    }
+
+    /// The two integrands at phase sigma in `[0, pi]` (`rho = pi - sigma`; sigma is exact
+    /// below pi/2, rho above) with their round-off: `dt/dsigma = f = P^(-1/2)` and
+    /// `dpsi/dsigma = rate f` less the pole parts `c_p / (1 - p u)`.
+    fn sample(&self, sigma: f64, rho: f64) -> Result<Sample> {
+        let red = &self.reduction;
+        if self.work.get() > WORK_BUDGET {
+            return Err(RouthError::Singular {
+                formula: "the reduced equation (du/dt)^2 = Q(u)",
+                reason: format!(
+                    "a singularity of Q at {:?} (re, im) lies so close to the nutation between \
+                     {} and {} that its quadrature needs more than {WORK_BUDGET} \
+                     Gauss-Legendre pieces",
+                    self.singularities, self.u1, self.u2
+                ),
+            });
+        }
+        let phase = if sigma <= 0.5 * PI {
+            self.phase(sigma, false)
+        } else {
+            let (hc, hs) = (0.5 * rho).sin_cos();
+            self.phase_of_half_angle(hs, hc)
+        };
+        let (p, p_noise) = self.cofactor_with_noise(phase.u);
+        if p.is_nan() || p <= 0.0 {
+            return Err(RouthError::Singular {
+                formula: "the reduced equation (du/dt)^2 = Q(u)",
+                reason: format!(
+                    "Q / ((u - u1)(u2 - u)) = {p:e} <= 0 at gamma3 = {} between the turning \
+                     points {} and {}",
+                    phase.u, self.u1, self.u2
+                ),
+            });
+        }
+        let f = p.sqrt().recip();
+        let quotient = self.jellett_quotient(&phase);
+        let rate = red.precession_from_quotient(phase.u, quotient);
+        // Round-off of the rate: its two terms, and Jellett's remainder N, a difference of H3
+        // and C h omega3, divided by 1 - u^2.
+        let b = &red.body;
+        let spin = red.spin(phase.u);
+        let remainder_noise = red.h3.abs() + (b.i3 * (b.radius * phase.u + b.a) * spin).abs();
+        let rate_noise = f64::EPSILON
+            * ((phase.u * quotient).abs() / (b.i1 * b.radius)
+                + spin.abs()
+                + remainder_noise / (phase.one_minus * phase.one_plus * b.i1 * b.radius));
+        let f_noise = 0.5 * f * p_noise;
+        let singular: f64 = self
+            .poles
+            .iter()
+            .map(|(pole, c)| c / phase.one_minus_pole(*pole))
+            .sum();
+        // The difference `rate f - singular` of two large numbers near a pole rounds both.
+        let difference_noise = 2.0 * f64::EPSILON * ((rate * f).abs() + singular.abs());
+        Ok(Sample {
+            values: [f, rate * f - singular],
+            noise: [
+                f_noise,
+                rate.abs() * f_noise + rate_noise * f + difference_noise,
+            ],
+        })
     }
 
     /// Jellett's quotient `N(u) / (1 - u^2)`; near a pole `p` that the motion passes through,
     /// where `N(p) = 0`, with the factor `u - p` divided out exactly as in `cofactor`:
-    /// `N(u) / (1 - u^2) = -int_0^1 N'(p + tau (u - p)) d tau / (u + p)`.
-    fn jellett_quotient(&self, u: f64) -> f64 {
+    /// `N(u) / (1 - u^2) = -int_0^1 N'(p + tau (u - p)) d tau / (u + p)`; elsewhere with
+    /// `1 - u^2` from the phase's accurate `1 - u` and `1 + u` (near a pole, u itself rounds
+    /// 1 - u to a relative error of `eps / (1 - u)`, which the pole amplifies).
+    fn jellett_quotient(&self, phase: &Phase) -> f64 {
         let red = &self.reduction;
+        let u = phase.u;
         let pole = if self.through_top && u > 0.0 {
             1.0
         } else if self.through_bottom && u < 0.0 {
             -1.0
         } else {
-            return red.jellett_quotient(u);
+            return red.jellett_remainder(u) / (phase.one_minus * phase.one_plus);
         };
-        let slope = self.rule.integrate(|tau| {
-            first_derivative(|v| red.jellett_remainder(v), pole + tau * (u - pole)).1
+        let (slope, pieces) = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
+            first_derivative(|w| red.jellett_remainder(w), v).1
         });
+        self.work.set(self.work.get() + pieces);
         -slope / (u + pole)
     }
 
@@ -832,7 +871,11 @@ impl Nutation {
         self.poles
             .iter()
             .map(|&(pole, c)| {
-                let (minus, plus) = (1.0 - pole * self.u2, 1.0 - pole * self.u1);
+                let (minus, plus) = if pole > 0.0 {
+                    (self.gap_top, 2.0 - self.gap_bottom)
+                } else {
+                    (2.0 - self.gap_top, self.gap_bottom)
+                };
                 let root = (minus * plus).sqrt();
                 let turns = (sigma / TAU).floor();
                 let local = sigma - turns * TAU;
@@ -848,10 +891,14 @@ impl Nutation {
     /// The tilt at phase `sigma` (in `[0, 2 pi)`); `odd` says the phase is in an odd
     /// period, where the signed sin theta of a motion through a pole has the opposite sign.
     fn phase(&self, sigma: f64, odd: bool) -> Phase {
-        let half = 0.5 * (self.u2 - self.u1);
         let flip = if odd { -1.0 } else { 1.0 };
         let (hs, hc) = (0.5 * sigma).sin_cos();
-        let (hs, hc) = (flip * hs, flip * hc);
+        self.phase_of_half_angle(flip * hs, flip * hc)
+    }
+
+    /// The tilt at the phase whose half angle has sine `hs` and cosine `hc`.
+    fn phase_of_half_angle(&self, hs: f64, hc: f64) -> Phase {
+        let half = 0.5 * (self.u2 - self.u1);
         let d1 = 2.0 * half * hs * hs;
         let d2 = 2.0 * half * hc * hc;
         let u = if d1 <= d2 { self.u1 + d1 } else { self.u2 - d2 };
@@ -862,17 +909,19 @@ impl Nutation {
         let (c_top, r_top) = if self.through_top {
             (root * hc, 1.0 / root)
         } else {
-            let c = (1.0 - self.u2 + d2).sqrt();
+            let c = (self.gap_top + d2).sqrt();
             (c, hc / c)
         };
         let (c_bot, r_bot) = if self.through_bottom {
             (root * hs, 1.0 / root)
         } else {
-            let c = (1.0 + self.u1 + d1).sqrt();
+            let c = (self.gap_bottom + d1).sqrt();
             (c, hs / c)
         };
         Phase {
             u,
+            one_minus: self.gap_top + d2,
+            one_plus: self.gap_bottom + d1,
             s: c_top * c_bot,
             udot_over_s_times_f: 2.0 * half * r_top * r_bot,
         }
@@ -884,8 +933,8 @@ impl Nutation {
         let local = sigma - turns * TAU;
         let odd = turns.rem_euclid(2.0) == 1.0;
         let phase = self.phase(local, odd);
-        let (f, _) = self.time.value_and_integral(local);
-        let (_, psi) = self.angle.value_and_integral(local);
+        let (f, _) = self.series.value_and_integral(0, local);
+        let (_, psi) = self.series.value_and_integral(1, local);
         let psi = psi + self.pole_angle(local);
         let psi = psi_shift + psi + (turns * self.advance).rem_euclid(TAU);
         self.reduction.omega(
@@ -893,45 +942,17 @@ impl Nutation {
             phase.s,
             psi,
             phase.udot_over_s_times_f / f,
-            self.jellett_quotient(phase.u),
+            self.jellett_quotient(&phase),
         )
-    }
-
-    /// The phase sigma in `[0, 2 pi)` with `t(sigma) = tau` for `tau` in `[0, T)`: safeguarded
-    /// Newton iteration on the monotone function t(sigma).
-    fn invert_time(&self, tau: f64) -> f64 {
-        let (mut lo, mut hi) = (0.0, TAU);
-        let mut sigma = TAU * tau / self.period;
-        for _ in 0..100 {
-            let (f, t) = self.time.value_and_integral(sigma);
-            let r = t - tau;
-            if r > 0.0 {
-                hi = sigma;
-            } else {
-                lo = sigma;
-            }
-            let next = sigma - r / f;
-            let next = if next > lo && next < hi {
-                next
-            } else {
-                0.5 * (lo + hi)
-            };
-            let converged = (next - sigma).abs() <= 4.0 * f64::EPSILON * TAU;
-            sigma = next;
-            if converged {
-                break;
-            }
-        }
-        sigma
     }
 
     /// The state at time t after the initial state.
     pub fn state_at(&self, body: &Body, t: f64) -> State {
-        let (_, t0) = self.time.value_and_integral(self.sigma0);
+        let (_, t0) = self.series.value_and_integral(0, self.sigma0);
         let total = t0 + t;
         let turns = (total / self.period).floor();
         let tau = (total - turns * self.period).clamp(0.0, self.period);
-        let sigma = self.invert_time(tau) + turns * TAU;
+        let sigma = self.series.invert_time(tau) + turns * TAU;
         let (gamma, omega) = self.gamma_omega(sigma, self.psi_ref);
         State {
             gamma,

@@ -25,11 +25,16 @@
 //! two roots of `Q`. `thetadot^2 = Phi(theta) = Q(cos theta) / sin^2 theta`.
 
 use crate::body::Body;
-use crate::error::Result;
+use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Scalar};
 use crate::state::State;
 use num_dual::{first_derivative, second_derivative, Dual64};
+
+/// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
+/// `g^2 >= A C`, `g''` stays below about `(m R^2)^2 / (A C)^(3/2)`, i.e. 1e180 (m R^2)^-1 at
+/// this ratio, far inside the range of f64.
+const MIN_MOMENT_RATIO: f64 = 1e-60;
 
 /// The values of the three integrals that fix a nutation: energy H1 (int-g), Jellett's H3
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
@@ -49,6 +54,22 @@ impl Reduction {
     /// The reduction at given values of the integrals; fails unless I1 = I2.
     pub fn new(body: &Body, h1: f64, h3: f64, k: f64) -> Result<Self> {
         body.require_symmetric("the quadrature")?;
+        // Q'' involves g'' ~ (m R^2)^2 / g^3 with g^2 >= A C: moments far below m R^2 make it
+        // overflow, and 0 * inf in its derivatives gives NaN (found by fuzzing: I3 = 7e-304,
+        // m R^2 = 10).
+        let scale = body.m * body.radius * body.radius;
+        if !(body.i1.min(body.i3) >= MIN_MOMENT_RATIO * scale) {
+            return Err(RouthError::Singular {
+                formula: "Routh's g(u) of (rho) and its derivatives",
+                reason: format!(
+                    "I1 = {:e} or I3 = {:e} is below {MIN_MOMENT_RATIO:e} m R^2 = {:e}: the \
+                     derivatives of g overflow",
+                    body.i1,
+                    body.i3,
+                    MIN_MOMENT_RATIO * scale
+                ),
+            });
+        }
         Ok(Reduction {
             body: *body,
             h1,
@@ -72,12 +93,13 @@ impl Reduction {
     /// `g(u) = sqrt(A C + A m R^2 (1 - u^2) + C m (R u + a)^2)` (the same function as
     /// [`Body::routh_g`], written in u so that it can be differentiated at the poles).
     pub fn routh_g<D: Scalar>(&self, u: D) -> D {
+        self.routh_g_with_sine(lift::<D>(1.0) - u * u, u * self.body.radius + self.body.a)
+    }
+
+    /// `g` from `s2 = sin^2 theta` and `h = R u + a`.
+    fn routh_g_with_sine<D: Scalar>(&self, s2: D, h: D) -> D {
         let b = &self.body;
-        let h = u * b.radius + b.a;
-        ((lift::<D>(1.0) - u * u) * (b.i1 * b.m * b.radius * b.radius)
-            + h * h * (b.i3 * b.m)
-            + b.i1 * b.i3)
-            .sqrt()
+        (s2 * (b.i1 * b.m * b.radius * b.radius) + h * h * (b.i3 * b.m) + b.i1 * b.i3).sqrt()
     }
 
     /// The spin `omega3 = K / g(u)` of (raus-int).
@@ -111,13 +133,26 @@ impl Reduction {
 
     /// The terms of `Q(u)` at given values `[H1, H3, K]` of the integrals.
     fn q_terms_at<D: Scalar>(&self, u: D, integrals: [D; 3]) -> [D; 4] {
+        self.q_terms_with_sine(u, lift::<D>(1.0) - u * u, integrals)
+    }
+
+    /// `Q` at `u = pole (1 - gap)` with `sin^2 theta = gap (2 - gap)` computed from the gap,
+    /// not from u: near a pole u rounds `1 - |u|` to a relative error `eps / gap`.
+    pub fn q_near_pole(&self, pole: f64, gap: f64) -> f64 {
+        let u = pole * (1.0 - gap);
+        self.q_terms_with_sine(u, gap * (2.0 - gap), [self.h1, self.h3, self.k])
+            .iter()
+            .sum()
+    }
+
+    /// The terms of `Q` at `u` with `s2 = 1 - u^2` given.
+    fn q_terms_with_sine<D: Scalar>(&self, u: D, s2: D, integrals: [D; 3]) -> [D; 4] {
         let b = &self.body;
         let [h1, h3, k] = integrals;
         let (ai, r) = (b.i1, b.radius);
-        let s2 = lift::<D>(1.0) - u * u;
         let h = u * r + b.a;
-        let w3 = k / self.routh_g(u);
-        let n = self.remainder_at(u, h3, k);
+        let w3 = k / self.routh_g_with_sine(s2, h);
+        let n = h3 - w3 * h * b.i3;
         let inertia = (s2 * (r * r) + h * h) * b.m + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
@@ -177,6 +212,53 @@ impl Reduction {
     pub fn q_slope_scale(&self, u: f64) -> f64 {
         (0..4)
             .map(|i| first_derivative(|v| self.q_terms(v)[i], u).1.abs())
+            .sum()
+    }
+
+    /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
+    /// `g(u)^2 = (C - A) m R^2 u^2 + 2 C m R a u + A C + A m R^2 + C m a^2` (branch points of
+    /// g) and of the inertia `A + m |r|^2 = A + m (R^2 + a^2) + 2 m R a u` (a pole). Gauss-
+    /// Legendre rules over u bisect toward them ([`crate::quadrature::gauss`]).
+    pub fn singularities(&self) -> Vec<(f64, f64)> {
+        let b = &self.body;
+        let (ai, c, m, r, a) = (b.i1, b.i3, b.m, b.radius, b.a);
+        let mut points = vec![];
+        if a != 0.0 {
+            points.push((-(ai + m * (r * r + a * a)) / (2.0 * m * r * a), 0.0));
+        }
+        let (q2, q1, q0) = (
+            (c - ai) * m * r * r,
+            2.0 * c * m * r * a,
+            ai * c + ai * m * r * r + c * m * a * a,
+        );
+        if q2 == 0.0 {
+            if q1 != 0.0 {
+                points.push((-q0 / q1, 0.0));
+            }
+        } else {
+            let disc = q1 * q1 - 4.0 * q2 * q0;
+            if disc >= 0.0 {
+                // Without cancellation: the root of larger magnitude first, the other from
+                // the product of the roots q0 / q2.
+                let big = -0.5 * (q1 + q1.signum() * disc.sqrt());
+                points.push((big / q2, 0.0));
+                if big != 0.0 {
+                    points.push((q0 / big, 0.0));
+                }
+            } else {
+                let im = (-disc).sqrt() / (2.0 * q2).abs();
+                points.push((-q1 / (2.0 * q2), im));
+            }
+        }
+        points.retain(|z| z.0.is_finite() && z.1.is_finite());
+        points
+    }
+
+    /// The round-off scale of `Q''` at `u`: the sum of the magnitudes of the second
+    /// derivatives of the terms of `Q`.
+    pub fn q_curvature_scale(&self, u: f64) -> f64 {
+        (0..4)
+            .map(|i| second_derivative(|v| self.q_terms(v)[i], u).2.abs())
             .sum()
     }
 

@@ -353,20 +353,6 @@ impl Sweep {
         }
     }
 
-    /// The rows of `attempt`, or, if it panicked, `fallback` of the panic's message.
-    fn settle<T>(attempt: std::thread::Result<T>, fallback: impl FnOnce(String) -> T) -> T {
-        attempt.unwrap_or_else(|panic| {
-            fallback(format!(
-                "internal error (panic): {}",
-                panic
-                    .downcast_ref::<String>()
-                    .cloned()
-                    .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-                    .unwrap_or_default()
-            ))
-        })
-    }
-
     /// Run number `k`: the integration of `routh simulate` on the run's case (the same
     /// numbers, bit for bit), the turning points along it, and the quadrature when the body
     /// is a Routh sphere. A failure (or a panic) becomes a row with status `failed`.
@@ -385,13 +371,30 @@ impl Sweep {
             )?;
             match observed.failure {
                 Some(e) => Err(e.into()),
-                None => Ok(self.finished(k, &body, &case, observed.summary, turning.summary())),
+                None => Ok::<_, RouthError>(self.finished(
+                    k,
+                    &body,
+                    &case,
+                    observed.summary,
+                    turning.summary(),
+                )),
             }
         }));
-        Self::settle(
-            attempt.map(|row| row.unwrap_or_else(|e: RouthError| self.failed(k, e.to_string()))),
-            |message| self.failed(k, message),
-        )
+        match attempt {
+            Ok(Ok(row)) => row,
+            Ok(Err(e)) => self.failed(k, e.to_string()),
+            Err(panic) => self.failed(
+                k,
+                format!(
+                    "internal error (panic): {}",
+                    panic
+                        .downcast_ref::<String>()
+                        .cloned()
+                        .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                        .unwrap_or_default()
+                ),
+            ),
+        }
     }
 
     /// Whether the runs go through the batched integrator ([`crate::batch`]): asked for

@@ -293,6 +293,16 @@ enum Instr {
     MulC(u32, f64),
     DivC(u32, f64),
     CDiv(f64, u32),
+    /// `a b + c d` (products used only here).
+    DotAdd(u32, u32, u32, u32),
+    /// `a b - c d`.
+    DotSub(u32, u32, u32, u32),
+    /// `a b + c`.
+    MulPlus(u32, u32, u32),
+    /// `a b - c`.
+    MulMinus(u32, u32, u32),
+    /// `c - a b`.
+    MinusMul(u32, u32, u32),
 }
 
 /// A field `y' = f(t, y)` of dimension `N` as a compiled expression tape, with the storage of
@@ -317,6 +327,9 @@ pub struct Tape<const N: usize> {
     max_order: usize,
     /// `max_order + 1 + PAD`.
     stride: usize,
+    /// The CPU has AVX2 and FMA: the orders `k >= 1` run in a copy of the code compiled for
+    /// them, with fused multiply-adds in the dot products.
+    fused: bool,
 }
 
 /// Zeros after each reversed run (see [`Tape`]).
@@ -362,6 +375,45 @@ impl<const N: usize> Tape<N> {
                 _ => {}
             }
         }
+        // Fusion: a product used only by one sum or difference is computed inside it.
+        let mut uses = vec![0usize; nodes.len()];
+        for (i, node) in nodes.iter().enumerate() {
+            if live[i] {
+                operands(node).for_each(|o| uses[o as usize] += 1);
+            }
+        }
+        outputs.iter().for_each(|&o| uses[o as usize] += 2);
+        let product = |x: u32| match nodes[x as usize] {
+            Node::Mul(a, b) if uses[x as usize] == 1 => Some((a, b)),
+            _ => None,
+        };
+        let mut fused = vec![None; nodes.len()];
+        for (i, node) in nodes.iter().enumerate() {
+            if !live[i] {
+                continue;
+            }
+            let (x, y, minus) = match *node {
+                Node::Add(x, y) => (x, y, false),
+                Node::Sub(x, y) => (x, y, true),
+                _ => continue,
+            };
+            let instr = match (product(x), product(y), minus) {
+                (Some((a, b)), Some((c, d)), false) => Fused::DotAdd(a, b, c, d),
+                (Some((a, b)), Some((c, d)), true) => Fused::DotSub(a, b, c, d),
+                (Some((a, b)), None, false) => Fused::MulPlus(a, b, y),
+                (None, Some((a, b)), false) => Fused::MulPlus(a, b, x),
+                (Some((a, b)), None, true) => Fused::MulMinus(a, b, y),
+                (None, Some((a, b)), true) => Fused::MinusMul(x, a, b),
+                (None, None, _) => continue,
+            };
+            for z in [x, y] {
+                if product(z).is_some() {
+                    live[z as usize] = false;
+                }
+            }
+            fused[i] = Some(instr);
+        }
+        ops.retain(|&i| live[i]);
         let first_op = N + 1 + constants.len();
         for (j, &(i, _)) in constants.iter().enumerate() {
             slot[i] = N + 1 + j;
@@ -373,20 +425,29 @@ impl<const N: usize> Tape<N> {
         let s = |a: u32| (slot[a as usize] * stride) as u32;
         let code = ops
             .iter()
-            .map(|&i| match nodes[i] {
-                Node::Add(a, b) => Instr::Add(s(a), s(b)),
-                Node::Sub(a, b) => Instr::Sub(s(a), s(b)),
-                Node::Mul(a, b) => Instr::Mul(s(a), s(b)),
-                Node::Div(a, b) => Instr::Div(s(a), s(b)),
-                Node::Neg(a) => Instr::Neg(s(a)),
-                Node::Sqrt(a) => Instr::Sqrt(s(a)),
-                Node::MulAdd(a, b, c) => Instr::MulAdd(s(a), s(b), s(c)),
-                Node::AddC(a, c) => Instr::AddC(s(a), f64::from_bits(c)),
-                Node::CSub(c, a) => Instr::CSub(f64::from_bits(c), s(a)),
-                Node::MulC(a, c) => Instr::MulC(s(a), f64::from_bits(c)),
-                Node::DivC(a, c) => Instr::DivC(s(a), f64::from_bits(c)),
-                Node::CDiv(c, a) => Instr::CDiv(f64::from_bits(c), s(a)),
-                Node::Input(_) | Node::Time | Node::Const(_) => unreachable!("not an operation"),
+            .map(|&i| match (fused[i], nodes[i]) {
+                (Some(Fused::DotAdd(a, b, c, d)), _) => Instr::DotAdd(s(a), s(b), s(c), s(d)),
+                (Some(Fused::DotSub(a, b, c, d)), _) => Instr::DotSub(s(a), s(b), s(c), s(d)),
+                (Some(Fused::MulPlus(a, b, c)), _) => Instr::MulPlus(s(a), s(b), s(c)),
+                (Some(Fused::MulMinus(a, b, c)), _) => Instr::MulMinus(s(a), s(b), s(c)),
+                (Some(Fused::MinusMul(c, a, b)), _) => Instr::MinusMul(s(c), s(a), s(b)),
+                (None, node) => match node {
+                    Node::Add(a, b) => Instr::Add(s(a), s(b)),
+                    Node::Sub(a, b) => Instr::Sub(s(a), s(b)),
+                    Node::Mul(a, b) => Instr::Mul(s(a), s(b)),
+                    Node::Div(a, b) => Instr::Div(s(a), s(b)),
+                    Node::Neg(a) => Instr::Neg(s(a)),
+                    Node::Sqrt(a) => Instr::Sqrt(s(a)),
+                    Node::MulAdd(a, b, c) => Instr::MulAdd(s(a), s(b), s(c)),
+                    Node::AddC(a, c) => Instr::AddC(s(a), f64::from_bits(c)),
+                    Node::CSub(c, a) => Instr::CSub(f64::from_bits(c), s(a)),
+                    Node::MulC(a, c) => Instr::MulC(s(a), f64::from_bits(c)),
+                    Node::DivC(a, c) => Instr::DivC(s(a), f64::from_bits(c)),
+                    Node::CDiv(c, a) => Instr::CDiv(f64::from_bits(c), s(a)),
+                    Node::Input(_) | Node::Time | Node::Const(_) => {
+                        unreachable!("not an operation")
+                    }
+                },
             })
             .collect::<Vec<_>>();
         let mut tape = Tape {
@@ -398,6 +459,7 @@ impl<const N: usize> Tape<N> {
             outputs: outputs.map(|o| slot[o as usize]),
             max_order,
             stride,
+            fused: avx2_fma(),
         };
         for (j, &(_, c)) in constants.iter().enumerate() {
             tape.set(N + 1 + j, 0, c);
@@ -415,8 +477,8 @@ impl<const N: usize> Tape<N> {
         self.code.is_empty()
     }
 
-    /// Number of products, quotients and square roots (the operations of cost `O(k)` at order
-    /// `k`).
+    /// Number of instructions with a product, quotient or square root (the operations of cost
+    /// `O(k)` at order `k`).
     pub fn nonlinear_len(&self) -> usize {
         self.code
             .iter()
@@ -428,6 +490,11 @@ impl<const N: usize> Tape<N> {
                         | Instr::Sqrt(..)
                         | Instr::MulAdd(..)
                         | Instr::CDiv(..)
+                        | Instr::DotAdd(..)
+                        | Instr::DotSub(..)
+                        | Instr::MulPlus(..)
+                        | Instr::MulMinus(..)
+                        | Instr::MinusMul(..)
                 )
             })
             .count()
@@ -450,6 +517,26 @@ impl<const N: usize> Tape<N> {
     /// [`Tape::state_coefficient`]`(i, k)` holds `y_i^[k]` for `k <= p` (`p <= max_order`).
     /// From `y^[k+1] = f^[k] / (k + 1)`: one pass of the tape per order.
     pub fn expand(&mut self, t: f64, y: &[f64; N], p: usize) {
+        #[cfg(target_arch = "x86_64")]
+        if self.fused {
+            // SAFETY: `fused` is true only if the CPU has AVX2 and FMA (`avx2_fma`), the
+            // features `expand_avx2_fma` is compiled for.
+            unsafe { self.expand_avx2_fma(t, y, p) };
+            return;
+        }
+        self.expand_with::<false>(t, y, p);
+    }
+
+    /// [`Tape::expand`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn expand_avx2_fma(&mut self, t: f64, y: &[f64; N], p: usize) {
+        self.expand_with::<true>(t, y, p);
+    }
+
+    /// [`Tape::expand`], with fused multiply-adds in the dot products if `FMA`.
+    #[inline(always)]
+    fn expand_with<const FMA: bool>(&mut self, t: f64, y: &[f64; N], p: usize) {
         assert!(
             p <= self.max_order,
             "order {p} above the tape's {}",
@@ -461,15 +548,15 @@ impl<const N: usize> Tape<N> {
             match (k + 1).div_ceil(4) * 4 {
                 0 => self.order_zero(),
                 _ if k == 0 => self.order_zero(),
-                4 => self.order::<4>(k),
-                8 => self.order::<8>(k),
-                12 => self.order::<12>(k),
-                16 => self.order::<16>(k),
-                20 => self.order::<20>(k),
-                24 => self.order::<24>(k),
-                28 => self.order::<28>(k),
-                32 => self.order::<32>(k),
-                _ => self.order::<0>(k),
+                4 => self.order::<4, FMA>(k),
+                8 => self.order::<8, FMA>(k),
+                12 => self.order::<12, FMA>(k),
+                16 => self.order::<16, FMA>(k),
+                20 => self.order::<20, FMA>(k),
+                24 => self.order::<24, FMA>(k),
+                28 => self.order::<28, FMA>(k),
+                32 => self.order::<32, FMA>(k),
+                _ => self.order::<0, FMA>(k),
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..N {
@@ -509,6 +596,7 @@ impl<const N: usize> Tape<N> {
         self.rev[slot * self.stride + self.max_order - k] = value;
     }
 
+    #[inline(always)]
     fn seed(&mut self, t: f64, y: &[f64; N]) {
         for (i, &v) in y.iter().enumerate() {
             self.set(i, 0, v);
@@ -520,10 +608,13 @@ impl<const N: usize> Tape<N> {
     }
 
     /// Order 0 of every operation: the `f64` operations of the field themselves.
+    #[inline(always)]
     fn order_zero(&mut self) {
-        for j in 0..self.code.len() {
-            let c = &self.coef;
-            let value = match self.code[j] {
+        // Slices held in locals: the stores below cannot make the compiler reload them.
+        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
+        let (stride, top) = (self.stride, self.max_order);
+        for (j, instr) in code.iter().enumerate() {
+            let value = match *instr {
                 Instr::Add(a, b) => c[a as usize] + c[b as usize],
                 Instr::Sub(a, b) => c[a as usize] - c[b as usize],
                 Instr::Mul(a, b) => c[a as usize] * c[b as usize],
@@ -536,25 +627,38 @@ impl<const N: usize> Tape<N> {
                 Instr::MulC(a, k) => c[a as usize] * k,
                 Instr::DivC(a, k) => c[a as usize] / k,
                 Instr::CDiv(k, a) => k / c[a as usize],
+                Instr::DotAdd(a, b, d, e) => {
+                    c[a as usize] * c[b as usize] + c[d as usize] * c[e as usize]
+                }
+                Instr::DotSub(a, b, d, e) => {
+                    c[a as usize] * c[b as usize] - c[d as usize] * c[e as usize]
+                }
+                Instr::MulPlus(a, b, d) => c[a as usize] * c[b as usize] + c[d as usize],
+                Instr::MulMinus(a, b, d) => c[a as usize] * c[b as usize] - c[d as usize],
+                Instr::MinusMul(d, a, b) => c[d as usize] - c[a as usize] * c[b as usize],
             };
-            self.set(self.first_op + j, 0, value);
+            let dest = (self.first_op + j) * stride;
+            c[dest] = value;
+            r[dest + top] = value;
         }
     }
 
     /// Order `k >= 1` of every operation, from the orders below `k` and order `k` of the
     /// inputs. The dot products run over `L` terms (`k + 1 <= L <= k + 4`; `L = 0`: over
     /// `k + 1` rounded up to a multiple of 4, not unrolled).
-    fn order<const L: usize>(&mut self, k: usize) {
+    #[inline(always)]
+    fn order<const L: usize, const FMA: bool>(&mut self, k: usize) {
         let stride = self.stride;
         let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
         // Start of the reversed run of orders k, k-1, ..., 0 within a slot.
         let back = self.max_order - k;
-        for j in 0..self.code.len() {
-            let (c, r) = (&self.coef, &self.rev);
-            let dest = (self.first_op + j) * stride;
+        // Slices held in locals: the stores below cannot make the compiler reload them.
+        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
+        let mut dest = self.first_op * stride;
+        for instr in code {
             let fwd = |a: usize| &c[a..a + len];
             let rwd = |a: usize| &r[a + back..a + back + len];
-            let value = match self.code[j] {
+            let value = match *instr {
                 Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
                 Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
                 Instr::Neg(a) | Instr::CSub(_, a) => -c[a as usize + k],
@@ -562,37 +666,52 @@ impl<const N: usize> Tape<N> {
                 Instr::MulC(a, m) => c[a as usize + k] * m,
                 Instr::DivC(a, m) => c[a as usize + k] / m,
                 // sum_{j=0..k} a^[j] b^[k-j]
-                Instr::Mul(a, b) => dot::<L>(fwd(a as usize), rwd(b as usize)),
-                Instr::MulAdd(a, b, d) => {
-                    dot::<L>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
+                Instr::Mul(a, b) => dot::<L, FMA>(fwd(a as usize), rwd(b as usize)),
+                Instr::MulAdd(a, b, d) | Instr::MulPlus(a, b, d) => {
+                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
+                }
+                Instr::MulMinus(a, b, d) => {
+                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize)) - c[d as usize + k]
+                }
+                Instr::MinusMul(d, a, b) => {
+                    c[d as usize + k] - dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
+                }
+                Instr::DotAdd(a, b, d, e) => {
+                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
+                        + dot::<L, FMA>(fwd(d as usize), rwd(e as usize))
+                }
+                Instr::DotSub(a, b, d, e) => {
+                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
+                        - dot::<L, FMA>(fwd(d as usize), rwd(e as usize))
                 }
                 // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
                 Instr::Div(a, b) => {
                     let b = b as usize;
-                    (c[a as usize + k] - dot::<L>(fwd(b + 1), rwd(dest + 1))) / c[b]
+                    (c[a as usize + k] - dot::<L, FMA>(fwd(b + 1), rwd(dest + 1))) / c[b]
                 }
                 Instr::CDiv(_, b) => {
                     let b = b as usize;
-                    -dot::<L>(fwd(b + 1), rwd(dest + 1)) / c[b]
+                    -dot::<L, FMA>(fwd(b + 1), rwd(dest + 1)) / c[b]
                 }
                 // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
                 // padded terms would meet w^[k] of the previous expansion).
                 Instr::Sqrt(a) => {
                     let w = &c[dest + 1..dest + k];
                     let w_rev = &r[dest + back + 1..dest + back + k];
-                    (c[a as usize + k] - dot::<0>(w, w_rev)) / (2.0 * c[dest])
+                    (c[a as usize + k] - dot::<0, FMA>(w, w_rev)) / (2.0 * c[dest])
                 }
             };
-            self.coef[dest + k] = value;
-            self.rev[dest + back] = value;
+            c[dest + k] = value;
+            r[dest + back] = value;
+            dest += stride;
         }
     }
 }
 
 /// `sum_j a[j] b[j]` over `L` terms (unrolled), or over the length of `a` for `L = 0`, in four
-/// partial sums so that the additions do not wait on each other.
+/// partial sums so that the additions do not wait on each other; fused multiply-adds if `FMA`.
 #[inline(always)]
-fn dot<const L: usize>(a: &[f64], b: &[f64]) -> f64 {
+fn dot<const L: usize, const FMA: bool>(a: &[f64], b: &[f64]) -> f64 {
     let n = if L == 0 { a.len() } else { L };
     let (a, b) = (&a[..n], &b[..n]);
     let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
@@ -602,10 +721,36 @@ fn dot<const L: usize>(a: &[f64], b: &[f64]) -> f64 {
     }
     for (x, y) in a4.zip(b4) {
         for l in 0..4 {
-            s[l] += x[l] * y[l];
+            s[l] = if FMA {
+                x[l].mul_add(y[l], s[l])
+            } else {
+                s[l] + x[l] * y[l]
+            };
         }
     }
     (s[0] + s[1]) + (s[2] + s[3])
+}
+
+/// Whether the CPU has AVX2 and FMA.
+fn avx2_fma() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// A sum or difference with the products it absorbs (see [`Tape::compile`]); node indices.
+#[derive(Debug, Clone, Copy)]
+enum Fused {
+    DotAdd(u32, u32, u32, u32),
+    DotSub(u32, u32, u32, u32),
+    MulPlus(u32, u32, u32),
+    MulMinus(u32, u32, u32),
+    MinusMul(u32, u32, u32),
 }
 
 /// The operand nodes of a node.
