@@ -437,7 +437,10 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
     let stats = stepper.stats();
     Ok(Observed {
         summary: Summary {
-            method: settings.method.resolve(settings.rtol.min(settings.atol)).to_string(),
+            method: settings
+                .method
+                .resolve(settings.rtol.min(settings.atol))
+                .to_string(),
             t_end: t1,
             steps: stats.steps,
             rejected: stats.rejected,

@@ -371,7 +371,7 @@ impl Flow {
         )
     }
 
-    /// The relative difference at theta between [`Flow::phi_and_b`]'s Phi and Phi written
+    /// The relative difference at theta between `Flow::phi_and_b`'s Phi and Phi written
     /// with A, C, V of (int-sph2) as printed in the corrected form,
     /// `E - A p_phi^2 - b C p_phi - b^2 V - 2U`, relative to the largest of these terms.
     pub fn phi_defect(&self, theta: f64) -> f64 {
