@@ -14,8 +14,8 @@ import numpy.typing as npt
 
 __all__ = [
     "__version__", "MAX_VALUES", "Ball", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
-    "audit", "default_case", "load_case", "routh_threshold", "simulate", "steady_precessions",
-    "sweep", "vertical_spin",
+    "audit", "default_case", "diagram", "load_case", "routh_threshold", "simulate", "steady_precessions",
+    "sleeping_tops", "sweep", "vertical_spin",
 ]
 __version__: str
 MAX_VALUES: int
@@ -292,6 +292,24 @@ def sweep(
     case text (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
     `routh simulate` on its case, whatever the thread count or the slicing. The interpreter
     lock is released while the runs are computed."""
+    ...
+def diagram(
+    body: Body,
+    h3: float,
+    *,
+    tilts: Optional[int] = None,
+    grid: Optional[int] = None,
+    loop_points: Optional[int] = None,
+) -> _Record:
+    """The energy-momentum diagram of `body` (I1 = I2) in the plane (K, H1) at Jellett's
+    `h3`, with the keys of `routh diagram --json`: `H3`, `window`, `vertical_spins`,
+    `critical_curves` (each with `stability` and `points`), `focus_focus` (each with `H1`,
+    `H3`, `K`, `state`), `monodromy` (`loop`, `matrix`: 2 x 2 integers; None without a
+    focus-focus point), `tori`. The interpreter lock is released while it is computed."""
+    ...
+def sleeping_tops(body: Body, h3_max: float, samples: int = 200) -> list[_Record]:
+    """The vertical spins of `body` for |H3| <= `h3_max` (`samples` per pole, 2 to 5000),
+    one record per pole (`pole`, `spins` with their stability type, `threshold_h3`)."""
     ...
 def default_case() -> Tuple[Body, _FloatArray, float, float, float]: ...
 def load_case(

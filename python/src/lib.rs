@@ -15,6 +15,7 @@ mod ball;
 mod body;
 mod convert;
 mod dense;
+mod diagram;
 mod drive;
 mod exact;
 mod flows;
@@ -46,5 +47,7 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(steady::routh_threshold, module)?)?;
     module.add_function(wrap_pyfunction!(audit::audit, module)?)?;
     module.add_function(wrap_pyfunction!(sweep::sweep, module)?)?;
+    module.add_function(wrap_pyfunction!(diagram::diagram, module)?)?;
+    module.add_function(wrap_pyfunction!(diagram::sleeping_tops, module)?)?;
     Ok(())
 }

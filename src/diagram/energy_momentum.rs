@@ -204,7 +204,17 @@ pub struct SleepingTop {
 }
 
 /// The two lines of sleeping tops in the plane (H3, K) (see [`SleepingTop`]).
+/// `h3_max` must be finite and positive, `samples` (per line) between 2 and
+/// [`MAX_RESOLUTION`].
 pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<SleepingTop>> {
+    check_resolution("samples", samples, 2)?;
+    if !(h3_max.is_finite() && h3_max > 0.0) {
+        return Err(RouthError::Option {
+            name: "h3_max",
+            value: h3_max.to_string(),
+            rule: "must be finite and positive",
+        });
+    }
     [1.0, -1.0]
         .into_iter()
         .map(|pole| {

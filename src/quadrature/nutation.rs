@@ -24,7 +24,7 @@ use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
 use num_dual::first_derivative;
-use std::cell::Cell;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::f64::consts::{PI, TAU};
 
 /// Most samples spent on the panels of one nutation; a level set that needs more lies within
@@ -68,6 +68,33 @@ const SEPARATRIX_MARGIN: f64 = 16.0;
 /// quadrature (docs/quadrature.md, section 5).
 const INTEGRAL_EPSILONS: f64 = 2.0;
 
+/// A count of Gauss-Legendre pieces that methods taking `&self` increase: atomic, so that a
+/// [`Nutation`] stays `Sync` (shared between threads, as Python's `ExactSolution` is).
+#[derive(Debug, Default)]
+struct Work(AtomicUsize);
+
+impl Work {
+    fn add(&self, pieces: usize) {
+        self.0.fetch_add(pieces, Ordering::Relaxed);
+    }
+
+    fn get(&self) -> usize {
+        self.0.load(Ordering::Relaxed)
+    }
+}
+
+impl Clone for Work {
+    fn clone(&self) -> Self {
+        Work(AtomicUsize::new(self.get()))
+    }
+}
+
+impl PartialEq for Work {
+    fn eq(&self, other: &Self) -> bool {
+        self.get() == other.get()
+    }
+}
+
 /// A nutation: the tilt oscillates between `u1` and `u2`, the whole state is periodic up to
 /// a rotation about e3 by `advance` per period.
 #[derive(Debug, Clone, PartialEq)]
@@ -103,7 +130,7 @@ pub struct Nutation {
     /// Where Q is not analytic ([`Reduction::singularities`]).
     singularities: Vec<(f64, f64)>,
     /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
-    work: Cell<usize>,
+    work: Work,
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
@@ -647,7 +674,7 @@ impl Nutation {
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             narrow_rule: GaussLegendre::new(NARROW_NODES),
             singularities: red.singularities(),
-            work: Cell::new(0),
+            work: Work::default(),
             sigma0: 0.0,
             psi_ref: 0.0,
             poles: vec![],
@@ -762,7 +789,7 @@ impl Nutation {
                 let (mean, pieces) = self
                     .rule
                     .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1);
-                self.work.set(self.work.get() + pieces);
+                self.work.add(pieces);
                 mean
             };
             let p = (difference(u1, u) - difference(u, u2)) / width;
@@ -858,7 +885,7 @@ impl Nutation {
         let (slope, pieces) = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
             first_derivative(|w| red.jellett_remainder(w), v).1
         });
-        self.work.set(self.work.get() + pieces);
+        self.work.add(pieces);
         -slope / (u + pole)
     }
 
