@@ -12,7 +12,7 @@ use std::cell::Cell;
 
 use super::{Field, Lanes};
 use crate::integrate::compensated::compensated_add;
-use crate::integrate::tableau::{A, B, BHH, D, ER};
+use crate::integrate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
 use crate::integrate::{hinit, IntegrateError, OdeSystem, Options, Stats, Stepper};
 use crate::scalar::Scalar;
 
@@ -539,23 +539,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneStep<'_, F, N, L> {
             [0, 5, 6, 7, 8, 12, 13, 14],
         ));
         self.dense_evals.set(self.dense_evals.get() + 3);
-        let mut cont = [[0.0; N]; 8];
-        for i in 0..N {
-            let ydiff = self.y[i] - y[i];
-            let bspl = h * k[0][i] - ydiff;
-            cont[0][i] = y[i];
-            cont[1][i] = ydiff;
-            cont[2][i] = bspl;
-            cont[3][i] = ydiff - h * k[12][i] - bspl;
-            for (row, d) in D.iter().enumerate() {
-                let mut acc = d[0] * k[0][i];
-                for j in 5..16 {
-                    acc += d[j] * k[j][i];
-                }
-                cont[4 + row][i] = h * acc;
-            }
-        }
-        cont
+        dense_rows(y, &self.y, h, &k)
     }
 }
 
@@ -597,12 +581,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
                 c
             }
         };
-        let s = (t - self.t_prev) / self.h;
-        let s1 = 1.0 - s;
-        std::array::from_fn(|i| {
-            let conpar = cont[4][i] + s * (cont[5][i] + s1 * (cont[6][i] + s * cont[7][i]));
-            cont[0][i] + s * (cont[1][i] + s1 * (cont[2][i] + s * (cont[3][i] + s1 * conpar)))
-        })
+        dense_at(&cont, (t - self.t_prev) / self.h)
     }
 
     /// Replaces the state this view shows (the lane itself is not changed: a batch does not

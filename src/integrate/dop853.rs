@@ -4,7 +4,7 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::tableau::{A, B, BHH, C, D, ER};
+use super::tableau::{dense_at, dense_rows, A, B, BHH, C, ER};
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit used in the step-size-too-small test (Hairer's `UROUND`).
@@ -381,23 +381,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
         let mut stats = self.stats.get();
         stats.rhs_evals += 3;
         self.stats.set(stats);
-        let mut cont = [[0.0; N]; 8];
-        for i in 0..N {
-            let ydiff = self.y_raw[i] - y[i];
-            let bspl = h * k[0][i] - ydiff;
-            cont[0][i] = y[i];
-            cont[1][i] = ydiff;
-            cont[2][i] = bspl;
-            cont[3][i] = ydiff - h * k[12][i] - bspl;
-            for (row, d) in D.iter().enumerate() {
-                let mut acc = d[0] * k[0][i];
-                for j in 5..16 {
-                    acc += d[j] * k[j][i];
-                }
-                cont[4 + row][i] = h * acc;
-            }
-        }
-        cont
+        dense_rows(y, &self.y_raw, h, &k)
     }
 }
 
@@ -451,15 +435,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
                 c
             }
         };
-        let s = (t - self.t_prev) / self.h_last;
-        let s1 = 1.0 - s;
-        let mut out = [0.0; N];
-        for i in 0..N {
-            let conpar = cont[4][i] + s * (cont[5][i] + s1 * (cont[6][i] + s * cont[7][i]));
-            out[i] =
-                cont[0][i] + s * (cont[1][i] + s1 * (cont[2][i] + s * (cont[3][i] + s1 * conpar)));
-        }
-        out
+        dense_at(&cont, (t - self.t_prev) / self.h_last)
     }
 
     /// Replaces the current state after a step (e.g. a projection onto

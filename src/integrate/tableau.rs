@@ -426,6 +426,45 @@ pub const D: [[f64; 16]; 4] = [
     ],
 ];
 
+/// The eight rows `cont` of the 7th-order continuous extension of a step of size `h` from `y`
+/// to `y_new`, from its sixteen stages `k` (Hairer's `CONT`, `dop853.f`): shared by
+/// [`super::Dop853`] and the batched lanes of [`crate::batch`], which must evaluate it
+/// bitwise alike.
+pub fn dense_rows<const N: usize>(
+    y: &[f64; N],
+    y_new: &[f64; N],
+    h: f64,
+    k: &[[f64; N]; 16],
+) -> [[f64; N]; 8] {
+    let mut cont = [[0.0; N]; 8];
+    for i in 0..N {
+        let ydiff = y_new[i] - y[i];
+        let bspl = h * k[0][i] - ydiff;
+        cont[0][i] = y[i];
+        cont[1][i] = ydiff;
+        cont[2][i] = bspl;
+        cont[3][i] = ydiff - h * k[12][i] - bspl;
+        for (row, d) in D.iter().enumerate() {
+            let mut acc = d[0] * k[0][i];
+            for j in 5..16 {
+                acc += d[j] * k[j][i];
+            }
+            cont[4 + row][i] = h * acc;
+        }
+    }
+    cont
+}
+
+/// The continuous extension with rows `cont` ([`dense_rows`]) at the fraction `s` of its step
+/// (Hairer's `CONTD8`).
+pub fn dense_at<const N: usize>(cont: &[[f64; N]; 8], s: f64) -> [f64; N] {
+    let s1 = 1.0 - s;
+    std::array::from_fn(|i| {
+        let conpar = cont[4][i] + s * (cont[5][i] + s1 * (cont[6][i] + s * cont[7][i]));
+        cont[0][i] + s * (cont[1][i] + s1 * (cont[2][i] + s * (cont[3][i] + s1 * conpar)))
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

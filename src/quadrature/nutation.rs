@@ -24,8 +24,8 @@ use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
 use num_dual::first_derivative;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::f64::consts::{PI, TAU};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Most samples spent on the panels of one nutation; a level set that needs more lies within
 /// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
