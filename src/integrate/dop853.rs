@@ -9,6 +9,35 @@ use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit used in the step-size-too-small test (Hairer's `UROUND`).
 const UROUND: f64 = 2.3e-16;
+
+/// The checks before an attempted step of the adaptive Runge–Kutta loops (DOP853, Vern9), as
+/// in Hairer's `dop853.f`: a non-finite `h`, the step budget `max_steps` (accepted and
+/// rejected), a step below the round-off of `t`; then `h` shortened to land on `t_end` when
+/// the step would pass or nearly reach it. Returns the step to attempt and whether it is the
+/// last.
+pub(crate) fn next_attempt(
+    t: f64,
+    h: f64,
+    t_end: f64,
+    posneg: f64,
+    stats: &Stats,
+    max_steps: usize,
+) -> Result<(f64, bool), IntegrateError> {
+    if !h.is_finite() {
+        return Err(IntegrateError::NonFinite { t });
+    }
+    if stats.steps + stats.rejected >= max_steps {
+        return Err(IntegrateError::TooManySteps { t, max_steps });
+    }
+    if 0.1 * h.abs() <= t.abs() * UROUND {
+        return Err(IntegrateError::StepSizeTooSmall { t, h });
+    }
+    if (t + 1.01 * h - t_end) * posneg > 0.0 {
+        Ok((t_end - t, true))
+    } else {
+        Ok((h, false))
+    }
+}
 /// Safety factor of the step-size prediction.
 const SAFE: f64 = 0.9;
 /// Lower bound `FAC1` of `h_new / h`.
@@ -270,23 +299,9 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
         let (facc1, facc2) = (1.0 / FAC1, 1.0 / FAC2);
         let mut h = self.h;
         loop {
-            if !h.is_finite() {
-                return Err(IntegrateError::NonFinite { t: self.t });
-            }
-            if stats.steps + stats.rejected >= self.max_steps {
-                return Err(IntegrateError::TooManySteps {
-                    t: self.t,
-                    max_steps: self.max_steps,
-                });
-            }
-            if 0.1 * h.abs() <= self.t.abs() * UROUND {
-                return Err(IntegrateError::StepSizeTooSmall { t: self.t, h });
-            }
-            let mut last = false;
-            if (self.t + 1.01 * h - self.t_end) * self.posneg > 0.0 {
-                h = self.t_end - self.t;
-                last = true;
-            }
+            let (h_try, last) =
+                next_attempt(self.t, h, self.t_end, self.posneg, stats, self.max_steps)?;
+            h = h_try;
             self.k[0] = self.f;
             let inc = stages(self.sys, self.t, h, &self.y, &mut self.k);
             stats.rhs_evals += 11;

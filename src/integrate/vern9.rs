@@ -14,12 +14,10 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::dop853::hinit;
+use super::dop853::{hinit, next_attempt};
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
-/// Rounding unit used in the step-size-too-small test.
-const UROUND: f64 = 2.3e-16;
 /// Safety factor of the step-size prediction.
 const SAFE: f64 = 0.9;
 /// Bounds of `h_new / h`.
@@ -208,23 +206,9 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
     fn attempt_until_accepted(&mut self, stats: &mut Stats) -> Result<bool, IntegrateError> {
         let mut h = self.h;
         loop {
-            if !h.is_finite() {
-                return Err(IntegrateError::NonFinite { t: self.t });
-            }
-            if stats.steps + stats.rejected >= self.max_steps {
-                return Err(IntegrateError::TooManySteps {
-                    t: self.t,
-                    max_steps: self.max_steps,
-                });
-            }
-            if 0.1 * h.abs() <= self.t.abs() * UROUND {
-                return Err(IntegrateError::StepSizeTooSmall { t: self.t, h });
-            }
-            let mut last = false;
-            if (self.t + 1.01 * h - self.t_end) * self.posneg > 0.0 {
-                h = self.t_end - self.t;
-                last = true;
-            }
+            let (h_try, last) =
+                next_attempt(self.t, h, self.t_end, self.posneg, stats, self.max_steps)?;
+            h = h_try;
             let k = &mut self.k;
             k[0] = self.f;
             // The last stage only serves the error estimate (B[15] = 0).
