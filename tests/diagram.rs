@@ -423,7 +423,10 @@ fn monodromy_loop_keeps_clear_of_the_critical_curves() {
         loop_points: 32,
     };
     let diagram = Diagram::new(&body, 1.0, &[], resolution).unwrap();
-    let m = diagram.monodromy.as_ref().expect("a focus-focus point at H3 = 1");
+    let m = diagram
+        .monodromy
+        .as_ref()
+        .expect("a focus-focus point at H3 = 1");
     let fraction = m.radii.0 / (diagram.window.k.1 - diagram.window.k.0);
     let nearest = m
         .points
