@@ -12,7 +12,7 @@ use crate::ball::AsBall;
 use crate::batch::{self, Field, Job, LaneEnd, Queue, LANES};
 use crate::body::Body;
 use crate::case::Case;
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Stepper};
 use crate::quadrature::{ExactSolution, Motion};
 use crate::scalar::Scalar;
@@ -197,11 +197,11 @@ impl Sweep {
             max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
         };
         crate::simulate::validate(&settings)?;
-        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| RouthError::Case {
+        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
             message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
         })?;
-        let refused = |e: Refusal| RouthError::Case {
+        let refused = |e: Refusal| FileError::Case {
             file: source.to_string(),
             message: e.to_string(),
         };
@@ -300,7 +300,7 @@ impl Sweep {
 
     /// The case of run `k`, its body and its initial state `(gamma, M)`.
     fn start(&self, k: u64) -> Result<(Case, Body, [f64; 6])> {
-        let case = self.case_of(k).map_err(|e| RouthError::Case {
+        let case = self.case_of(k).map_err(|e| FileError::Case {
             file: self.source.clone(),
             message: e.to_string(),
         })?;
@@ -366,12 +366,12 @@ impl Sweep {
                 x0,
                 &self.settings,
                 None,
-                &mut |_, _| Ok(()),
+                &mut |_, _| Ok::<_, AppError>(()),
                 &mut |step| turning.observe(step),
             )?;
             match observed.failure {
                 Some(e) => Err(e.into()),
-                None => Ok::<_, RouthError>(self.finished(
+                None => Ok::<_, AppError>(self.finished(
                     k,
                     &body,
                     &case,
@@ -440,7 +440,7 @@ impl Sweep {
                 };
                 batch::integrate::<_, _, 6, LANES>(&ReducedSystem(body), &opts, &mut queue)?;
             }
-            Ok::<_, RouthError>(rows.into_iter().flatten().collect())
+            Ok::<_, AppError>(rows.into_iter().flatten().collect())
         }));
         let one_at_a_time = || {
             runs.iter()
@@ -501,7 +501,8 @@ impl Sweep {
                 name: "start, stop",
                 value: format!("{start}, {stop}"),
                 rule: "need 0 <= start <= stop <= the number of runs",
-            });
+            }
+            .into());
         }
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
