@@ -1,6 +1,7 @@
 //! Cost of one Taylor step against its order (`src/integrate/taylor`): the expansion of the
 //! default case's field (mg-eq) through one state to the orders 5, 10, 15, 20, 25, 30 (the
-//! Jorba–Zou order is 15 at tolerance 1e-12 and 20 at 1e-16). The tape's size (operations,
+//! integrator's order is 14 at tolerance 1e-8, 20 at 1e-12, 16 at 1e-13 and 20 at 1e-16:
+//! `taylor::taylor_order`). The tape's size (operations,
 //! of which products, quotients and square roots) is printed beside the times, so that the
 //! `O(n_ops p^2)` law can be checked: the time divided by `p^2` should settle to a constant as
 //! `p` grows. Run with `cargo bench --bench taylor`; figures are recorded in BENCHMARKS.md.
