@@ -40,6 +40,30 @@ pub(crate) fn next_attempt(
         Ok((h, false))
     }
 }
+
+/// The options of `steps` equal steps from `t0` to `t_end` without error control: the step
+/// as the initial step, a budget of `steps` steps. `steps = 0` is refused
+/// ([`IntegrateError::InvalidOption`]).
+pub(crate) fn fixed_step_options(
+    t0: f64,
+    t_end: f64,
+    steps: usize,
+) -> Result<Options, IntegrateError> {
+    if steps == 0 {
+        return Err(IntegrateError::InvalidOption {
+            name: "steps",
+            value: 0.0,
+            rule: "must be > 0",
+        });
+    }
+    let h = (t_end - t0) / steps as f64;
+    Ok(Options {
+        h_init: (h != 0.0).then_some(h),
+        max_steps: steps,
+        ..Options::default()
+    })
+}
+
 /// Safety factor of the step-size prediction.
 const SAFE: f64 = 0.9;
 /// Lower bound `FAC1` of `h_new / h`.
@@ -204,7 +228,7 @@ pub struct Dop853<'a, S, const N: usize> {
     atol: f64,
     max_steps: usize,
     compensated: bool,
-    /// Every step accepted with the same size ([`Dop853::fixed`]): no error control.
+    /// Every step accepted with the same size ([`Dop853::fixed_steps`]): no error control.
     fixed: bool,
     facold: f64,
     reject: bool,
@@ -281,33 +305,19 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
     }
 
     /// `steps` equal steps of `sys` from `(t0, y0)` to `t_end`, each accepted without error
-    /// control, the last landing on `t_end`, with the plain update of the published code (no
-    /// compensated sum): the method's own order 8, for convergence studies. The dense output
-    /// and the driver work as for the adaptive steps.
+    /// control, the last landing on `t_end`: the method's own order 8, for convergence
+    /// studies. The dense output and the driver work as for the adaptive steps.
     ///
     /// Fails as [`Dop853::new`] does, and with [`IntegrateError::InvalidOption`] for
     /// `steps = 0`.
-    pub fn fixed(
+    pub fn fixed_steps(
         sys: &'a S,
         t0: f64,
         y0: [f64; N],
         t_end: f64,
         steps: usize,
     ) -> Result<Self, IntegrateError> {
-        if steps == 0 {
-            return Err(IntegrateError::InvalidOption {
-                name: "steps",
-                value: 0.0,
-                rule: "must be > 0",
-            });
-        }
-        let opts = Options {
-            h_init: Some((t_end - t0) / steps as f64),
-            max_steps: steps.saturating_add(1),
-            compensated: false,
-            ..Options::default()
-        };
-        let mut solver = Self::new(sys, t0, y0, t_end, &opts)?;
+        let mut solver = Self::new(sys, t0, y0, t_end, &fixed_step_options(t0, t_end, steps)?)?;
         solver.fixed = true;
         Ok(solver)
     }
@@ -510,7 +520,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
 }
 
 /// Integrates `sys` from `(t0, y0)` to `t_end` with `n` equal DOP853 steps
-/// without error control ([`Dop853::fixed`] through the one driver [`drive`]), for
+/// without error control ([`Dop853::fixed_steps`] through the one driver [`drive`]), for
 /// convergence-order studies; returns `y(t_end)`.
 pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     sys: &S,
@@ -519,7 +529,7 @@ pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     t_end: f64,
     n: usize,
 ) -> Result<[f64; N], IntegrateError> {
-    let mut solver = Dop853::fixed(sys, t0, y0, t_end, n)?;
+    let mut solver = Dop853::fixed_steps(sys, t0, y0, t_end, n)?;
     let outcome = drive::<_, IntegrateError, N>(
         &mut solver,
         &Drive::default(),
