@@ -35,11 +35,39 @@ use super::compensated::compensated_add;
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit of the step-size-too-small test.
-const UROUND: f64 = 2.3e-16;
+pub(crate) const UROUND: f64 = 2.3e-16;
 
 /// The Jorba–Zou order for the tolerance `eps`: `ceil(-ln(eps) / 2 + 1)`, at least 2.
 pub fn jorba_zou_order(eps: f64) -> usize {
     ((-eps.ln() / 2.0 + 1.0).ceil() as usize).max(2)
+}
+
+/// The highest order of a run with these tolerances (the Jorba–Zou order of the smaller).
+pub fn max_order(rtol: f64, atol: f64) -> usize {
+    jorba_zou_order(rtol.min(atol))
+}
+
+/// The Jorba–Zou order of a step from the state `y` (at most `max_order`): the tolerance of
+/// the step is `atol` when `rtol ||y||_inf <= atol` (absolute error control), else `rtol`.
+pub fn step_order<const N: usize>(y: &[f64; N], rtol: f64, atol: f64, max_order: usize) -> usize {
+    let size = y.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let eps = if rtol * size <= atol { atol } else { rtol };
+    jorba_zou_order(eps).min(max_order)
+}
+
+/// The Jorba–Zou step size (unsigned) for a series of order `p` whose coefficient `y_i^[k]`
+/// is `coefficient(i, k)` (see the module documentation).
+pub fn jorba_zou_step<const N: usize>(
+    coefficient: impl Fn(usize, usize) -> f64,
+    p: usize,
+    rtol: f64,
+    atol: f64,
+) -> f64 {
+    let norm = |k: usize| (0..N).map(|i| coefficient(i, k).abs()).fold(0.0, f64::max);
+    let scale = if rtol * norm(0) <= atol { 1.0 } else { norm(0) };
+    let radius = |k: usize| (scale / norm(k)).powf(1.0 / k as f64);
+    let rho = radius(p - 1).min(radius(p));
+    rho * (-2.0 - 0.7 / (p - 1) as f64).exp()
 }
 
 /// How the order and step are chosen.
@@ -86,7 +114,7 @@ impl<const N: usize> Taylor<N> {
     ) -> Result<Self, IntegrateError> {
         opts.validate()?;
         let hmax = opts.h_max.unwrap_or((t_end - t0).abs());
-        let max_order = jorba_zou_order(opts.rtol.min(opts.atol));
+        let max_order = max_order(opts.rtol, opts.atol);
         let control = Control::Adaptive {
             rtol: opts.rtol,
             atol: opts.atol,
@@ -164,15 +192,7 @@ impl<const N: usize> Taylor<N> {
 
     /// The Jorba–Zou step size (unsigned) for the series just expanded to order `p`.
     fn jorba_zou_step(&self, p: usize, rtol: f64, atol: f64) -> f64 {
-        let norm = |k: usize| {
-            (0..N)
-                .map(|i| self.tape.state_coefficient(i, k).abs())
-                .fold(0.0, f64::max)
-        };
-        let scale = if rtol * norm(0) <= atol { 1.0 } else { norm(0) };
-        let radius = |k: usize| (scale / norm(k)).powf(1.0 / k as f64);
-        let rho = radius(p - 1).min(radius(p));
-        rho * (-2.0 - 0.7 / (p - 1) as f64).exp()
+        jorba_zou_step::<N>(|i, k| self.tape.state_coefficient(i, k), p, rtol, atol)
     }
 
     /// The order for the current state.
@@ -180,9 +200,7 @@ impl<const N: usize> Taylor<N> {
         match self.control {
             Control::Fixed { order, .. } => order,
             Control::Adaptive { rtol, atol, .. } => {
-                let size = self.y.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-                let eps = if rtol * size <= atol { atol } else { rtol };
-                jorba_zou_order(eps).min(self.tape.max_order())
+                step_order(&self.y, rtol, atol, self.tape.max_order())
             }
         }
     }
