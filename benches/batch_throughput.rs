@@ -153,8 +153,6 @@ fn measure(
             "lanes8" => lanes::<8>(false, &body, x0, t_end, &opts),
             "taylor4" => lanes::<4>(true, &body, x0, t_end, &opts),
             "taylor8" => lanes::<8>(true, &body, x0, t_end, &opts),
-            "taylor16" => lanes::<16>(true, &body, x0, t_end, &opts),
-            "taylor32" => lanes::<32>(true, &body, x0, t_end, &opts),
             _ => return None,
         };
         best = best.min(start.elapsed().as_secs_f64());

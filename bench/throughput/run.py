@@ -199,8 +199,9 @@ def main():
 
         for r in rows:
             note = f" ({r['steps']} steps)" if r["method"] == "NumPy RK4" else ""
+            ratios = [rate(m) / r["per_s"] for m in ["routh lanes8", "routh taylor8"]]
             print(f"| {tol:.0e} | {r['method']}{note} | {r['per_s']:.0f} | {r['error']:.1e} | "
-                  f"{rate('routh lanes8') / r['per_s']:.2f} | {rate('routh taylor8') / r['per_s']:.2f} |")
+                  + " | ".join("-" if x != x else f"{x:.2f}" for x in ratios) + " |")
     # At equal error: our Taylor lanes and heyoka's batch mode at the same tolerance take the
     # same steps (the Jorba-Zou rules), so their errors agree; the ratio of the rates is the
     # comparison at equal error.

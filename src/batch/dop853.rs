@@ -63,6 +63,24 @@ pub struct LaneEnd<const N: usize> {
     pub failure: Option<IntegrateError>,
 }
 
+impl<const N: usize> LaneEnd<N> {
+    /// The end of the run in lane `l` of the states `y`, at `t` with the counters `stats`.
+    pub(super) fn of<const L: usize>(
+        t: f64,
+        y: &[Lanes<L>; N],
+        l: usize,
+        stats: Stats,
+        failure: Option<IntegrateError>,
+    ) -> Self {
+        LaneEnd {
+            t,
+            y: lane_of(y, l),
+            stats,
+            failure,
+        }
+    }
+}
+
 /// The runs of a batch and what happens to each: the batch asks for a run whenever a lane is
 /// free, shows each accepted step, and hands back the end.
 pub trait Queue<const N: usize> {
@@ -326,15 +344,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
     fn end<Q: Queue<N>>(&mut self, l: usize, failure: Option<IntegrateError>, queue: &mut Q) {
         let lane = &mut self.lanes[l];
         lane.busy = false;
-        queue.end(
-            l,
-            LaneEnd {
-                t: lane.t,
-                y: lane_of(&self.y, l),
-                stats: lane.stats,
-                failure,
-            },
-        );
+        queue.end(l, LaneEnd::of(lane.t, &self.y, l, lane.stats, failure));
     }
 
     /// One attempted step in every busy lane: the stages and error norms on all lanes at

@@ -178,15 +178,7 @@ impl<const N: usize, const L: usize> Batch<N, L> {
         if failure.is_some() {
             self.tape.clear_lane(l);
         }
-        queue.end(
-            l,
-            LaneEnd {
-                t: lane.t,
-                y: lane_of(&self.y, l),
-                stats: lane.stats,
-                failure,
-            },
-        );
+        queue.end(l, LaneEnd::of(lane.t, &self.y, l, lane.stats, failure));
     }
 
     /// One step in every busy lane: the tape expanded for all lanes at once to the highest

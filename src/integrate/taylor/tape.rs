@@ -901,3 +901,59 @@ fn operands(node: &Node) -> impl Iterator<Item = u32> {
     };
     list.into_iter().flatten()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Tape, Var};
+    use crate::batch::Lanes;
+    use crate::integrate::OdeSystem;
+    use crate::scalar::Scalar;
+
+    /// `y' = 1 / y`: not finite at `y = 0`.
+    struct Inverse;
+
+    impl OdeSystem<1> for Inverse {
+        fn rhs(&self, _t: f64, y: &[f64; 1]) -> [f64; 1] {
+            [1.0 / y[0]]
+        }
+
+        fn record(&self, _t: Var, y: &[Var; 1]) -> Option<[Var; 1]> {
+            Some([Scalar::recip(y[0])])
+        }
+    }
+
+    /// Four runs expanded at once, one of them through `y = 0` where the field is infinite:
+    /// that lane's state coefficients are all NaN up to the order (a step from them is NaN,
+    /// which the integrators refuse), and the other lanes are bitwise an `f64` tape's
+    /// (tolerance zero: the same operations). Cleared, the lane expands as a new tape does.
+    /// Negative control: a lane through another state differs from the `f64` tape's.
+    #[test]
+    fn a_non_finite_lane_is_nan_and_leaves_the_others_alone() {
+        let p = 6;
+        let tape = Tape::record(&Inverse, p).expect("records");
+        let mut lanes: Tape<1, Lanes<4>> = tape.with_coefficients();
+        let single = |y: f64| {
+            let mut one = tape.clone();
+            one.expand(0.0, &[y], p);
+            (0..=p)
+                .map(|k| one.state_coefficient(0, k).to_bits())
+                .collect::<Vec<_>>()
+        };
+        let lane = |lanes: &Tape<1, Lanes<4>>, l: usize| {
+            (0..=p)
+                .map(|k| lanes.state_coefficient(0, k).0[l].to_bits())
+                .collect::<Vec<_>>()
+        };
+        let y = [1.0, 0.0, 2.0, -3.0];
+        lanes.expand(Lanes::splat(0.0), &[Lanes(y)], p);
+        for l in [0, 2, 3] {
+            assert_eq!(lane(&lanes, l), single(y[l]), "lane {l}");
+            assert!(single(y[l]).iter().all(|&b| f64::from_bits(b).is_finite()));
+        }
+        assert!((0..=p).all(|k| lanes.state_coefficient(0, k).0[1].is_nan()));
+        assert_ne!(lane(&lanes, 0), single(1.5), "negative control");
+        lanes.clear_lane(1);
+        lanes.expand(Lanes::splat(0.0), &[Lanes([1.0, 0.5, 2.0, -3.0])], p);
+        assert_eq!(lane(&lanes, 1), single(0.5));
+    }
+}
