@@ -7,6 +7,7 @@
 //! `p` grows. Run with `cargo bench --bench taylor`; figures are recorded in BENCHMARKS.md.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use routh::batch::Lanes;
 use routh::case::Case;
 use routh::integrate::taylor::Tape;
 use routh::simulate::ReducedSystem;
@@ -37,9 +38,39 @@ fn expansion(c: &mut Criterion) {
     group.finish();
 }
 
+/// The same expansion for 4 and 8 runs at once (a tape over [`Lanes`], as the batched Taylor
+/// method of `src/batch/taylor.rs` runs it), the instruction set (AVX-512 or AVX2) chosen at
+/// run time: the time per run is the time divided by the lanes.
+fn expansion_in_lanes(c: &mut Criterion) {
+    let case = Case::default_case().expect("the built-in default case is valid");
+    let x = case.initial.to_array();
+    let tape = Tape::record(&ReducedSystem(&case.ball), 30).expect("the reduced system records");
+    println!("expansion in lanes: {:?}", tape.isa());
+    let mut group = c.benchmark_group("taylor expansion in lanes (default case)");
+    let mut four: Tape<6, Lanes<4>> = tape.with_coefficients();
+    let mut eight: Tape<6, Lanes<8>> = tape.with_coefficients();
+    for p in ORDERS {
+        group.bench_with_input(BenchmarkId::new("4 lanes", p), &p, |b, &p| {
+            let y = x.map(Lanes::splat);
+            b.iter(|| {
+                four.expand(Lanes::splat(0.0), black_box(&y), p);
+                four.state_coefficient(0, p)
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("8 lanes", p), &p, |b, &p| {
+            let y = x.map(Lanes::splat);
+            b.iter(|| {
+                eight.expand(Lanes::splat(0.0), black_box(&y), p);
+                eight.state_coefficient(0, p)
+            })
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().measurement_time(Duration::from_secs(3)).warm_up_time(Duration::from_secs(1));
-    targets = expansion
+    targets = expansion, expansion_in_lanes
 }
 criterion_main!(benches);

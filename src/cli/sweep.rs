@@ -41,7 +41,8 @@ pub struct Args {
     /// that needs more is a row with that reason.
     #[arg(long)]
     pub max_steps: Option<usize>,
-    /// Integrator: `dop853`, `vern9`, `taylor`, `auto` or `rk4` / `rk4:<steps>`.
+    /// Integrator: `dop853`, `vern9`, `taylor`, `auto` or `rk4` / `rk4:<steps>`; `auto` picks
+    /// by the sweep's own table (`SWEEP_AUTO_TABLE`) and the rows name the method that ran.
     #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
     pub method: Method,
     /// Worker threads (default: one per core).
@@ -57,8 +58,8 @@ pub struct Args {
     /// Print the summary and every row as JSON.
     #[arg(long)]
     pub json: bool,
-    /// Integrate the runs one at a time instead of together in SIMD lanes (DOP853 only; the
-    /// rows are the same bit for bit, only the speed differs).
+    /// Integrate the runs one at a time instead of together in SIMD lanes (DOP853 and Taylor;
+    /// the rows are the same bit for bit, only the speed differs).
     #[arg(long)]
     pub no_batch: bool,
 }

@@ -39,7 +39,7 @@ use super::compensated::compensated_add;
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Rounding unit of the step-size-too-small test.
-const UROUND: f64 = 2.3e-16;
+pub(crate) const UROUND: f64 = 2.3e-16;
 
 /// The tolerance of a step from a state of size `size = ||y||_inf`: `(eps, scale)` with
 /// `eps = atol`, `scale = 1` (absolute control) when `rtol size <= atol`, otherwise
@@ -105,7 +105,7 @@ pub fn taylor_step(eps: f64, p: usize, scale: f64, norm_p_minus_1: f64, norm_p: 
 }
 
 /// `||v||_inf`.
-fn max_norm(v: impl Iterator<Item = f64>) -> f64 {
+pub(crate) fn max_norm(v: impl Iterator<Item = f64>) -> f64 {
     v.fold(0.0, |m, x| m.max(x.abs()))
 }
 
