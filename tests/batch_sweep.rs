@@ -31,10 +31,11 @@ fn sweep_rows_in_lanes_equal_one_at_a_time_bitwise() {
 }
 
 /// The same with `--method taylor` (the Taylor lanes of `routh::batch::taylor`), max_steps
-/// set so that the fastest spins fail.
+/// set so that the fastest spins fail (the runs take 8 to 150 steps at rtol 1e-10 with the
+/// order rule of `taylor::step_exponent`; 120 fails the fast spins only).
 #[test]
 fn taylor_sweep_rows_in_lanes_equal_one_at_a_time_bitwise() {
-    rows_in_lanes_equal_one_at_a_time("taylor", "230");
+    rows_in_lanes_equal_one_at_a_time("taylor", "120");
 }
 
 fn rows_in_lanes_equal_one_at_a_time(method: &str, max_steps: &str) {
