@@ -189,12 +189,25 @@ struct Temporary {
     renamed: bool,
 }
 
+/// Put `path` on the list of temporary files that a signal removes ([`remove_temporaries_on_signal`]).
+pub(crate) fn register_temporary(path: &Path) {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .push(path.to_path_buf());
+}
+
+/// Take `path` off that list (it was renamed or removed).
+pub(crate) fn unregister_temporary(path: &Path) {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .retain(|p| p != path);
+}
+
 impl Temporary {
     fn register(path: PathBuf) -> Self {
-        TEMPORARIES
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .push(path.clone());
+        register_temporary(&path);
         Temporary {
             path,
             renamed: false,
@@ -211,8 +224,7 @@ impl Drop for Temporary {
         if !self.renamed {
             let _ = std::fs::remove_file(&self.path);
         }
-        let mut list = TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner());
-        list.retain(|p| p != &self.path);
+        unregister_temporary(&self.path);
     }
 }
 

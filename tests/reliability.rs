@@ -597,3 +597,54 @@ fn sigint_stops_a_sweep_and_resume_completes_it() {
     assert_eq!(rows(&target), rows(&whole));
     assert_eq!(listing(&dir), ["long.toml", "stopped.csv", "whole.csv"]);
 }
+
+/// A second SIGINT during a sweep (after the first one asked it to stop) ends the process at
+/// once, and the signal handler removes the sweep's temporary file too (it is registered with
+/// the handler's list; before, only the first, graceful stop removed it).
+#[test]
+fn a_second_sigint_during_a_sweep_leaves_no_temporary_file() {
+    let dir = scratch("sweep-sigint-twice");
+    let case = case_file(
+        &dir,
+        "long.toml",
+        &format!(
+            "{}\n[sweep]\ntilt = {{ range = [0.3, 1.4], n = 150 }}\nspin = {{ values = [3.0, 5.0] }}\n",
+            edited("t_end = 100.0", "t_end = 30.0")
+        ),
+    );
+    let target = dir.join("stopped.csv");
+    let child = Command::new(binary())
+        .args(["sweep", "--case", &case, "--threads", "1", "--out"])
+        .arg(&target)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let tmp = dir.join(format!(".stopped.csv.tmp-{}", child.id()));
+    let start = Instant::now();
+    while std::fs::read_to_string(&tmp).map_or(0, |t| t.lines().count()) < 2 {
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "no rows written"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    for _ in 0..2 {
+        assert!(Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap()
+            .success());
+    }
+    let out = child.wait_with_output().unwrap();
+    // Ended by the second signal (the default action, after the handler's cleanup), or with
+    // 130 if the graceful stop of the first one won the race.
+    use std::os::unix::process::ExitStatusExt;
+    assert!(
+        out.status.signal() == Some(2) || out.status.code() == Some(130),
+        "{:?}: {}",
+        out.status,
+        text(&out.stderr)
+    );
+    assert!(!tmp.exists(), "the temporary file was left behind");
+}

@@ -37,12 +37,15 @@ impl Staged {
             value: target.display().to_string(),
             rule: "must name a file",
         })?;
+        let tmp = target.with_file_name(format!(
+            ".{}.tmp-{}",
+            name.to_string_lossy(),
+            std::process::id()
+        ));
+        // A signal that ends the process (a second one, after the sweep's stop) removes it.
+        crate::output::register_temporary(&tmp);
         Ok(Staged {
-            tmp: target.with_file_name(format!(
-                ".{}.tmp-{}",
-                name.to_string_lossy(),
-                std::process::id()
-            )),
+            tmp,
             target: target.to_path_buf(),
             committed: false,
         })
@@ -70,6 +73,7 @@ impl Drop for Staged {
         if !self.committed {
             let _ = std::fs::remove_file(&self.tmp);
         }
+        crate::output::unregister_temporary(&self.tmp);
     }
 }
 
