@@ -18,9 +18,7 @@ use super::lanes::{lane_of, set_lane};
 use super::{Job, LaneEnd, Lanes, Queue};
 use crate::integrate::compensated::compensated_add;
 use crate::integrate::taylor::tape::{Coefficient, Isa};
-use crate::integrate::taylor::{
-    max_norm, step_tolerance, taylor_order, taylor_step, Tape, UROUND,
-};
+use crate::integrate::taylor::{max_norm, step_tolerance, taylor_order, taylor_step, Tape, UROUND};
 use crate::integrate::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// The bookkeeping of one lane, in `f64`.
@@ -82,11 +80,12 @@ pub fn integrate_in<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, const
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
     opts.validate()?;
-    let tape =
-        Tape::record(sys, taylor_order(opts.rtol.min(opts.atol))).ok_or(IntegrateError::Unsupported {
+    let tape = Tape::record(sys, taylor_order(opts.rtol.min(opts.atol))).ok_or(
+        IntegrateError::Unsupported {
             method: "taylor",
             reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
-        })?;
+        },
+    )?;
     let zero = [Lanes::splat(0.0); N];
     let mut batch = Batch::<N, L> {
         tape: tape.with_coefficients(),
@@ -129,7 +128,8 @@ impl<const N: usize, const L: usize> Batch<N, L> {
                     continue;
                 }
                 let y = lane_of(&self.y, l);
-                let (eps, _) = step_tolerance(self.opts.rtol, self.opts.atol, max_norm(y.iter().copied()));
+                let (eps, _) =
+                    step_tolerance(self.opts.rtol, self.opts.atol, max_norm(y.iter().copied()));
                 lane.p = taylor_order(eps).min(self.tape.max_order());
                 break;
             }
