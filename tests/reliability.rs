@@ -148,6 +148,15 @@ fn a_named_pipe_is_streamed_into() {
     assert_eq!(listing(&dir), ["pipe"], "no temporary file beside the pipe");
 }
 
+/// Sends `signal` (as `kill` spells it, e.g. `-INT`) to process `pid`.
+fn send(signal: &str, pid: u32) {
+    assert!(Command::new("kill")
+        .args([signal, &pid.to_string()])
+        .status()
+        .unwrap()
+        .success());
+}
+
 /// Start a long `simulate --out`, wait until its temporary file exists, send `signal`, and
 /// check that it ends with the signal and leaves neither the temporary nor the target.
 fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
@@ -176,12 +185,7 @@ fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
         std::thread::sleep(Duration::from_millis(20));
     }
     std::thread::sleep(Duration::from_millis(200));
-    let pid = child.id().to_string();
-    assert!(Command::new("kill")
-        .args([signal, &pid])
-        .status()
-        .unwrap()
-        .success());
+    send(signal, child.id());
     let status = child.wait().unwrap();
     assert!(!status.success(), "{status:?}");
     assert!(
@@ -529,14 +533,12 @@ fn plain_text_to_a_full_device_exits_2() {
     }
 }
 
-/// SIGINT during a sweep into `--out`: the sweep stops after the runs in progress, the
-/// target holds the finished rows (a complete table, no temporary file left), and `--resume`
-/// completes it to the rows of an uninterrupted sweep. (SIGTERM: `tests/cli_sweep.rs`.)
-#[test]
-fn sigint_stops_a_sweep_and_resume_completes_it() {
-    let dir = scratch("sweep-sigint");
+/// Starts a sweep long enough to be interrupted (300 runs to t = 30, one thread) into
+/// `dir/stopped.csv` and returns once its temporary file holds a row: the case file, the target,
+/// the temporary file and the running child.
+fn running_sweep(dir: &Path) -> (String, PathBuf, PathBuf, std::process::Child) {
     let case = case_file(
-        &dir,
+        dir,
         "long.toml",
         &format!(
             "{}\n[sweep]\ntilt = {{ range = [0.3, 1.4], n = 150 }}\nspin = {{ values = [3.0, 5.0] }}\n",
@@ -560,11 +562,17 @@ fn sigint_stops_a_sweep_and_resume_completes_it() {
         );
         std::thread::sleep(Duration::from_millis(20));
     }
-    assert!(Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap()
-        .success());
+    (case, target, tmp, child)
+}
+
+/// SIGINT during a sweep into `--out`: the sweep stops after the runs in progress, the
+/// target holds the finished rows (a complete table, no temporary file left), and `--resume`
+/// completes it to the rows of an uninterrupted sweep. (SIGTERM: `tests/cli_sweep.rs`.)
+#[test]
+fn sigint_stops_a_sweep_and_resume_completes_it() {
+    let dir = scratch("sweep-sigint");
+    let (case, target, tmp, child) = running_sweep(&dir);
+    send("-INT", child.id());
     let out = child.wait_with_output().unwrap();
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(130), "{err}");
@@ -604,37 +612,9 @@ fn sigint_stops_a_sweep_and_resume_completes_it() {
 #[test]
 fn a_second_sigint_during_a_sweep_leaves_no_temporary_file() {
     let dir = scratch("sweep-sigint-twice");
-    let case = case_file(
-        &dir,
-        "long.toml",
-        &format!(
-            "{}\n[sweep]\ntilt = {{ range = [0.3, 1.4], n = 150 }}\nspin = {{ values = [3.0, 5.0] }}\n",
-            edited("t_end = 100.0", "t_end = 30.0")
-        ),
-    );
-    let target = dir.join("stopped.csv");
-    let child = Command::new(binary())
-        .args(["sweep", "--case", &case, "--threads", "1", "--out"])
-        .arg(&target)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let tmp = dir.join(format!(".stopped.csv.tmp-{}", child.id()));
-    let start = Instant::now();
-    while std::fs::read_to_string(&tmp).map_or(0, |t| t.lines().count()) < 2 {
-        assert!(
-            start.elapsed() < Duration::from_secs(120),
-            "no rows written"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    let (_, _, tmp, child) = running_sweep(&dir);
     for _ in 0..2 {
-        assert!(Command::new("kill")
-            .args(["-INT", &child.id().to_string()])
-            .status()
-            .unwrap()
-            .success());
+        send("-INT", child.id());
     }
     let out = child.wait_with_output().unwrap();
     // Ended by the second signal (the default action, after the handler's cleanup), or with
