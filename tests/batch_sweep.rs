@@ -4,7 +4,6 @@
 //! grid that mixes bodies (runs of one body share lanes), fails some runs (max steps) and
 //! has more runs than lanes. Tolerance zero: the lanes do the one-at-a-time arithmetic.
 
-#[allow(dead_code)] // this file uses only `routh` of the shared helpers
 mod common;
 use common::routh;
 

@@ -7,6 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
+mod common;
+
 const DEFAULT: &str = routh::case::DEFAULT_CASE;
 
 fn binary() -> String {
@@ -488,14 +490,9 @@ fn plain_text_to_a_closed_pipe_ends_quietly() {
     // before, "failed printing to stdout: Broken pipe").
     let dir = scratch("closed-pipe");
     for args in printing_commands(&dir) {
-        let mut child = Command::new(binary())
-            .args(&args)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
-        drop(child.stdout.take());
-        let out = child.wait_with_output().unwrap();
+        let mut command = Command::new(binary());
+        command.args(&args);
+        let out = common::with_closed_stdout(command);
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
         assert!(err.is_empty(), "{args:?}: {err}");
