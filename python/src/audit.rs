@@ -10,9 +10,9 @@ const MAX_POINTS: usize = 100_000;
 
 /// Check every computable claim of sections 2.1 to 4 of the paper at `points` random
 /// phase-space points (SplitMix64 with `seed`), as `routh audit --json`: a list of dicts with
-/// `id`, `label` (the equation label), `statement`, `status` (`"OK"`, `"FAIL"` or
-/// `"NOT-CHECKED"`), `residual` (the largest relative residual, None when not checked) and
-/// `note`. The interpreter lock is released while it runs.
+/// `id`, `label` (the equation label), `statement`, `status` (`"OK"`, `"FAIL"`,
+/// `"NOT-CHECKED"` or `"OK-WITHIN-ANSATZ"`), `residual` (the largest relative residual, None
+/// when not checked; for `"OK-WITHIN-ANSATZ"` the margin of a non-existence claim) and `note`. The interpreter lock is released while it runs.
 #[pyfunction]
 #[pyo3(signature = (points = 20, seed = 1))]
 pub fn audit<'py>(py: Python<'py>, points: i64, seed: u64) -> PyResult<Bound<'py, PyAny>> {

@@ -12,6 +12,9 @@ use crate::differential::{jacobian, Dual6};
 use crate::integrals::{
     energy, jellett, quadratic_integral, quadratic_integral_free, routh_integral,
 };
+use crate::poisson::conformal_search::{
+    decide, random_momenta, sections, Decision, Foliation, Section, MOMENTA, RANK_TOLERANCE,
+};
 use crate::poisson::deformation::{lie_derivative, TrivialDeformation};
 use crate::poisson::first::{
     g_eq1_coefficients, g_eq2_coefficients, Alpha, Beta, FirstBracket, FirstForm,
@@ -359,8 +362,8 @@ pub fn claims() -> Vec<Claim> {
                 let pts = s.points_jellett_zero(&p.body);
                 let coef = |x: &[f64; 6]| vec![-0.5 / p.alpha_beta(&[x[0], x[1], x[2]]).1];
                 let poisson = checks::jacobi(&p, &pts);
-                let Outcome { residual, note } = decomposition_outcome(&p, &coef, &[energy], &pts, &format!("at (M, r) = 0; P_f is Poisson: max |[P_f,P_f]|/(2|P_f||dP_f|) = {poisson:.1e}"));
-                Outcome { residual: residual.map(|r| r.max(poisson)), note }
+                let outcome = decomposition_outcome(&p, &coef, &[energy], &pts, &format!("at (M, r) = 0; P_f is Poisson: max |[P_f,P_f]|/(2|P_f||dP_f|) = {poisson:.1e}"));
+                Outcome { residual: outcome.residual.map(|r| r.max(poisson)), ..outcome }
             },
         },
         Claim {
@@ -471,12 +474,72 @@ pub fn claims() -> Vec<Claim> {
             id: "eq-cf",
             label: "eq-cf",
             statement: "X = g P dF(H1, H2, H3, H4) has no solution with a linear-in-momenta Poisson P of (geom-eq)",
-            check: |_| Outcome {
-                residual: None,
-                note: "not decided: a non-existence statement over all bivectors P_ij = a_ijk(gamma) M_k + b_ij(gamma) (45 + 15 unknown functions of gamma) and all functions F. With dF = sum_a F_a dH_a (F_a = dF/dH_a, constant on each common level of the integrals), (eq-cf) is the linear system X = g sum_a F_a P dH_a in a_ijk, b_ij, and the Casimir conditions of (geom-eq) are linear too; [P, P] = 0 is quadratic. A bounded computation would expand a_ijk, b_ij (divided by g) in polynomials in gamma of degree <= d, impose the linear conditions at sample points for each ratio F_1 : F_2 : F_3 : F_4 (a projective 3-parameter family, or symbolic in it), and test [P, P] = 0 on the solution space; it would exclude only the polynomial P of degree <= d, not the rational and algebraic entries (1/(gamma1^2 + gamma2^2), g) that (p-br) and (p-bv2) have. Not done".into(),
-            },
-        },
+            check: eq_cf_outcome,        },
     ]
+}
+
+/// The number of gammas of the (eq-cf) search, whatever the sample's count (one gamma always
+/// admits a ratio; eight spread over the sphere exclude a common one by orders).
+pub const EQ_CF_GAMMAS: usize = 8;
+
+/// The bodies of the (eq-cf) search: the audit's body and the default case's, both with
+/// gravity (mg-eq).
+pub fn eq_cf_bodies() -> [Body; 2] {
+    [body(), Body::default()]
+}
+
+/// The (eq-cf) search (poisson::conformal_search) for each body and foliation at
+/// [`EQ_CF_GAMMAS`] gammas of the sample's seed: the margin is the smallest
+/// [`Decision::margin`], the note gives each decision and the rank gaps.
+fn eq_cf_outcome(s: &Sample) -> Outcome {
+    let gammas_of = |b: &Body| -> Vec<[f64; 3]> {
+        Sample {
+            seed: s.seed,
+            count: EQ_CF_GAMMAS,
+        }
+        .points(b)
+        .iter()
+        .map(|x| [x[0], x[1], x[2]])
+        .collect()
+    };
+    let momenta = random_momenta(s.seed);
+    let mut margin = f64::INFINITY;
+    let mut gap = 0.0f64;
+    let mut found = Vec::new();
+    for (n, b) in eq_cf_bodies().iter().enumerate() {
+        let field = field_of(*b);
+        for foliation in Foliation::ALL {
+            let sections = sections(b, &field, foliation, &gammas_of(b), &momenta);
+            gap = sections.iter().map(Section::gap).fold(gap, f64::max);
+            let decision = decide(&sections);
+            margin = margin.min(decision.margin());
+            found.push(format!(
+                "body {}, {}: {}",
+                n + 1,
+                foliation.name(),
+                decision_text(&decision)
+            ));
+        }
+    }
+    Outcome::excluded(
+        margin,
+        format!("decided within the ansatz: P_ij = sum_k a_ijk(gamma) M_k + b_ij(gamma) with any functions a, b (the linear conditions are pointwise in gamma: no degree bound), any conformal factor c(gamma) in place of g, F linear in the integrals (F_a = dF/dH_a constant), the Casimirs and involutive pair of (geom-eq) one of the paper's three choices; at each of {EQ_CF_GAMMAS} gammas the identities in M at {MOMENTA} random momenta, solved by SVD (null spaces at singular values <= {RANK_TOLERANCE:e} s_max; largest gap s_dropped/s_kept {gap:.1e}); residual = the margin, the smallest over bodies and foliations of the residual |Q dF - X|/|X| minimised over the ratios of the F_a (consistent systems leave <= 1e-12); bodies 1 = the audit's, 2 = the default case's, G = 9.81; {}; not decided: F_a varying with the integrals, the other Casimir pairs of (gen-caz)", found.join("; ")),
+    )
+}
+
+/// A decision in words, for the note.
+fn decision_text(decision: &Decision) -> String {
+    match decision {
+        Decision::NoRatio { residual } => {
+            format!("no ratio at some gamma (lifted residual {residual:.2e})")
+        }
+        Decision::RatioVaries { residual, .. } => {
+            format!("no ratio common to the gammas (minimax residual {residual:.2e})")
+        }
+        Decision::Consistent { residual, ratio } => {
+            format!("linear conditions solved by the ratio {ratio:.3?} (residual {residual:.1e}); [P, P] = 0 not tested")
+        }
+    }
 }
 
 /// The reduction (p-map) at c = 0 of the bracket under (cond), without gravity.

@@ -37,15 +37,21 @@ pub enum Status {
     /// The claim cannot be decided numerically; the note says why.
     #[serde(rename = "NOT-CHECKED")]
     NotChecked,
+    /// A non-existence claim decided within a stated ansatz (the note states it): the residual
+    /// is the margin, the smallest relative residual of the conditions over the ansatz, above
+    /// [`THRESHOLD`].
+    #[serde(rename = "OK-WITHIN-ANSATZ")]
+    OkWithinAnsatz,
 }
 
 impl Status {
-    /// The status as printed in the table: `OK`, `FAIL`, `NOT-CHECKED`.
+    /// The status as printed in the table: `OK`, `FAIL`, `NOT-CHECKED`, `OK-WITHIN-ANSATZ`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Status::Ok => "OK",
             Status::Fail => "FAIL",
             Status::NotChecked => "NOT-CHECKED",
+            Status::OkWithinAnsatz => "OK-WITHIN-ANSATZ",
         }
     }
 }
@@ -101,10 +107,15 @@ impl Sample {
 /// note (what was evaluated, readings of ambiguous text, the fitted values of a failure).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outcome {
-    /// The largest relative residual over the points.
+    /// The largest relative residual over the points; for a non-existence claim the margin.
     pub residual: Option<f64>,
     /// What the number means, or why there is none.
     pub note: String,
+    /// Whether the claim is a non-existence statement decided within an ansatz: then the
+    /// residual is the margin by which the conditions miss a solution, and a margin above
+    /// [`THRESHOLD`] is [`Status::OkWithinAnsatz`] (at most: [`Status::NotChecked`], since a
+    /// solution of the linear conditions alone refutes nothing).
+    pub within_ansatz: bool,
 }
 
 impl Outcome {
@@ -113,6 +124,15 @@ impl Outcome {
         Outcome {
             residual: Some(residual),
             note: note.into(),
+            within_ansatz: false,
+        }
+    }
+
+    /// A non-existence claim decided within an ansatz, with its margin and note.
+    pub fn excluded(margin: f64, note: impl Into<String>) -> Self {
+        Outcome {
+            within_ansatz: true,
+            ..Outcome::checked(margin, note)
         }
     }
 }
@@ -139,7 +159,7 @@ pub struct Verdict {
     pub label: &'static str,
     /// The claim in one line.
     pub statement: &'static str,
-    /// OK, FAIL or NOT-CHECKED.
+    /// OK, FAIL, NOT-CHECKED or OK-WITHIN-ANSATZ.
     pub status: Status,
     /// The largest relative residual (`null` when not checked).
     pub residual: Option<f64>,
@@ -150,11 +170,17 @@ pub struct Verdict {
 impl Claim {
     /// Run the check and judge it against [`THRESHOLD`].
     pub fn verdict(&self, sample: &Sample) -> Verdict {
-        let Outcome { residual, note } = (self.check)(sample);
-        let status = match residual {
-            None => Status::NotChecked,
-            Some(r) if r <= THRESHOLD => Status::Ok,
-            Some(_) => Status::Fail,
+        let Outcome {
+            residual,
+            note,
+            within_ansatz,
+        } = (self.check)(sample);
+        let status = match (residual, within_ansatz) {
+            (None, _) => Status::NotChecked,
+            (Some(margin), true) if margin > THRESHOLD => Status::OkWithinAnsatz,
+            (Some(_), true) => Status::NotChecked,
+            (Some(r), false) if r <= THRESHOLD => Status::Ok,
+            (Some(_), false) => Status::Fail,
         };
         Verdict {
             id: self.id,

@@ -11,6 +11,7 @@
 //! Entries are written once, generic over [`Real`]; their first derivatives, which the
 //! Schouten bracket needs, come from forward-mode automatic differentiation ([`Jet::at`]).
 
+pub mod conformal_search;
 pub mod deformation;
 pub mod first;
 pub mod flows;
