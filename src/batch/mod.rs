@@ -21,10 +21,12 @@
 
 pub mod dop853;
 pub mod lanes;
+pub mod runs;
 pub mod taylor;
 
-pub use dop853::{integrate, Job, LaneEnd, Queue, LANES};
+pub use dop853::{integrate, LANES};
 pub use lanes::Lanes;
+pub use runs::{Job, LaneEnd, Queue};
 
 use crate::scalar::Scalar;
 
