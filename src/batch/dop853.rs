@@ -1,12 +1,13 @@
 //! DOP853 in lanes: Hairer's `dop853.f` step (the stages of [`crate::integrate::tableau`],
-//! the 5th/3rd-order error estimate, the step-size controller) applied to `L` runs at once,
-//! each lane with its own time, step size, rejections and end time, refilled from a
-//! [`Queue`] as soon as its run ends.
+//! the 5th/3rd-order error estimate) applied to `L` runs at once, each lane with its own
+//! [`StepControl`] (time, step size, rejections, end time), refilled from a [`Queue`] as
+//! soon as its run ends (`Runs`).
 //!
 //! Every operation of a lane is the operation of [`crate::integrate::Dop853`] on that run,
 //! in the same order: the stages and the error norm run on [`Lanes`] (element-wise `f64`
-//! arithmetic), the controller and the compensated update run lane by lane in `f64`. A lane
-//! is bitwise the one-at-a-time integrator (see the module [`crate::batch`]).
+//! arithmetic), the step control ([`Law::Dop853`]) and the compensated update run lane by
+//! lane in `f64`, in the same code as the one-at-a-time stepper's. A lane is bitwise the
+//! one-at-a-time integrator (see the module [`crate::batch`]).
 
 use std::cell::Cell;
 
@@ -15,8 +16,7 @@ use super::runs::{LaneMethod, Queue, Runs};
 use super::{Field, Job, Lanes};
 use crate::integrate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
 use crate::integrate::{
-    scaled_error, start_control, IntegrateError, Law, OdeSystem, Options, Stats, StepControl,
-    Stepper,
+    rk_start, scaled_error, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper,
 };
 use crate::scalar::Scalar;
 
@@ -95,7 +95,7 @@ impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
 }
 
 /// DOP853 in lanes: the stages of every lane (structure of arrays); the lanes' states and
-/// step control are [`Runs`]'.
+/// step control are `Runs`'.
 struct Dop853Lanes<'f, F, const N: usize, const L: usize> {
     field: &'f F,
     opts: Options,
@@ -131,18 +131,16 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
     /// As [`crate::integrate::Dop853::new`]: `f(t0, y0)` and the same initial step.
     fn start(&mut self, l: usize, job: &Job<N>) -> Result<StepControl, (IntegrateError, Stats)> {
         let one = OneLane(self.field);
-        let (f0, control) =
-            start_control(&one, job.t0, job.y0, job.t_end, &self.opts, Law::Dop853, 8).map_err(
-                |e| {
-                    let stats = Stats {
-                        rhs_evals: 1,
-                        ..Stats::default()
-                    };
-                    (e, stats)
-                },
-            )?;
-        set_lane(&mut self.f, l, &f0);
-        Ok(control)
+        let start = rk_start(&one, job.t0, job.y0, job.t_end, &self.opts, Law::Dop853, 8);
+        let start = start.map_err(|e| {
+            let stats = Stats {
+                rhs_evals: 1,
+                ..Stats::default()
+            };
+            (e, stats)
+        })?;
+        set_lane(&mut self.f, l, &start.f0);
+        Ok(start.control)
     }
 
     /// The checks before an attempt and its size ([`StepControl::attempt`]).

@@ -1,9 +1,9 @@
 //! The runs of a batch: the [`Queue`] that feeds the lanes, each lane's state (structure of
 //! arrays) and [`StepControl`], and the one loop of every method in lanes
-//! ([`Runs::integrate`]): fill the free lanes from the queue, let the step control of each
+//! (`Runs::integrate`): fill the free lanes from the queue, let the step control of each
 //! busy lane check its next step, step all lanes at once, end the runs that are done or
 //! failed. What a method does in its lanes (its start, the checks before its step, the step
-//! itself) is a [`LaneMethod`]; whether a lane's attempt is accepted, its next step size, the
+//! itself) is a `LaneMethod`; whether a lane's attempt is accepted, its next step size, the
 //! cut at its end time and its failures are decided by the lane's [`StepControl`], the step
 //! control of the one-at-a-time steppers.
 
@@ -52,7 +52,7 @@ pub trait Queue<const N: usize> {
 }
 
 /// What a one-step method does in `L` lanes; the lanes' runs and their step control are
-/// [`Runs`]'.
+/// `Runs`'.
 pub(crate) trait LaneMethod<const N: usize, const L: usize> {
     /// Starts `job` in lane `l` (its start checked, its state in the lanes): the method's
     /// own preparation and the run's step control; `Err` when the run cannot start, with the
@@ -62,7 +62,7 @@ pub(crate) trait LaneMethod<const N: usize, const L: usize> {
     /// the run.
     fn prepare(&mut self, runs: &mut Runs<N, L>, l: usize) -> Result<(), IntegrateError>;
     /// One step (or attempt) of every busy lane at once, the runs that end handed to
-    /// [`Runs::end`].
+    /// `Runs::end`.
     fn step<Q: Queue<N>>(&mut self, runs: &mut Runs<N, L>, queue: &mut Q);
     /// The run of lane `l` ended (`failed`: with a failure).
     fn release(&mut self, _l: usize, _failed: bool) {}

@@ -1,16 +1,16 @@
 //! The Taylor method in lanes: the one recorded [`Tape`] of the field expanded for `L` runs
 //! at once ([`Tape`] over [`Lanes`]: coefficient `k` of a slot for the `L` runs side by side,
 //! the convolutions vectorised across the runs, AVX-512 or AVX2 chosen at run time), each
-//! lane with its own time, order, step size and end time, refilled from a [`Queue`] as soon
-//! as its run ends.
+//! lane with its own order and [`StepControl`] (time, step size, end time), refilled from a
+//! [`Queue`] as soon as its run ends (`Runs`).
 //!
 //! Each lane does the arithmetic of the one-at-a-time [`Taylor`](crate::integrate::Taylor)
 //! on its run, operation for operation: the same recurrences on the same tape (a lane of a
 //! `Tape<N, Lanes<L>>` is bitwise an `f64` tape: [`Coefficient`]), a lane's tape cleared
 //! when its run starts (as a new tape), the same order ([`taylor_order`] of
-//! [`step_tolerance`]) and step size ([`taylor_step`]) from the lane's own coefficients, the same Horner sum, checks and
-//! compensated update. A lane is therefore **bitwise** the one-at-a-time run: the same steps,
-//! orders, field passes, dense output and final state (tests/batch_taylor.rs, 1024 runs).
+//! [`step_tolerance`]) and step size ([`taylor_step`]) from the lane's own coefficients, the
+//! same step control ([`Law::Series`]), Horner sum and compensated update. A lane is therefore **bitwise** the one-at-a-time run: the same steps,
+//! orders, field passes, dense output and final state (tests/batch.rs, 1024 runs).
 //! The lanes of one pass of the tape share its order, the highest of their orders: the
 //! coefficients of the orders below are those of a shorter expansion, bit for bit.
 
@@ -22,7 +22,7 @@ use crate::integrate::taylor::{max_norm, step_tolerance, taylor_order, taylor_st
 use crate::integrate::{IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
 
 /// The Taylor method in lanes: the tape with the coefficients of every lane and each lane's
-/// order; the lanes' states and step control are [`Runs`]'.
+/// order; the lanes' states and step control are `Runs`'.
 struct TaylorLanes<const N: usize, const L: usize> {
     tape: Tape<N, Lanes<L>>,
     opts: Options,
@@ -41,7 +41,7 @@ pub fn lanes() -> usize {
 /// bitwise the one-at-a-time integration. Returns when the queue is empty and every lane has
 /// ended. Invalid options, and a system that cannot be recorded
 /// ([`OdeSystem::record`]), are refused before any run starts; a run that fails ends with
-/// its failure in [`LaneEnd::failure`] and does not disturb the other lanes.
+/// its failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other lanes.
 pub fn integrate<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize>(
     sys: &S,
     opts: &Options,

@@ -128,45 +128,22 @@ pub fn hinit<S: OdeSystem<N>, const N: usize>(
     (100.0 * h.abs()).min(h1).min(hmax).copysign(posneg)
 }
 
-/// The start of a Runge–Kutta run of `sys` from `(t0, y0)` to `t_end` (checked by
-/// `check_start`): `f(t0, y0)` (refused when not finite: [`IntegrateError::NonFinite`]) and
-/// the run's [`StepControl`] under `law`, its first step `opts.h_init` or Hairer's `HINIT`
-/// for a method of order `order` (the evaluations counted: one, two with `HINIT`).
-pub(crate) fn start_control<S: OdeSystem<N>, const N: usize>(
-    sys: &S,
-    t0: f64,
-    y0: [f64; N],
-    t_end: f64,
-    opts: &Options,
-    law: Law,
-    order: i32,
-) -> Result<([f64; N], StepControl), IntegrateError> {
-    let f0 = sys.rhs(t0, &y0);
-    if f0.iter().any(|v| !v.is_finite()) {
-        return Err(IntegrateError::NonFinite { t: t0 });
-    }
-    let mut guessed = false;
-    let mut control = StepControl::new(law, t0, t_end, opts, |posneg, hmax| {
-        guessed = true;
-        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, order)
-    });
-    control.count_evals(1 + usize::from(guessed));
-    Ok((f0, control))
-}
-
 /// A run of a Runge–Kutta pair at its start ([`RungeKutta::from_start`]): the arguments
 /// checked, `f(t0, y0)` evaluated and the run's [`StepControl`] made.
 pub struct RkStart<'a, S, const N: usize> {
-    pub(super) sys: &'a S,
-    pub(super) y0: [f64; N],
-    pub(super) f0: [f64; N],
-    pub(super) control: StepControl,
-    pub(super) opts: Options,
+    pub(crate) sys: &'a S,
+    pub(crate) y0: [f64; N],
+    pub(crate) f0: [f64; N],
+    pub(crate) control: StepControl,
+    pub(crate) opts: Options,
 }
 
-/// The start of a run of a Runge–Kutta pair of `order` under `law`: the checks of the options
-/// and of `(t0, y0, t_end)`, then [`start_control`].
-pub(super) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
+/// The start of a run of a Runge–Kutta pair of `order` under `law` from `(t0, y0)` to
+/// `t_end`, for the steppers and the lanes: the checks of the options and of the arguments,
+/// `f(t0, y0)` (refused when not finite: [`IntegrateError::NonFinite`]) and the run's
+/// [`StepControl`], its first step `opts.h_init` or Hairer's `HINIT` for a method of order
+/// `order` (the evaluations counted: one, two with `HINIT`).
+pub(crate) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
     sys: &'a S,
     t0: f64,
     y0: [f64; N],
@@ -177,7 +154,16 @@ pub(super) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
 ) -> Result<RkStart<'a, S, N>, IntegrateError> {
     opts.validate()?;
     check_start(t0, &y0, t_end)?;
-    let (f0, control) = start_control(sys, t0, y0, t_end, opts, law, order)?;
+    let f0 = sys.rhs(t0, &y0);
+    if f0.iter().any(|v| !v.is_finite()) {
+        return Err(IntegrateError::NonFinite { t: t0 });
+    }
+    let mut guessed = false;
+    let mut control = StepControl::new(law, t0, t_end, opts, |posneg, hmax| {
+        guessed = true;
+        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, order)
+    });
+    control.count_evals(1 + usize::from(guessed));
     Ok(RkStart {
         sys,
         y0,
@@ -284,24 +270,18 @@ impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Dop853<'a, S,
     const ORDER: i32 = 8;
 
     fn from_start(start: RkStart<'a, S, N>) -> Self {
-        let RkStart {
-            sys,
-            y0,
-            f0,
-            control: ctl,
-            opts,
-        } = start;
+        let (y, opts) = (start.y0, start.opts);
         let mut k = [[0.0; N]; 16];
-        k[12] = f0;
+        k[12] = start.f0;
         Dop853 {
-            sys,
-            ctl,
-            y: y0,
-            carry: [0.0; N],
-            f: f0,
-            y_prev: y0,
-            y_raw: y0,
+            sys: start.sys,
+            ctl: start.control,
+            f: start.f0,
             k,
+            y,
+            y_prev: y,
+            y_raw: y,
+            carry: [0.0; N],
             rtol: opts.rtol,
             atol: opts.atol,
             compensated: opts.compensated,

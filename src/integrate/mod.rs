@@ -37,7 +37,7 @@ use std::str::FromStr;
 
 pub use control::{Law, StepControl};
 pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
-pub(crate) use dop853::{scaled_error, start_control};
+pub(crate) use dop853::{rk_start, scaled_error};
 pub use event::brent;
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 pub use taylor::Taylor;

@@ -110,26 +110,19 @@ impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Vern9<'a, S, 
     const ORDER: i32 = 9;
 
     fn from_start(start: RkStart<'a, S, N>) -> Self {
-        let RkStart {
-            sys,
-            y0,
-            f0,
-            control: ctl,
-            opts,
-        } = start;
         let mut k = [[0.0; N]; STAGES];
-        k[16] = f0;
+        k[16] = start.f0;
         Vern9 {
-            sys,
-            ctl,
-            y: y0,
-            carry: [0.0; N],
-            f: f0,
-            y_prev: y0,
             k,
-            rtol: opts.rtol,
-            atol: opts.atol,
-            compensated: opts.compensated,
+            y: start.y0,
+            y_prev: start.y0,
+            f: start.f0,
+            carry: [0.0; N],
+            sys: start.sys,
+            ctl: start.control,
+            rtol: start.opts.rtol,
+            atol: start.opts.atol,
+            compensated: start.opts.compensated,
             extra: Cell::new(None),
             dense_evals: Cell::new(0),
         }
