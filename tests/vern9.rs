@@ -3,7 +3,7 @@
 //! its interpolant, and negative controls that show each check can fail.
 
 use routh::integrate::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use routh::integrate::{Options, Stepper, Vern9};
+use routh::integrate::{Options, RungeKutta, Stepper, Vern9};
 
 /// A rooted tree given by the indices of its children's trees in a list sorted by order.
 struct Tree {

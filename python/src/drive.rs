@@ -12,6 +12,7 @@ use routh_core::projection::LevelSet;
 use routh_core::simulate::{
     integrate_span, project_onto, reduced, Drift, Next, Settings as LibrarySettings, Span,
 };
+use routh_core::RouthError;
 use std::cell::RefCell;
 use std::collections::BTreeMap;
 
@@ -114,29 +115,64 @@ fn crosses(g0: f64, g1: f64, direction: f64) -> bool {
     (up && direction >= 0.0) || (down && direction <= 0.0)
 }
 
-/// Why the observer ended a run early.
+/// Why a run ended with an error: the library refused it, or a hook raised an exception
+/// (raised after the run). The error type of the run's callbacks.
 enum Halt {
-    /// An exception of a hook, raised after the run.
+    /// Invalid settings or samples.
+    Refused(RouthError),
+    /// An exception of a hook.
     Python(PyErr),
-    /// An event that could not be located: the run failed with this message.
-    Failed(String),
 }
 
-/// The events of a run: their previous values, occurrences and the Python hooks.
+impl From<RouthError> for Halt {
+    fn from(e: RouthError) -> Self {
+        Halt::Refused(e)
+    }
+}
+
+impl From<Halt> for PyErr {
+    fn from(halt: Halt) -> Self {
+        match halt {
+            Halt::Refused(e) => crate::convert::python_error(e),
+            Halt::Python(e) => e,
+        }
+    }
+}
+
+/// The events of a run: their previous values, occurrences, the event that could not be
+/// located (if any) and the Python hooks.
 struct Events<'h, const N: usize> {
     hooks: Hooks<'h, N>,
     g_prev: Vec<f64>,
     t_events: Vec<Vec<f64>>,
     y_events: Vec<Vec<[f64; N]>>,
+    /// Why an event could not be located; it ended the run, which failed.
+    unlocated: Option<String>,
 }
 
 impl<const N: usize> Events<'_, N> {
+    /// How the run ended, given the integrator's failure.
+    fn ending(&self, failure: Option<String>) -> Ending {
+        let terminal = (self.hooks.rules.iter().zip(&self.t_events))
+            .any(|(rule, t)| rule.terminal > 0 && t.len() >= rule.terminal);
+        match (self.unlocated.clone().or(failure), terminal) {
+            (Some(message), _) => Ending::Failed(message),
+            (None, true) => Ending::Terminal,
+            (None, false) => Ending::Reached,
+        }
+    }
+
     /// The zeros of event `i` on the last step `[ta, tb]` of `stepper`, where it changed from
     /// `g0` to `g1` (`tb` itself when `g1 = 0`).
-    fn locate(&mut self, i: usize, g1: f64, stepper: &dyn Stepper<N>) -> Result<f64, Halt> {
+    fn locate(
+        &mut self,
+        i: usize,
+        g1: f64,
+        stepper: &dyn Stepper<N>,
+    ) -> Result<Result<f64, String>, PyErr> {
         let (ta, tb) = (stepper.t_prev(), stepper.t());
         if g1 == 0.0 {
-            return Ok(tb);
+            return Ok(Ok(tb));
         }
         let mut failure = None;
         let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
@@ -155,19 +191,20 @@ impl<const N: usize> Events<'_, N> {
             EVENT_ITERATIONS,
         );
         if let Some(e) = failure {
-            return Err(Halt::Python(e));
+            return Err(e);
         }
-        located.ok_or_else(|| {
-            Halt::Failed(format!(
+        Ok(located.ok_or_else(|| {
+            format!(
                 "event {i} could not be located in [{ta}, {tb}] (its function is not finite \
                  there)"
-            ))
-        })
+            )
+        }))
     }
 
     /// The events on the last step of `stepper`, which ends at `(t, y)` after projection
-    /// (`raw`: the step end before it), in the order of time; the terminal one, if any, with
-    /// its (projected) state.
+    /// (`raw`: the step end before it), in the order of time: the run stops at the terminal
+    /// one, if any, with its (projected) state, or after the step if an event could not be
+    /// located.
     fn on_step(
         &mut self,
         stepper: &dyn Stepper<N>,
@@ -175,19 +212,25 @@ impl<const N: usize> Events<'_, N> {
         y: &[f64; N],
         raw: &[f64; N],
         project: &dyn Fn([f64; N]) -> [f64; N],
-    ) -> Result<Option<(f64, [f64; N])>, Halt> {
+    ) -> Result<Next<N>, PyErr> {
         let ta = stepper.t_prev();
         let dir = if t >= ta { 1.0 } else { -1.0 };
         let mut found: Vec<(f64, usize)> = vec![];
         for i in 0..self.g_prev.len() {
-            let g1 = (self.hooks.event)(i, t, raw).map_err(Halt::Python)?;
+            let g1 = (self.hooks.event)(i, t, raw)?;
             if crosses(self.g_prev[i], g1, self.hooks.rules[i].direction) {
-                found.push((self.locate(i, g1, stepper)?, i));
+                match self.locate(i, g1, stepper)? {
+                    Ok(te) => found.push((te, i)),
+                    Err(message) => {
+                        self.unlocated = Some(message);
+                        return Ok(Next::Stop);
+                    }
+                }
             }
             self.g_prev[i] = if raw == y {
                 g1
             } else {
-                (self.hooks.event)(i, t, y).map_err(Halt::Python)?
+                (self.hooks.event)(i, t, y)?
             };
         }
         found.sort_by(|a, b| ((a.0 - ta) * dir).total_cmp(&((b.0 - ta) * dir)));
@@ -197,10 +240,10 @@ impl<const N: usize> Events<'_, N> {
             self.y_events[i].push(ye);
             let rule = self.hooks.rules[i];
             if rule.terminal > 0 && self.t_events[i].len() >= rule.terminal {
-                return Ok(Some((te, ye)));
+                return Ok(Next::StopAt { t: te, y: ye });
             }
         }
-        Ok(None)
+        Ok(Next::Continue)
     }
 }
 
@@ -236,6 +279,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         g_prev,
         t_events: vec![vec![]; n_events],
         y_events: vec![vec![]; n_events],
+        unlocated: None,
     };
     let level = settings
         .project
@@ -245,9 +289,6 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         y
     };
     let mut dense_solution = DenseSolution::default();
-    let mut halt = None;
-    let mut terminal = false;
-    let mut steps = 0usize;
     let observed = integrate_span(
         body,
         sys,
@@ -267,7 +308,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         None,
         &mut |t, y| {
             reported.borrow_mut().push((t, *y));
-            Ok::<_, routh_core::RouthError>(())
+            Ok::<_, Halt>(())
         },
         &mut |t, y, stepper| {
             if dense {
@@ -278,38 +319,24 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             } else {
                 *y
             };
-            let (next, end) = match events.on_step(stepper, t, y, &raw, &project) {
-                Err(h) => {
-                    halt = Some(h);
-                    return Ok(Next::Stop);
-                }
-                Ok(Some((te, ye))) => {
-                    terminal = true;
-                    (Next::StopAt { t: te, y: ye }, (te, ye))
-                }
-                Ok(None) => (Next::Continue, (t, *y)),
+            let next = events
+                .on_step(stepper, t, y, &raw, &project)
+                .map_err(Halt::Python)?;
+            let end = match next {
+                Next::Stop => return Ok(next),
+                Next::StopAt { t, y } => (t, y),
+                Next::Continue => (t, *y),
             };
             if steps_output {
                 reported.borrow_mut().push(end);
             }
-            steps += 1;
-            if next == Next::Continue && steps % SIGNAL_CHECK_STEPS == 0 {
-                if let Err(e) = (events.hooks.interrupt)() {
-                    halt = Some(Halt::Python(e));
-                    return Ok(Next::Stop);
-                }
+            if next == Next::Continue && stepper.stats().steps % SIGNAL_CHECK_STEPS == 0 {
+                (events.hooks.interrupt)().map_err(Halt::Python)?;
             }
             Ok(next)
         },
-    )
-    .map_err(crate::convert::python_error)?;
-    let ending = match (halt, observed.failure) {
-        (Some(Halt::Python(e)), _) => return Err(e),
-        (Some(Halt::Failed(m)), _) => Ending::Failed(m),
-        (None, Some(e)) => Ending::Failed(e.to_string()),
-        (None, None) if terminal => Ending::Terminal,
-        (None, None) => Ending::Reached,
-    };
+    )?;
+    let ending = events.ending(observed.failure.map(|e| e.to_string()));
     let reported = reported.into_inner();
     let summary = observed.summary;
     Ok(Run {

@@ -1,98 +1,32 @@
 //! DOP853 in lanes: Hairer's `dop853.f` step (the stages of [`crate::integrate::tableau`],
-//! the 5th/3rd-order error estimate, the step-size controller) applied to `L` runs at once,
-//! each lane with its own time, step size, rejections and end time, refilled from a
-//! [`Queue`] as soon as its run ends.
+//! the 5th/3rd-order error estimate) applied to `L` runs at once, each lane with its own
+//! [`StepControl`] (time, step size, rejections, end time), refilled from a [`Queue`] as
+//! soon as its run ends (`Runs`).
 //!
 //! Every operation of a lane is the operation of [`crate::integrate::Dop853`] on that run,
 //! in the same order: the stages and the error norm run on [`Lanes`] (element-wise `f64`
-//! arithmetic), the controller and the compensated update run lane by lane in `f64`. A lane
-//! is bitwise the one-at-a-time integrator (see the module [`crate::batch`]).
+//! arithmetic), the step control ([`Law::Dop853`]) and the compensated update run lane by
+//! lane in `f64`, in the same code as the one-at-a-time stepper's. A lane is bitwise the
+//! one-at-a-time integrator (see the module [`crate::batch`]).
 
 use std::cell::Cell;
 
 use super::lanes::{lane_of, set_lane};
-use super::{Field, Lanes};
-use crate::integrate::compensated::compensated_add;
+use super::runs::{LaneMethod, Queue, Runs};
+use super::{Field, Job, Lanes};
 use crate::integrate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
-use crate::integrate::{hinit, IntegrateError, OdeSystem, Options, Stats, Stepper};
+use crate::integrate::{
+    rk_start, scaled_error, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper,
+};
 use crate::scalar::Scalar;
 
 /// The default number of lanes: two AVX2 registers (four SSE2 registers) of doubles, which
 /// keeps two independent chains of vector operations in flight (BENCHMARKS.md).
 pub const LANES: usize = 8;
 
-/// Hairer's constants of `dop853.f`, the values of [`crate::integrate::Dop853`]: the
-/// rounding unit of the step-too-small test.
-const UROUND: f64 = 2.3e-16;
-/// Safety factor of the step-size prediction.
-const SAFE: f64 = 0.9;
-/// Lower bound of `h_new / h`.
-const FAC1: f64 = 0.333;
-/// Upper bound of `h_new / h`.
-const FAC2: f64 = 6.0;
-/// Exponent `1/8` of the controller (no Lund stabilisation).
-const EXPO1: f64 = 1.0 / 8.0;
-
 /// The stages of a step: 0..=11, the derivative at the step end (12), the three stages of
 /// the dense output (13..=15).
 type Stages<T, const N: usize> = [[T; N]; 16];
-
-/// One run: integrate from `(t0, y0)` to `t_end`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Job<const N: usize> {
-    /// Start time.
-    pub t0: f64,
-    /// Initial state.
-    pub y0: [f64; N],
-    /// End time (before `t0` integrates backward; equal to `t0` ends at once with no step).
-    pub t_end: f64,
-}
-
-/// How a run ended: the time and state reached, the counters, and the failure if any (then
-/// `t` and `y` are the last accepted step's).
-#[derive(Debug, Clone, PartialEq)]
-pub struct LaneEnd<const N: usize> {
-    /// Time reached (`t_end` unless it failed).
-    pub t: f64,
-    /// State reached.
-    pub y: [f64; N],
-    /// Work counters, with the field evaluations of the dense output asked for by
-    /// [`Queue::step`], as [`crate::integrate::Dop853`] counts them.
-    pub stats: Stats,
-    /// Why the run stopped early, as the one-at-a-time integrator reports it.
-    pub failure: Option<IntegrateError>,
-}
-
-impl<const N: usize> LaneEnd<N> {
-    /// The end of the run in lane `l` of the states `y`, at `t` with the counters `stats`.
-    pub(super) fn of<const L: usize>(
-        t: f64,
-        y: &[Lanes<L>; N],
-        l: usize,
-        stats: Stats,
-        failure: Option<IntegrateError>,
-    ) -> Self {
-        LaneEnd {
-            t,
-            y: lane_of(y, l),
-            stats,
-            failure,
-        }
-    }
-}
-
-/// The runs of a batch and what happens to each: the batch asks for a run whenever a lane is
-/// free, shows each accepted step, and hands back the end.
-pub trait Queue<const N: usize> {
-    /// The next run, for lane `lane`; `None` when there is none left (then it is not asked
-    /// again).
-    fn next(&mut self, lane: usize) -> Option<Job<N>>;
-    /// The run in `lane` made an accepted step; `step` shows it (its time, state and dense
-    /// output, as [`crate::integrate::drive`] shows a step to its observer).
-    fn step(&mut self, lane: usize, step: &dyn Stepper<N>);
-    /// The run in `lane` ended; the lane takes the next run.
-    fn end(&mut self, lane: usize, end: LaneEnd<N>);
-}
 
 /// `y + h * sum_j A[ROW][j] * k[j]` over the listed `cols`, summed left to right (the order of
 /// [`crate::integrate::Dop853`]).
@@ -150,7 +84,7 @@ fn stages<F: Field<N>, T: Scalar, const N: usize>(
     })
 }
 
-/// The field on one lane in `f64`, as an [`OdeSystem`] (for [`hinit`]).
+/// The field on one lane in `f64`, as an [`OdeSystem`] (for the start of a run).
 struct OneLane<'f, F>(&'f F);
 
 impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
@@ -160,46 +94,22 @@ impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
     }
 }
 
-/// The bookkeeping of one lane, in `f64`.
-#[derive(Debug, Clone, Copy, Default)]
-struct Lane {
-    /// A run occupies the lane.
-    busy: bool,
-    t: f64,
-    t_prev: f64,
-    t_end: f64,
-    posneg: f64,
-    hmax: f64,
-    /// The proposed (or, after a rejection, the reduced) step size.
-    h: f64,
-    /// The size of the step being attempted (the proposal cut to land on `t_end`).
-    h_try: f64,
-    /// The attempt lands on `t_end`.
-    last: bool,
-    reject: bool,
-    stats: Stats,
-}
-
-/// The lanes' states and stages (structure of arrays) and their bookkeeping.
-struct Batch<'f, F, const N: usize, const L: usize> {
+/// DOP853 in lanes: the stages of every lane (structure of arrays); the lanes' states and
+/// step control are `Runs`'.
+struct Dop853Lanes<'f, F, const N: usize, const L: usize> {
     field: &'f F,
     opts: Options,
-    y: [Lanes<L>; N],
-    carry: [Lanes<L>; N],
     /// `f(y)`, the first stage of the next step.
     f: [Lanes<L>; N],
-    y_prev: [Lanes<L>; N],
     k: Stages<Lanes<L>, N>,
-    lanes: [Lane; L],
-    /// The queue has no run left.
-    drained: bool,
 }
 
 /// Integrates the runs of `queue` with DOP853 (`opts` as for
 /// [`crate::integrate::Dop853`]), `L` at a time in lanes; each lane's run is bitwise the
 /// one-at-a-time integration. Returns when the queue is empty and every lane has ended.
 /// Invalid options are refused before any run starts; a run that fails ends with its
-/// failure in [`LaneEnd::failure`] and does not disturb the other lanes.
+/// failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other
+/// lanes.
 pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     field: &F,
     opts: &Options,
@@ -207,168 +117,56 @@ pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
 ) -> Result<(), IntegrateError> {
     opts.validate()?;
     let zero = [Lanes::splat(0.0); N];
-    let mut batch = Batch::<F, N, L> {
+    let mut method = Dop853Lanes::<F, N, L> {
         field,
         opts: *opts,
-        y: zero,
-        carry: zero,
         f: zero,
-        y_prev: zero,
         k: [zero; 16],
-        lanes: [Lane::default(); L],
-        drained: false,
     };
-    while batch.ready(queue) {
-        batch.attempt(queue);
-    }
+    Runs::integrate(&mut method, queue);
     Ok(())
 }
 
-impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
-    /// Fills every free lane from the queue and prepares every busy lane's attempt (ending
-    /// the runs that cannot step on); `false` when no lane is busy any more.
-    fn ready<Q: Queue<N>>(&mut self, queue: &mut Q) -> bool {
-        let mut any = false;
-        for l in 0..L {
-            loop {
-                if !self.lanes[l].busy {
-                    match (!self.drained).then(|| queue.next(l)).flatten() {
-                        Some(job) => self.start(l, job, queue),
-                        None => {
-                            self.drained = true;
-                            break;
-                        }
-                    }
-                    continue;
-                }
-                match self.prepare(l) {
-                    Ok(()) => {
-                        any = true;
-                        break;
-                    }
-                    Err(e) => self.end(l, Some(e), queue),
-                }
-            }
-        }
-        any
+impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lanes<'_, F, N, L> {
+    /// As [`crate::integrate::Dop853::new`]: `f(t0, y0)` and the same initial step.
+    fn start(&mut self, l: usize, job: &Job<N>) -> Result<StepControl, (IntegrateError, Stats)> {
+        let one = OneLane(self.field);
+        let start = rk_start(&one, job.t0, job.y0, job.t_end, &self.opts, Law::Dop853, 8);
+        let start = start.map_err(|e| {
+            let stats = Stats {
+                rhs_evals: 1,
+                ..Stats::default()
+            };
+            (e, stats)
+        })?;
+        set_lane(&mut self.f, l, &start.f0);
+        Ok(start.control)
     }
 
-    /// Starts `job` in lane `l` as [`crate::integrate::Dop853::new`] does (the same checks,
-    /// `f(t0, y0)` and the same initial step); a run that cannot start, or that has nothing
-    /// to do (`t_end = t0`), ends at once.
-    fn start<Q: Queue<N>>(&mut self, l: usize, job: Job<N>, queue: &mut Q) {
-        let mut lane = Lane {
-            busy: true,
-            t: job.t0,
-            t_prev: job.t0,
-            t_end: job.t_end,
-            ..Lane::default()
-        };
-        set_lane(&mut self.y, l, &job.y0);
-        set_lane(&mut self.carry, l, &[0.0; N]);
-        let failure = [("t0", job.t0), ("t_end", job.t_end)]
-            .into_iter()
-            .find(|(_, v)| !v.is_finite())
-            .map(|(name, value)| IntegrateError::InvalidOption {
-                name,
-                value,
-                rule: "must be finite",
-            })
-            .or_else(|| {
-                job.y0
-                    .iter()
-                    .any(|v| !v.is_finite())
-                    .then_some(IntegrateError::NonFinite { t: job.t0 })
-            });
-        if let Some(e) = failure {
-            self.lanes[l] = lane;
-            return self.end(l, Some(e), queue);
+    /// The checks before an attempt and its size ([`StepControl::attempt`]).
+    fn prepare(&mut self, runs: &mut Runs<N, L>, l: usize) -> Result<(), IntegrateError> {
+        match runs.control[l].as_mut() {
+            Some(control) => control.attempt().map(|_| ()),
+            None => Ok(()),
         }
-        let f0 = self.field.eval(&job.y0);
-        lane.stats.rhs_evals = 1;
-        set_lane(&mut self.f, l, &f0);
-        if f0.iter().any(|v| !v.is_finite()) {
-            self.lanes[l] = lane;
-            return self.end(l, Some(IntegrateError::NonFinite { t: job.t0 }), queue);
-        }
-        lane.posneg = if job.t_end >= job.t0 { 1.0 } else { -1.0 };
-        lane.hmax = self.opts.h_max.unwrap_or((job.t_end - job.t0).abs());
-        let done = job.t_end == job.t0;
-        lane.h = match self.opts.h_init {
-            Some(h) => h.abs().copysign(lane.posneg),
-            None if done => 0.0,
-            None => {
-                lane.stats.rhs_evals += 1;
-                let one = OneLane(self.field);
-                hinit(
-                    &one,
-                    job.t0,
-                    &job.y0,
-                    &f0,
-                    lane.posneg,
-                    lane.hmax,
-                    &self.opts,
-                    8,
-                )
-            }
-        };
-        self.lanes[l] = lane;
-        if done {
-            self.end(l, None, queue);
-        }
-    }
-
-    /// The checks before an attempt, in the order of [`crate::integrate::Dop853::step`], and
-    /// the attempt's step size (cut to land on `t_end`).
-    fn prepare(&mut self, l: usize) -> Result<(), IntegrateError> {
-        let lane = &mut self.lanes[l];
-        let h = lane.h;
-        if !h.is_finite() {
-            return Err(IntegrateError::NonFinite { t: lane.t });
-        }
-        if lane.stats.steps + lane.stats.rejected >= self.opts.max_steps {
-            return Err(IntegrateError::TooManySteps {
-                t: lane.t,
-                max_steps: self.opts.max_steps,
-            });
-        }
-        if 0.1 * h.abs() <= lane.t.abs() * UROUND {
-            return Err(IntegrateError::StepSizeTooSmall { t: lane.t, h });
-        }
-        lane.last = (lane.t + 1.01 * h - lane.t_end) * lane.posneg > 0.0;
-        lane.h_try = if lane.last { lane.t_end - lane.t } else { h };
-        Ok(())
-    }
-
-    /// Ends the run of lane `l` and frees the lane.
-    fn end<Q: Queue<N>>(&mut self, l: usize, failure: Option<IntegrateError>, queue: &mut Q) {
-        let lane = &mut self.lanes[l];
-        lane.busy = false;
-        queue.end(l, LaneEnd::of(lane.t, &self.y, l, lane.stats, failure));
     }
 
     /// One attempted step in every busy lane: the stages and error norms on all lanes at
-    /// once, then lane by lane acceptance or rejection as in
+    /// once, then lane by lane the judgement of its step control and the update as in
     /// [`crate::integrate::Dop853::step`].
-    fn attempt<Q: Queue<N>>(&mut self, queue: &mut Q) {
-        let busy: [bool; L] = std::array::from_fn(|l| self.lanes[l].busy);
+    fn step<Q: Queue<N>>(&mut self, runs: &mut Runs<N, L>, queue: &mut Q) {
         // A free lane steps by 0 from its last state: finite numbers, ignored.
         let h = Lanes(std::array::from_fn(|l| {
-            if busy[l] {
-                self.lanes[l].h_try
-            } else {
-                0.0
-            }
+            runs.control[l].map_or(0.0, |c| c.h_try())
         }));
         self.k[0] = self.f;
-        let inc = stages(self.field, h, &self.y, &mut self.k);
+        let inc = stages(self.field, h, &runs.y, &mut self.k);
         let k = &self.k;
         let (rtol, atol) = (self.opts.rtol, self.opts.atol);
-        let mut y_new = self.y;
         let (mut err5, mut err3) = (Lanes::splat(0.0), Lanes::splat(0.0));
         for i in 0..N {
-            y_new[i] = self.y[i] + h * inc[i];
-            let sk = self.y[i].abs().max(y_new[i].abs()) * rtol + atol;
+            let y_new = runs.y[i] + h * inc[i];
+            let sk = runs.y[i].abs().max(y_new.abs()) * rtol + atol;
             let e3 = inc[i] - k[0][i] * BHH[0] - k[8][i] * BHH[8] - k[11][i] * BHH[11];
             err3 = err3 + (e3 / sk) * (e3 / sk);
             let e5 = k[0][i] * ER[0]
@@ -381,113 +179,72 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
                 + k[11][i] * ER[11];
             err5 = err5 + (e5 / sk) * (e5 / sk);
         }
-        let mut accepted = [false; L];
-        let mut y_acc = self.y;
-        for l in (0..L).filter(|&l| busy[l]) {
-            self.lanes[l].stats.rhs_evals += 11;
-            if self.control(l, err5.0[l], err3.0[l]) {
-                accepted[l] = true;
-                let mut y = lane_of(&y_new, l);
-                if self.opts.compensated {
-                    let mut carry = lane_of(&self.carry, l);
-                    y = lane_of(&self.y, l);
-                    let delta = std::array::from_fn(|i| h.0[l] * inc[i].0[l]);
-                    compensated_add(&mut y, &mut carry, &delta);
-                    set_lane(&mut self.carry, l, &carry);
-                }
-                set_lane(&mut y_acc, l, &y);
-            }
+        let accepted: [bool; L] = std::array::from_fn(|l| {
+            runs.control[l].as_mut().is_some_and(|control| {
+                control.count_evals(11);
+                control.judge(scaled_error(err5.0[l], err3.0[l], h.0[l], N))
+            })
+        });
+        let mut y_acc = runs.y;
+        for l in (0..L).filter(|&l| accepted[l]) {
+            let delta = std::array::from_fn(|i| h.0[l] * inc[i].0[l]);
+            let y = runs.add(l, &delta, self.opts.compensated);
+            set_lane(&mut y_acc, l, &y);
         }
         if !accepted.contains(&true) {
             return;
         }
         let f_new = self.field.eval(&y_acc);
         for l in (0..L).filter(|&l| accepted[l]) {
-            self.accept(l, &y_acc, &f_new, queue);
+            self.accept(runs, l, &y_acc, &f_new, queue);
         }
     }
+}
 
-    /// The controller of lane `l` given the sums of squares of the 5th- and 3rd-order error
-    /// estimates: sets the next step size and says whether the step is accepted.
-    fn control(&mut self, l: usize, err5: f64, err3: f64) -> bool {
-        let (facc1, facc2) = (1.0 / FAC1, 1.0 / FAC2);
-        let lane = &mut self.lanes[l];
-        let h = lane.h_try;
-        let mut deno = err5 + 0.01 * err3;
-        if deno <= 0.0 {
-            deno = 1.0;
-        }
-        let err = h.abs() * err5 * (1.0 / (N as f64 * deno)).sqrt();
-        let fac11 = err.powf(EXPO1);
-        let fac = facc2.max(facc1.min(fac11 / SAFE));
-        let mut h_new = h / fac;
-        if err > 1.0 {
-            lane.h = h / facc1.min(fac11 / SAFE);
-            lane.reject = true;
-            lane.stats.rejected += 1;
-            return false;
-        }
-        if !lane.last {
-            if h_new.abs() > lane.hmax {
-                h_new = lane.posneg * lane.hmax;
-            }
-            if lane.reject {
-                h_new = lane.posneg * h_new.abs().min(h.abs());
-            }
-            lane.reject = false;
-        }
-        lane.h = h_new;
-        true
-    }
-
+impl<F: Field<N>, const N: usize, const L: usize> Dop853Lanes<'_, F, N, L> {
     /// Lane `l`'s step is accepted with the new state in `y_acc` and its derivative in
-    /// `f_new`: the step is shown to the queue, and the run ends on a failure or at `t_end`.
+    /// `f_new`: the run moves to the step end ([`StepControl::advance`]), the step is shown
+    /// to the queue, and the run ends on a failure or at `t_end`.
     fn accept<Q: Queue<N>>(
         &mut self,
+        runs: &mut Runs<N, L>,
         l: usize,
         y_acc: &[Lanes<L>; N],
         f_new: &[Lanes<L>; N],
         queue: &mut Q,
     ) {
-        let lane = &mut self.lanes[l];
-        let t_new = if lane.last {
-            lane.t_end
-        } else {
-            lane.t + lane.h_try
+        let Some(control) = runs.control[l].as_mut() else {
+            return;
         };
-        lane.stats.rhs_evals += 1;
+        control.count_evals(1);
         let y = lane_of(y_acc, l);
         let f = lane_of(f_new, l);
-        if y.iter().chain(f.iter()).any(|v| !v.is_finite()) {
-            return self.end(l, Some(IntegrateError::NonFinite { t: t_new }), queue);
-        }
-        lane.stats.steps += 1;
-        lane.t_prev = lane.t;
-        lane.t = t_new;
-        let y_prev = lane_of(&self.y, l);
-        set_lane(&mut self.y_prev, l, &y_prev);
-        set_lane(&mut self.y, l, &y);
+        let last = match control.advance(y.iter().chain(f.iter()).all(|v| v.is_finite())) {
+            Ok(last) => last,
+            Err(e) => return runs.end(l, Some(e), self, queue),
+        };
+        let control = *control;
+        let y_prev = lane_of(&runs.y, l);
+        set_lane(&mut runs.y, l, &y);
         set_lane(&mut self.f, l, &f);
         set_lane(&mut self.k[12], l, &f);
-        let lane = *lane;
         let view = LaneStep {
             field: self.field,
             k: &self.k,
             lane: l,
-            t_prev: lane.t_prev,
-            t: lane.t,
-            t_end: lane.t_end,
-            h: lane.h_try,
+            control,
             y_prev,
             y,
-            stats: lane.stats,
             cont: Cell::new(None),
             dense_evals: Cell::new(0),
         };
         queue.step(l, &view);
-        self.lanes[l].stats.rhs_evals += view.dense_evals.get();
-        if lane.last {
-            self.end(l, None, queue);
+        let dense_evals = view.dense_evals.get();
+        if let Some(control) = runs.control[l].as_mut() {
+            control.count_evals(dense_evals);
+        }
+        if last {
+            runs.end(l, None, self, queue);
         }
     }
 }
@@ -499,13 +256,10 @@ struct LaneStep<'b, F, const N: usize, const L: usize> {
     field: &'b F,
     k: &'b Stages<Lanes<L>, N>,
     lane: usize,
-    t_prev: f64,
-    t: f64,
-    t_end: f64,
-    h: f64,
+    /// The lane's step control after the step.
+    control: StepControl,
     y_prev: [f64; N],
     y: [f64; N],
-    stats: Stats,
     cont: Cell<Option<[[f64; N]; 8]>>,
     dense_evals: Cell<usize>,
 }
@@ -514,7 +268,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneStep<'_, F, N, L> {
     /// Hairer's `CONT` array of the step (`CONTD8` coefficients), in the order of
     /// [`crate::integrate::Dop853`].
     fn dense_coefficients(&self) -> [[f64; N]; 8] {
-        let (h, y) = (self.h, &self.y_prev);
+        let (h, y) = (self.control.h_last(), &self.y_prev);
         let mut k: Stages<f64, N> = [[0.0; N]; 16];
         for (s, stage) in self.k.iter().enumerate().take(13) {
             k[s] = std::array::from_fn(|i| stage[i].0[self.lane]);
@@ -546,23 +300,23 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
     /// A step seen from outside cannot step on (the batch steps the lanes): does nothing
     /// and says whether the run has reached its end.
     fn step(&mut self) -> Result<bool, IntegrateError> {
-        Ok(self.t == self.t_end)
+        Ok(self.control.done())
     }
 
     fn t(&self) -> f64 {
-        self.t
+        self.control.t()
     }
 
     fn t_end(&self) -> f64 {
-        self.t_end
+        self.control.t_end()
     }
 
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.control.t_prev()
     }
 
     fn h(&self) -> f64 {
-        self.h
+        self.control.h_last()
     }
 
     fn y(&self) -> &[f64; N] {
@@ -580,7 +334,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
                 c
             }
         };
-        dense_at(&cont, (t - self.t_prev) / self.h)
+        dense_at(&cont, (t - self.control.t_prev()) / self.control.h_last())
     }
 
     /// Replaces the state this view shows (the lane itself is not changed: a batch does not
@@ -590,7 +344,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
     }
 
     fn stats(&self) -> Stats {
-        let mut stats = self.stats;
+        let mut stats = self.control.stats();
         stats.rhs_evals += self.dense_evals.get();
         stats
     }

@@ -4,74 +4,11 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
+use super::control::{fixed_step_options, Law, StepControl};
 use super::tableau::{dense_at, dense_rows, A, B, BHH, C, ER};
 use super::{
     check_start, drive, Control, Drive, IntegrateError, OdeSystem, Options, Stats, Stepper,
 };
-
-/// Rounding unit used in the step-size-too-small test (Hairer's `UROUND`).
-const UROUND: f64 = 2.3e-16;
-
-/// The checks before an attempted step of the adaptive Runge–Kutta loops (DOP853, Vern9), as
-/// in Hairer's `dop853.f`: a non-finite `h`, the step budget `max_steps` (accepted and
-/// rejected), a step below the round-off of `t`; then `h` shortened to land on `t_end` when
-/// the step would pass or nearly reach it. Returns the step to attempt and whether it is the
-/// last.
-pub(crate) fn next_attempt(
-    t: f64,
-    h: f64,
-    t_end: f64,
-    posneg: f64,
-    stats: &Stats,
-    max_steps: usize,
-) -> Result<(f64, bool), IntegrateError> {
-    if !h.is_finite() {
-        return Err(IntegrateError::NonFinite { t });
-    }
-    if stats.steps + stats.rejected >= max_steps {
-        return Err(IntegrateError::TooManySteps { t, max_steps });
-    }
-    if 0.1 * h.abs() <= t.abs() * UROUND {
-        return Err(IntegrateError::StepSizeTooSmall { t, h });
-    }
-    if (t + 1.01 * h - t_end) * posneg > 0.0 {
-        Ok((t_end - t, true))
-    } else {
-        Ok((h, false))
-    }
-}
-
-/// The options of `steps` equal steps from `t0` to `t_end` without error control: the step
-/// as the initial step, a budget of `steps` steps. `steps = 0` is refused
-/// ([`IntegrateError::InvalidOption`]).
-pub(crate) fn fixed_step_options(
-    t0: f64,
-    t_end: f64,
-    steps: usize,
-) -> Result<Options, IntegrateError> {
-    if steps == 0 {
-        return Err(IntegrateError::InvalidOption {
-            name: "steps",
-            value: 0.0,
-            rule: "must be > 0",
-        });
-    }
-    let h = (t_end - t0) / steps as f64;
-    Ok(Options {
-        h_init: (h != 0.0).then_some(h),
-        max_steps: steps,
-        ..Options::default()
-    })
-}
-
-/// Safety factor of the step-size prediction.
-const SAFE: f64 = 0.9;
-/// Lower bound `FAC1` of `h_new / h`.
-const FAC1: f64 = 0.333;
-/// Upper bound `FAC2` of `h_new / h`.
-const FAC2: f64 = 6.0;
-/// Exponent `1/8 - 0.2 beta` of the controller with Lund stabilisation `beta = 0`.
-const EXPO1: f64 = 1.0 / 8.0;
 
 /// Stage buffer: stages 0..=12 of a step and the three dense-output stages.
 type Stages<const N: usize> = [[f64; N]; 16];
@@ -191,13 +128,97 @@ pub fn hinit<S: OdeSystem<N>, const N: usize>(
     (100.0 * h.abs()).min(h1).min(hmax).copysign(posneg)
 }
 
+/// A run of a Runge–Kutta pair at its start ([`RungeKutta::from_start`]): the arguments
+/// checked, `f(t0, y0)` evaluated and the run's [`StepControl`] made.
+pub struct RkStart<'a, S, const N: usize> {
+    pub(crate) sys: &'a S,
+    pub(crate) y0: [f64; N],
+    pub(crate) f0: [f64; N],
+    pub(crate) control: StepControl,
+    pub(crate) opts: Options,
+}
+
+/// The start of a run of a Runge–Kutta pair of `order` under `law` from `(t0, y0)` to
+/// `t_end`, for the steppers and the lanes: the checks of the options and of the arguments,
+/// `f(t0, y0)` (refused when not finite: [`IntegrateError::NonFinite`]) and the run's
+/// [`StepControl`], its first step `opts.h_init` or Hairer's `HINIT` for a method of order
+/// `order` (the evaluations counted: one, two with `HINIT`).
+pub(crate) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
+    sys: &'a S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    opts: &Options,
+    law: Law,
+    order: i32,
+) -> Result<RkStart<'a, S, N>, IntegrateError> {
+    opts.validate()?;
+    check_start(t0, &y0, t_end)?;
+    let f0 = sys.rhs(t0, &y0);
+    if f0.iter().any(|v| !v.is_finite()) {
+        return Err(IntegrateError::NonFinite { t: t0 });
+    }
+    let mut guessed = false;
+    let mut control = StepControl::new(law, t0, t_end, opts, |posneg, hmax| {
+        guessed = true;
+        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, order)
+    });
+    control.count_evals(1 + usize::from(guessed));
+    Ok(RkStart {
+        sys,
+        y0,
+        f0,
+        control,
+        opts: *opts,
+    })
+}
+
+/// The adaptive Runge–Kutta pairs ([`Dop853`], [`Vern9`](super::Vern9)): built from their
+/// start under a step-size [`Law`], and so with equal steps by the same code.
+pub trait RungeKutta<'a, S: OdeSystem<N> + 'a, const N: usize>: Sized {
+    /// The order of Hairer's initial step guess (`HINIT`) for this pair.
+    const ORDER: i32;
+
+    /// The stepper from the start of its run.
+    fn from_start(start: RkStart<'a, S, N>) -> Self;
+
+    /// `steps` equal steps of `sys` from `(t0, y0)` to `t_end`, each accepted without error
+    /// control ([`Law::Fixed`]), the last landing on `t_end`: the method's own order, for
+    /// convergence studies. The dense output and the driver work as for the adaptive steps.
+    /// Fails as the pair's `new` does, and with [`IntegrateError::InvalidOption`] for
+    /// `steps = 0`.
+    fn fixed_steps(
+        sys: &'a S,
+        t0: f64,
+        y0: [f64; N],
+        t_end: f64,
+        steps: usize,
+    ) -> Result<Self, IntegrateError> {
+        let opts = fixed_step_options(t0, t_end, steps)?;
+        rk_start(sys, t0, y0, t_end, &opts, Law::Fixed, Self::ORDER).map(Self::from_start)
+    }
+}
+
+/// DOP853's scaled error of an attempt of size `h` in dimension `n` from the sums of squares
+/// of its scaled 5th- and 3rd-order error estimates: `|h| err5 / sqrt(n (err5 + 0.01 err3))`
+/// (Hairer's `dop853.f`; the denominator 1 when it vanishes).
+#[inline(always)]
+pub(crate) fn scaled_error(err5: f64, err3: f64, h: f64, n: usize) -> f64 {
+    let mut deno = err5 + 0.01 * err3;
+    if deno <= 0.0 {
+        deno = 1.0;
+    }
+    h.abs() * err5 * (1.0 / (n as f64 * deno)).sqrt()
+}
+
 /// Adaptive explicit Runge–Kutta 8(5,3) of Dormand & Prince (DOP853), with the
 /// 7th-order dense output.
 ///
 /// A faithful port of the core of Hairer's `dop853.f` (scalar tolerances):
 /// the same stages, the combined 5th/3rd-order error estimate
 /// `err = err5^2 / sqrt(err5^2 + 0.01 err3^2)`, the same controller
-/// (`fac1 = 0.333`, `fac2 = 6`, safety 0.9, `beta = 0`) and the same initial
+/// (`fac1 = 0.333`, `fac2 = 6`, safety 0.9, `beta = 0`: [`Law::Dop853`] of the step control
+/// [`StepControl`], shared with the batched lanes) and the same initial
 /// step guess, so step counts agree with the published code. The stiffness
 /// detection of `dop853.f` is not implemented. One departure: the update
 /// `y + h sum b_i k_i` is summed with compensation ([`compensated_add`]), which
@@ -205,37 +226,25 @@ pub fn hinit<S: OdeSystem<N>, const N: usize>(
 /// struct; a step performs no heap allocation.
 pub struct Dop853<'a, S, const N: usize> {
     sys: &'a S,
-    t: f64,
+    /// Time, step sizes, acceptance, end and counters of the run.
+    ctl: StepControl,
     y: [f64; N],
     /// Rounding residue of the compensated update (zero after [`set_state`](Self::set_state)).
     carry: [f64; N],
     /// `f(t, y)` for the current (possibly projected) state.
     f: [f64; N],
-    t_prev: f64,
     y_prev: [f64; N],
     /// Step end as computed by the last accepted step, before any `set_state`.
     y_raw: [f64; N],
     /// Stages of the last accepted step (stage 12 = `f(t, y_raw)`).
     k: Stages<N>,
-    /// Size of the last accepted step.
-    h_last: f64,
-    /// Proposed size of the next step.
-    h: f64,
-    t_end: f64,
-    posneg: f64,
-    hmax: f64,
     rtol: f64,
     atol: f64,
-    max_steps: usize,
     compensated: bool,
-    /// Every step accepted with the same size ([`Dop853::fixed_steps`]): no error control.
-    fixed: bool,
-    facold: f64,
-    reject: bool,
-    done: bool,
     /// Dense-output coefficients of the last accepted step, built on demand.
     cont: Cell<Option<[[f64; N]; 8]>>,
-    stats: Cell<Stats>,
+    /// Field evaluations of the dense output (counted beside [`StepControl::stats`]).
+    dense_evals: Cell<usize>,
 }
 
 impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
@@ -253,79 +262,41 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
         t_end: f64,
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
-        opts.validate()?;
-        check_start(t0, &y0, t_end)?;
-        let f0 = sys.rhs(t0, &y0);
-        let mut stats = Stats {
-            rhs_evals: 1,
-            ..Stats::default()
-        };
-        if f0.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrateError::NonFinite { t: t0 });
-        }
-        let posneg = if t_end >= t0 { 1.0 } else { -1.0 };
-        let hmax = opts.h_max.unwrap_or((t_end - t0).abs());
-        let done = t_end == t0;
-        let h = match opts.h_init {
-            Some(h) => h.abs().copysign(posneg),
-            None if done => 0.0,
-            None => {
-                stats.rhs_evals += 1;
-                hinit(sys, t0, &y0, &f0, posneg, hmax, opts, 8)
-            }
-        };
+        rk_start(sys, t0, y0, t_end, opts, Law::Dop853, Self::ORDER).map(Self::from_start)
+    }
+}
+
+impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Dop853<'a, S, N> {
+    const ORDER: i32 = 8;
+
+    fn from_start(start: RkStart<'a, S, N>) -> Self {
+        let (y, opts) = (start.y0, start.opts);
         let mut k = [[0.0; N]; 16];
-        k[12] = f0;
-        Ok(Dop853 {
-            sys,
-            t: t0,
-            y: y0,
-            carry: [0.0; N],
-            f: f0,
-            t_prev: t0,
-            y_prev: y0,
-            y_raw: y0,
+        k[12] = start.f0;
+        Dop853 {
+            sys: start.sys,
+            ctl: start.control,
+            f: start.f0,
             k,
-            h_last: 0.0,
-            h,
-            t_end,
-            posneg,
-            hmax,
+            y,
+            y_prev: y,
+            y_raw: y,
+            carry: [0.0; N],
             rtol: opts.rtol,
             atol: opts.atol,
-            max_steps: opts.max_steps,
             compensated: opts.compensated,
-            fixed: false,
-            facold: 1e-4,
-            reject: false,
-            done,
             cont: Cell::new(None),
-            stats: Cell::new(stats),
-        })
+            dense_evals: Cell::new(0),
+        }
     }
+}
 
-    /// `steps` equal steps of `sys` from `(t0, y0)` to `t_end`, each accepted without error
-    /// control, the last landing on `t_end`: the method's own order 8, for convergence
-    /// studies. The dense output and the driver work as for the adaptive steps.
-    ///
-    /// Fails as [`Dop853::new`] does, and with [`IntegrateError::InvalidOption`] for
-    /// `steps = 0`.
-    pub fn fixed_steps(
-        sys: &'a S,
-        t0: f64,
-        y0: [f64; N],
-        t_end: f64,
-        steps: usize,
-    ) -> Result<Self, IntegrateError> {
-        let mut solver = Self::new(sys, t0, y0, t_end, &fixed_step_options(t0, t_end, steps)?)?;
-        solver.fixed = true;
-        Ok(solver)
-    }
-
+impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
     /// Performs one accepted step (rejected attempts are repeated internally)
     /// and returns `Ok(true)` once `t_end` is reached; the last step lands
     /// exactly on `t_end`. After that, further calls do nothing and return
-    /// `Ok(true)`.
+    /// `Ok(true)`. The attempts, their acceptance and the failures are those of the
+    /// [`StepControl`].
     ///
     /// Errors: [`IntegrateError::StepSizeTooSmall`] when `0.1 |h| <= |t| * 2.3e-16`,
     /// [`IntegrateError::TooManySteps`] when `max_steps` attempts were made,
@@ -333,33 +304,23 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
     /// derivative is not finite. After a failed call only [`t`](Self::t),
     /// [`y`](Self::y) and [`stats`](Self::stats) remain meaningful.
     pub fn step(&mut self) -> Result<bool, IntegrateError> {
-        if self.done {
+        if self.ctl.done() {
             return Ok(true);
         }
-        let mut stats = self.stats.get();
-        let result = self.attempt_until_accepted(&mut stats);
-        self.stats.set(stats);
-        result
-    }
-
-    fn attempt_until_accepted(&mut self, stats: &mut Stats) -> Result<bool, IntegrateError> {
-        let (facc1, facc2) = (1.0 / FAC1, 1.0 / FAC2);
-        let mut h = self.h;
         loop {
-            let (h_try, last) =
-                next_attempt(self.t, h, self.t_end, self.posneg, stats, self.max_steps)?;
-            h = h_try;
+            let h = self.ctl.attempt()?;
+            let t = self.ctl.t();
             self.k[0] = self.f;
-            let inc = stages(self.sys, self.t, h, &self.y, &mut self.k);
-            stats.rhs_evals += 11;
+            let inc = stages(self.sys, t, h, &self.y, &mut self.k);
+            self.ctl.count_evals(11);
             let mut y_new = [0.0; N];
-            let (mut err, mut err2) = (0.0, 0.0);
+            let (mut err5, mut err3) = (0.0, 0.0);
             let k = &self.k;
             for i in 0..N {
                 y_new[i] = self.y[i] + h * inc[i];
                 let sk = self.atol + self.rtol * self.y[i].abs().max(y_new[i].abs());
                 let e3 = inc[i] - BHH[0] * k[0][i] - BHH[8] * k[8][i] - BHH[11] * k[11][i];
-                err2 += (e3 / sk) * (e3 / sk);
+                err3 += (e3 / sk) * (e3 / sk);
                 let e5 = ER[0] * k[0][i]
                     + ER[5] * k[5][i]
                     + ER[6] * k[6][i]
@@ -368,65 +329,36 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
                     + ER[9] * k[9][i]
                     + ER[10] * k[10][i]
                     + ER[11] * k[11][i];
-                err += (e5 / sk) * (e5 / sk);
+                err5 += (e5 / sk) * (e5 / sk);
             }
-            let mut deno = err + 0.01 * err2;
-            if deno <= 0.0 {
-                deno = 1.0;
+            if !self.ctl.judge(scaled_error(err5, err3, h, N)) {
+                continue;
             }
-            err = h.abs() * err * (1.0 / (N as f64 * deno)).sqrt();
-            let fac11 = err.powf(EXPO1);
-            let fac = facc2.max(facc1.min(fac11 / SAFE));
-            let mut h_new = if self.fixed { h } else { h / fac };
-            if err <= 1.0 || self.fixed {
-                let t_new = if last { self.t_end } else { self.t + h };
-                let mut carry = self.carry;
-                if self.compensated {
-                    y_new = self.y;
-                    compensated_add(&mut y_new, &mut carry, &std::array::from_fn(|i| h * inc[i]));
-                }
-                let f_new = self.sys.rhs(t_new, &y_new);
-                stats.rhs_evals += 1;
-                if y_new.iter().chain(f_new.iter()).any(|v| !v.is_finite()) {
-                    return Err(IntegrateError::NonFinite { t: t_new });
-                }
-                stats.steps += 1;
-                self.facold = err.max(1e-4);
-                self.k[12] = f_new;
-                self.t_prev = self.t;
-                self.y_prev = self.y;
-                self.t = t_new;
-                self.y = y_new;
-                self.carry = carry;
-                self.y_raw = y_new;
-                self.f = f_new;
-                self.h_last = h;
-                self.cont.set(None);
-                if last {
-                    self.h = h_new;
-                    self.done = true;
-                    return Ok(true);
-                }
-                if h_new.abs() > self.hmax {
-                    h_new = self.posneg * self.hmax;
-                }
-                if self.reject {
-                    h_new = self.posneg * h_new.abs().min(h.abs());
-                }
-                self.reject = false;
-                self.h = h_new;
-                return Ok(false);
+            let t_new = self.ctl.t_next();
+            let mut carry = self.carry;
+            if self.compensated {
+                y_new = self.y;
+                compensated_add(&mut y_new, &mut carry, &std::array::from_fn(|i| h * inc[i]));
             }
-            h /= facc1.min(fac11 / SAFE);
-            self.reject = true;
-            stats.rejected += 1;
+            let f_new = self.sys.rhs(t_new, &y_new);
+            self.ctl.count_evals(1);
+            let finite = y_new.iter().chain(f_new.iter()).all(|v| v.is_finite());
+            let last = self.ctl.advance(finite)?;
+            self.k[12] = f_new;
+            self.y_prev = self.y;
+            self.y = y_new;
+            self.carry = carry;
+            self.y_raw = y_new;
+            self.f = f_new;
+            self.cont.set(None);
+            return Ok(last);
         }
     }
 
     /// Hairer's `CONT` array of the last accepted step (`CONTD8` coefficients).
     fn dense_coefficients(&self) -> [[f64; N]; 8] {
-        let h = self.h_last;
-        let (t, y) = (self.t_prev, &self.y_prev);
+        let h = self.ctl.h_last();
+        let (t, y) = (self.ctl.t_prev(), &self.y_prev);
         let mut k = self.k;
         k[13] = self.sys.rhs(
             t + C[13] * h,
@@ -440,9 +372,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
             t + C[15] * h,
             &combine::<15, 8, N>(y, h, &k, [0, 5, 6, 7, 8, 12, 13, 14]),
         );
-        let mut stats = self.stats.get();
-        stats.rhs_evals += 3;
-        self.stats.set(stats);
+        self.dense_evals.set(self.dense_evals.get() + 3);
         dense_rows(y, &self.y_raw, h, &k)
     }
 }
@@ -454,22 +384,20 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
 
     /// Current time.
     fn t(&self) -> f64 {
-        self.t
+        self.ctl.t()
     }
 
     fn t_end(&self) -> f64 {
-        self.t_end
+        self.ctl.t_end()
     }
 
     /// Start time of the last accepted step (`t0` before the first step).
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.ctl.t_prev()
     }
 
-    // The size of the last accepted step is `h_last`; `h` is the proposal for the next one.
-    #[allow(clippy::misnamed_getters)]
     fn h(&self) -> f64 {
-        self.h_last
+        self.ctl.h_last()
     }
 
     /// Current state.
@@ -486,7 +414,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
     /// three right-hand-side calls (Hairer's stages 14–16); later calls on the
     /// same step are free. Before the first step it returns the initial state.
     fn dense(&self, t: f64) -> [f64; N] {
-        if self.stats.get().steps == 0 {
+        if self.ctl.stats().steps == 0 {
             return self.y;
         }
         let cont = match self.cont.get() {
@@ -497,7 +425,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
                 c
             }
         };
-        dense_at(&cont, (t - self.t_prev) / self.h_last)
+        dense_at(&cont, (t - self.ctl.t_prev()) / self.ctl.h_last())
     }
 
     /// Replaces the current state after a step (e.g. a projection onto
@@ -507,20 +435,20 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.carry = [0.0; N];
-        self.f = self.sys.rhs(self.t, &self.y);
-        let mut stats = self.stats.get();
-        stats.rhs_evals += 1;
-        self.stats.set(stats);
+        self.f = self.sys.rhs(self.ctl.t(), &self.y);
+        self.ctl.count_evals(1);
     }
 
     /// Work counters so far.
     fn stats(&self) -> Stats {
-        self.stats.get()
+        let mut stats = self.ctl.stats();
+        stats.rhs_evals += self.dense_evals.get();
+        stats
     }
 }
 
 /// Integrates `sys` from `(t0, y0)` to `t_end` with `n` equal DOP853 steps
-/// without error control ([`Dop853::fixed_steps`] through the one driver [`drive`]), for
+/// without error control ([`RungeKutta::fixed_steps`] through the one driver [`drive`]), for
 /// convergence-order studies; returns `y(t_end)`.
 pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     sys: &S,
@@ -529,7 +457,7 @@ pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     t_end: f64,
     n: usize,
 ) -> Result<[f64; N], IntegrateError> {
-    let mut solver = Dop853::fixed_steps(sys, t0, y0, t_end, n)?;
+    let mut solver: Dop853<S, N> = RungeKutta::fixed_steps(sys, t0, y0, t_end, n)?;
     let outcome = drive::<_, IntegrateError, N>(
         &mut solver,
         &Drive::default(),

@@ -10,6 +10,10 @@
 //!   last step, the state, the counters); [`drive`]: the one step loop, with dense
 //!   samples, projection onto invariant manifolds, event location and a per-step
 //!   observer that can stop the run; [`solve`] and [`solve_dense`] are two uses of it;
+//! * [`StepControl`]: the step control of one run (acceptance, next step size by the
+//!   method's [`Law`], the last step cut to land on `t_end`, the refusals, the counters),
+//!   held by every stepper and by every lane of the batched integrators ([`crate::batch`]):
+//!   the one place where steps are decided;
 //! * [`Vern9`]: Verner's 9(8) pair with its 9th-order interpolant;
 //! * [`Taylor`]: the Taylor-series method of adaptive order and step (Jorba–Zou) on the field
 //!   recorded into an expression tape ([`OdeSystem::record`]);
@@ -19,6 +23,7 @@
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
 pub mod compensated;
+pub mod control;
 mod dop853;
 mod event;
 mod rk4;
@@ -30,7 +35,9 @@ pub mod vern9_tableau;
 use std::fmt;
 use std::str::FromStr;
 
-pub use dop853::{fixed_step_solve, hinit, Dop853};
+pub use control::{Law, StepControl};
+pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
+pub(crate) use dop853::{rk_start, scaled_error};
 pub use event::brent;
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 pub use taylor::Taylor;

@@ -4,27 +4,21 @@
 //!
 //! Sixteen stages per step (the 16th only for the error estimate), local extrapolation
 //! (the step advances with the 9th-order solution), an error estimate from the embedded
-//! 8th-order solution, the step-size controller and initial step of [`Dop853`](super::Dop853)
-//! with exponent 1/9, and compensated summation of the update
+//! 8th-order solution, the step control of every method ([`StepControl`], with the
+//! step-size law [`Law::Vern9`]: exponent 1/9) and the initial step of
+//! [`Dop853`](super::Dop853), and compensated summation of the update
 //! ([`compensated_add`]). The interpolant costs nine more right-hand-side calls, made only
 //! when a step's dense output is first asked for. A [`Stepper`]: it runs in the one driver
-//! [`drive`](super::drive); [`Vern9::fixed_steps`] takes equal steps without error control
+//! [`drive`](super::drive); [`RungeKutta::fixed_steps`] takes equal steps without error control
 //! (for convergence-order studies) through the same step code.
 
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::dop853::{fixed_step_options, hinit, next_attempt};
+use super::control::{Law, StepControl};
+use super::dop853::{rk_start, RkStart, RungeKutta};
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
-
-/// Safety factor of the step-size prediction.
-const SAFE: f64 = 0.9;
-/// Bounds of `h_new / h`.
-const FAC_MIN: f64 = 0.333;
-const FAC_MAX: f64 = 6.0;
-/// Exponent `1 / (q + 1)` of the controller, `q = 8` the order of the embedded solution.
-const EXPO: f64 = 1.0 / 9.0;
+use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
 
 /// Stage derivatives `k_0 .. k_25`.
 type Stages<const N: usize> = [[f64; N]; STAGES];
@@ -78,32 +72,23 @@ fn stages<S: OdeSystem<N>, const N: usize>(
 /// Adaptive Verner 9(8) with its 9th-order interpolant, compensated summation of the update.
 pub struct Vern9<'a, S, const N: usize> {
     sys: &'a S,
-    t: f64,
+    /// Time, step sizes, acceptance, end and counters of the run.
+    ctl: StepControl,
     y: [f64; N],
     /// Rounding residue of the compensated update (zero after [`set_state`](Self::set_state)).
     carry: [f64; N],
     /// `f(t, y)` for the current (possibly projected) state: the first stage of the next step.
     f: [f64; N],
-    t_prev: f64,
     y_prev: [f64; N],
     /// Stages of the last accepted step (`k[16] = f(t, y)` at its end before any projection).
     k: Stages<N>,
-    h_last: f64,
-    h: f64,
-    t_end: f64,
-    posneg: f64,
-    hmax: f64,
     rtol: f64,
     atol: f64,
-    max_steps: usize,
     compensated: bool,
-    reject: bool,
-    done: bool,
-    /// Equal steps of size `h` without error control ([`Vern9::fixed_steps`]).
-    fixed: bool,
     /// Stages 17..=25 of the last accepted step, computed on the first dense request.
     extra: Cell<Option<[[f64; N]; STAGES - 17]>>,
-    stats: Cell<Stats>,
+    /// Field evaluations of the interpolant (counted beside [`StepControl::stats`]).
+    dense_evals: Cell<usize>,
 }
 
 impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
@@ -117,99 +102,51 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
         t_end: f64,
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
-        opts.validate()?;
-        check_start(t0, &y0, t_end)?;
-        let f0 = sys.rhs(t0, &y0);
-        if f0.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrateError::NonFinite { t: t0 });
-        }
-        let mut stats = Stats {
-            rhs_evals: 1,
-            ..Stats::default()
-        };
-        let posneg = if t_end >= t0 { 1.0 } else { -1.0 };
-        let hmax = opts.h_max.unwrap_or((t_end - t0).abs());
-        let done = t_end == t0;
-        let h = match opts.h_init {
-            Some(h) => h.abs().copysign(posneg),
-            None if done => 0.0,
-            None => {
-                stats.rhs_evals += 1;
-                hinit(sys, t0, &y0, &f0, posneg, hmax, opts, 9)
-            }
-        };
+        rk_start(sys, t0, y0, t_end, opts, Law::Vern9, Self::ORDER).map(Self::from_start)
+    }
+}
+
+impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Vern9<'a, S, N> {
+    const ORDER: i32 = 9;
+
+    fn from_start(start: RkStart<'a, S, N>) -> Self {
         let mut k = [[0.0; N]; STAGES];
-        k[16] = f0;
-        Ok(Vern9 {
-            sys,
-            t: t0,
-            y: y0,
-            carry: [0.0; N],
-            f: f0,
-            t_prev: t0,
-            y_prev: y0,
+        k[16] = start.f0;
+        Vern9 {
             k,
-            h_last: 0.0,
-            h,
-            t_end,
-            posneg,
-            hmax,
-            rtol: opts.rtol,
-            atol: opts.atol,
-            max_steps: opts.max_steps,
-            compensated: opts.compensated,
-            reject: false,
-            done,
-            fixed: false,
+            y: start.y0,
+            y_prev: start.y0,
+            f: start.f0,
+            carry: [0.0; N],
+            sys: start.sys,
+            ctl: start.control,
+            rtol: start.opts.rtol,
+            atol: start.opts.atol,
+            compensated: start.opts.compensated,
             extra: Cell::new(None),
-            stats: Cell::new(stats),
-        })
+            dense_evals: Cell::new(0),
+        }
     }
+}
 
-    /// Prepares `steps` equal steps from `(t0, y0)` to `t_end` without error control (for
-    /// convergence-order studies); the stages of the error estimate are skipped.
-    pub fn fixed_steps(
-        sys: &'a S,
-        t0: f64,
-        y0: [f64; N],
-        t_end: f64,
-        steps: usize,
-    ) -> Result<Self, IntegrateError> {
-        let opts = fixed_step_options(t0, t_end, steps)?;
-        let mut solver = Self::new(sys, t0, y0, t_end, &opts)?;
-        solver.fixed = true;
-        Ok(solver)
-    }
-
+impl<S: OdeSystem<N>, const N: usize> Vern9<'_, S, N> {
     fn advance(&mut self) -> Result<bool, IntegrateError> {
-        if self.done {
+        if self.ctl.done() {
             return Ok(true);
         }
-        let mut stats = self.stats.get();
-        let result = self.attempt_until_accepted(&mut stats);
-        self.stats.set(stats);
-        result
-    }
-
-    fn attempt_until_accepted(&mut self, stats: &mut Stats) -> Result<bool, IntegrateError> {
-        let mut h = self.h;
+        let fixed = self.ctl.law() == Law::Fixed;
         loop {
-            let (h_try, last) =
-                next_attempt(self.t, h, self.t_end, self.posneg, stats, self.max_steps)?;
-            h = h_try;
+            let h = self.ctl.attempt()?;
+            let t = self.ctl.t();
             let k = &mut self.k;
             k[0] = self.f;
             // The last stage only serves the error estimate (B[15] = 0).
-            let used = if self.fixed {
-                STEP_STAGES - 1
-            } else {
-                STEP_STAGES
-            };
-            stages(self.sys, self.t, h, &self.y, k, 1..used);
-            stats.rhs_evals += used - 1;
+            let used = if fixed { STEP_STAGES - 1 } else { STEP_STAGES };
+            stages(self.sys, t, h, &self.y, k, 1..used);
+            self.ctl.count_evals(used - 1);
             let inc = weighted(&B, k);
-            let (err, fac) = if self.fixed {
-                (0.0, 1.0)
+            let err = if fixed {
+                0.0
             } else {
                 let est = weighted(&E, k);
                 let mut err = 0.0;
@@ -218,53 +155,31 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
                     let sk = self.atol + self.rtol * self.y[i].abs().max(y_new.abs());
                     err += (est[i] / sk) * (est[i] / sk);
                 }
-                err = h.abs() * (err / N as f64).sqrt();
-                (err, (SAFE * err.powf(-EXPO)).clamp(FAC_MIN, FAC_MAX))
+                h.abs() * (err / N as f64).sqrt()
             };
-            if err <= 1.0 {
-                let t_new = if last { self.t_end } else { self.t + h };
-                let mut y_new = self.y;
-                let mut carry = self.carry;
-                let delta: [f64; N] = std::array::from_fn(|i| h * inc[i]);
-                if self.compensated {
-                    compensated_add(&mut y_new, &mut carry, &delta);
-                } else {
-                    (0..N).for_each(|i| y_new[i] += delta[i]);
-                }
-                let f_new = self.sys.rhs(t_new, &y_new);
-                stats.rhs_evals += 1;
-                if y_new.iter().chain(f_new.iter()).any(|v| !v.is_finite()) {
-                    return Err(IntegrateError::NonFinite { t: t_new });
-                }
-                stats.steps += 1;
-                self.k[16] = f_new;
-                self.f = f_new;
-                self.t_prev = self.t;
-                self.y_prev = self.y;
-                self.t = t_new;
-                self.y = y_new;
-                self.carry = carry;
-                self.h_last = h;
-                self.extra.set(None);
-                let mut h_new = h * fac;
-                if last {
-                    self.h = h_new;
-                    self.done = true;
-                    return Ok(true);
-                }
-                if h_new.abs() > self.hmax {
-                    h_new = self.posneg * self.hmax;
-                }
-                if self.reject {
-                    h_new = self.posneg * h_new.abs().min(h.abs());
-                }
-                self.reject = false;
-                self.h = h_new;
-                return Ok(false);
+            if !self.ctl.judge(err) {
+                continue;
             }
-            h *= fac.min(1.0);
-            self.reject = true;
-            stats.rejected += 1;
+            let t_new = self.ctl.t_next();
+            let mut y_new = self.y;
+            let mut carry = self.carry;
+            let delta: [f64; N] = std::array::from_fn(|i| h * inc[i]);
+            if self.compensated {
+                compensated_add(&mut y_new, &mut carry, &delta);
+            } else {
+                (0..N).for_each(|i| y_new[i] += delta[i]);
+            }
+            let f_new = self.sys.rhs(t_new, &y_new);
+            self.ctl.count_evals(1);
+            let finite = y_new.iter().chain(f_new.iter()).all(|v| v.is_finite());
+            let last = self.ctl.advance(finite)?;
+            self.k[16] = f_new;
+            self.f = f_new;
+            self.y_prev = self.y;
+            self.y = y_new;
+            self.carry = carry;
+            self.extra.set(None);
+            return Ok(last);
         }
     }
 }
@@ -277,18 +192,16 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
     }
 
     fn t_end(&self) -> f64 {
-        self.t_end
+        self.ctl.t_end()
     }
 
-    // The size of the last accepted step is `h_last`; `h` is the proposal for the next one.
-    #[allow(clippy::misnamed_getters)]
     fn h(&self) -> f64 {
-        self.h_last
+        self.ctl.h_last()
     }
 
     /// Current time.
     fn t(&self) -> f64 {
-        self.t
+        self.ctl.t()
     }
 
     /// Current state.
@@ -298,12 +211,14 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
 
     /// Start time of the last accepted step (`t0` before the first step).
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.ctl.t_prev()
     }
 
     /// Work counters so far.
     fn stats(&self) -> Stats {
-        self.stats.get()
+        let mut stats = self.ctl.stats();
+        stats.rhs_evals += self.dense_evals.get();
+        stats
     }
 
     /// Evaluates the 9th-order interpolant of the last accepted step `[t_prev, t]` at `t`.
@@ -313,30 +228,22 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
     /// stages of the interpolant (nine right-hand-side calls); later calls on the same step
     /// are free. Before the first step it returns the initial state.
     fn dense(&self, t: f64) -> [f64; N] {
-        if self.stats.get().steps == 0 {
+        if self.ctl.stats().steps == 0 {
             return self.y;
         }
+        let (t_prev, h) = (self.ctl.t_prev(), self.ctl.h_last());
         let mut k = self.k;
         match self.extra.get() {
             Some(extra) => k[17..].copy_from_slice(&extra),
             None => {
-                stages(
-                    self.sys,
-                    self.t_prev,
-                    self.h_last,
-                    &self.y_prev,
-                    &mut k,
-                    17..STAGES,
-                );
-                let mut stats = self.stats.get();
-                stats.rhs_evals += STAGES - 17;
-                self.stats.set(stats);
+                stages(self.sys, t_prev, h, &self.y_prev, &mut k, 17..STAGES);
+                self.dense_evals.set(self.dense_evals.get() + STAGES - 17);
                 let mut extra = [[0.0; N]; STAGES - 17];
                 extra.copy_from_slice(&k[17..]);
                 self.extra.set(Some(extra));
             }
         }
-        let theta = (t - self.t_prev) / self.h_last;
+        let theta = (t - t_prev) / h;
         let mut acc = [0.0; N];
         for (j, r) in R.iter().enumerate() {
             let bj = theta * r.iter().rev().fold(0.0, |p, &c| p * theta + c);
@@ -346,7 +253,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
                 }
             }
         }
-        std::array::from_fn(|i| self.y_prev[i] + self.h_last * acc[i])
+        std::array::from_fn(|i| self.y_prev[i] + h * acc[i])
     }
 
     /// Replaces the current state after a step (e.g. a projection). Recomputes the first
@@ -354,9 +261,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.carry = [0.0; N];
-        self.f = self.sys.rhs(self.t, &self.y);
-        let mut stats = self.stats.get();
-        stats.rhs_evals += 1;
-        self.stats.set(stats);
+        self.f = self.sys.rhs(self.ctl.t(), &self.y);
+        self.ctl.count_evals(1);
     }
 }

@@ -36,10 +36,8 @@ pub mod tape;
 pub use tape::{Tape, Var};
 
 use super::compensated::compensated_add;
+use super::control::{Law, StepControl};
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
-
-/// Rounding unit of the step-size-too-small test.
-pub(crate) const UROUND: f64 = 2.3e-16;
 
 /// The tolerance of a step from a state of size `size = ||y||_inf`: `(eps, scale)` with
 /// `eps = atol`, `scale = 1` (absolute control) when `rtol size <= atol`, otherwise
@@ -113,7 +111,7 @@ pub(crate) fn max_norm(v: impl Iterator<Item = f64>) -> f64 {
 #[derive(Debug, Clone, Copy)]
 enum Control {
     /// Jorba–Zou with these tolerances.
-    Adaptive { rtol: f64, atol: f64, hmax: f64 },
+    Adaptive { rtol: f64, atol: f64 },
     /// A fixed order and a fixed step (convergence studies).
     Fixed { order: usize, h: f64 },
 }
@@ -121,21 +119,15 @@ enum Control {
 /// Taylor-series integrator of adaptive order and step (see the module documentation).
 pub struct Taylor<const N: usize> {
     tape: Tape<N>,
-    t: f64,
+    /// Time, step sizes, end and counters of the run ([`Law::Series`]).
+    ctl: StepControl,
     y: [f64; N],
     /// Rounding residue of the compensated update (zero after [`Stepper::set_state`]).
     carry: [f64; N],
-    t_prev: f64,
     /// Order of the last accepted step.
     p_last: usize,
-    h_last: f64,
-    t_end: f64,
-    posneg: f64,
     control: Control,
-    max_steps: usize,
     compensated: bool,
-    done: bool,
-    stats: Stats,
 }
 
 impl<const N: usize> Taylor<N> {
@@ -152,12 +144,10 @@ impl<const N: usize> Taylor<N> {
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
         opts.validate()?;
-        let hmax = opts.h_max.unwrap_or((t_end - t0).abs());
         let max_order = taylor_order(opts.rtol.min(opts.atol));
         let control = Control::Adaptive {
             rtol: opts.rtol,
             atol: opts.atol,
-            hmax,
         };
         Self::build(sys, t0, y0, t_end, control, max_order, opts)
     }
@@ -208,19 +198,12 @@ impl<const N: usize> Taylor<N> {
         })?;
         Ok(Taylor {
             tape,
-            t: t0,
+            ctl: StepControl::new(Law::Series, t0, t_end, opts, |_, _| 0.0),
             y: y0,
             carry: [0.0; N],
-            t_prev: t0,
             p_last: 0,
-            h_last: 0.0,
-            t_end,
-            posneg: if t_end >= t0 { 1.0 } else { -1.0 },
             control,
-            max_steps: opts.max_steps,
             compensated: opts.compensated,
-            done: t_end == t0,
-            stats: Stats::default(),
         })
     }
 
@@ -247,34 +230,20 @@ impl<const N: usize> Taylor<N> {
         }
     }
 
+    /// One step: the series expanded to the order of the current state, its step turned
+    /// into the step taken by the [`StepControl`], the update.
     fn advance(&mut self) -> Result<bool, IntegrateError> {
-        if self.done {
+        if self.ctl.done() {
             return Ok(true);
         }
-        if self.stats.steps >= self.max_steps {
-            return Err(IntegrateError::TooManySteps {
-                t: self.t,
-                max_steps: self.max_steps,
-            });
-        }
+        self.ctl.budget()?;
         let p = self.order();
-        self.tape.expand(self.t, &self.y, p);
-        self.stats.rhs_evals += p;
-        let mut h = match self.control {
-            Control::Fixed { h, .. } => h,
-            Control::Adaptive { rtol, atol, hmax } => {
-                self.step_size(p, rtol, atol).min(hmax) * self.posneg
-            }
-        };
-        if h.is_nan() {
-            return Err(IntegrateError::NonFinite { t: self.t });
-        }
-        let last = (self.t + 1.01 * h - self.t_end) * self.posneg >= 0.0;
-        if last {
-            h = self.t_end - self.t;
-        } else if 0.1 * h.abs() <= self.t.abs() * UROUND {
-            return Err(IntegrateError::StepSizeTooSmall { t: self.t, h });
-        }
+        self.tape.expand(self.ctl.t(), &self.y, p);
+        self.ctl.count_evals(p);
+        let h = self.ctl.series_step(match self.control {
+            Control::Fixed { h, .. } => h.abs(),
+            Control::Adaptive { rtol, atol } => self.step_size(p, rtol, atol),
+        })?;
         let mut delta = [0.0; N];
         for (i, d) in delta.iter_mut().enumerate() {
             let c = self.tape.state_series(i, p);
@@ -284,21 +253,15 @@ impl<const N: usize> Taylor<N> {
             }
             *d = acc * h;
         }
-        if delta.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrateError::NonFinite { t: self.t });
-        }
+        self.ctl
+            .check_increment(delta.iter().all(|v| v.is_finite()))?;
         if self.compensated {
             compensated_add(&mut self.y, &mut self.carry, &delta);
         } else {
             (0..N).for_each(|i| self.y[i] += delta[i]);
         }
-        self.t_prev = self.t;
-        self.t = if last { self.t_end } else { self.t + h };
-        self.h_last = h;
         self.p_last = p;
-        self.stats.steps += 1;
-        self.done = last;
-        Ok(last)
+        self.ctl.advance(true)
     }
 }
 
@@ -309,19 +272,19 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     }
 
     fn t(&self) -> f64 {
-        self.t
+        self.ctl.t()
     }
 
     fn t_end(&self) -> f64 {
-        self.t_end
+        self.ctl.t_end()
     }
 
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.ctl.t_prev()
     }
 
     fn h(&self) -> f64 {
-        self.h_last
+        self.ctl.h_last()
     }
 
     fn y(&self) -> &[f64; N] {
@@ -332,10 +295,10 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     /// `t_prev` (before any [`set_state`](Stepper::set_state) of its end); the initial state
     /// before the first step.
     fn dense(&self, t: f64) -> [f64; N] {
-        if self.stats.steps == 0 {
+        if self.ctl.stats().steps == 0 {
             return self.y;
         }
-        let s = t - self.t_prev;
+        let s = t - self.ctl.t_prev();
         std::array::from_fn(|i| {
             let c = self.tape.state_series(i, self.p_last);
             c.iter().rev().fold(0.0, |acc, &ck| acc * s + ck)
@@ -349,6 +312,6 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     }
 
     fn stats(&self) -> Stats {
-        self.stats
+        self.ctl.stats()
     }
 }
