@@ -23,7 +23,6 @@ use crate::quadrature::reduction::Reduction;
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
-use num_dual::first_derivative;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -32,8 +31,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// Bisection toward a near-singularity at distance epsilon costs about
 /// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
 const SAMPLE_BUDGET: usize = 6400;
-/// Turning points closer than this to a pole are snapped to it (a motion through the axis).
-const POLE_SNAP: f64 = 1e-12;
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation, about
@@ -62,11 +59,6 @@ const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
 /// of Q: the round-off is an estimate of its typical size, not a bound, and a double root
 /// within a few such sizes cannot be told from a separatrix.
 const SEPARATRIX_MARGIN: f64 = 16.0;
-/// Absolute round-off of the integrals H1, H3, K computed from a state, in machine epsilons of
-/// the sum of the magnitudes of their terms. Here and below the round-off is estimated, not
-/// bounded: a few epsilons per sum of terms, errors of independent samples adding in
-/// quadrature (docs/quadrature.md, section 5).
-const INTEGRAL_EPSILONS: f64 = 2.0;
 
 /// A count of Gauss-Legendre pieces that methods taking `&self` increase: atomic, so that a
 /// [`Nutation`] stays `Sync` (shared between threads, as Python's `ExactSolution` is).
@@ -127,8 +119,10 @@ pub struct Nutation {
     rule: GaussLegendre,
     /// The rule of the double integral of a narrow nutation's cofactor.
     narrow_rule: GaussLegendre,
-    /// Where Q is not analytic ([`Reduction::singularities`]).
+    /// Where Q is not analytic ([`Reduction::singularities`]), in u.
     singularities: Vec<(f64, f64)>,
+    /// The same in the distance `x = 1 - p u` from the top and the bottom pole.
+    frame_singularities: [Vec<(f64, f64)>; 2],
     /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
     work: Work,
     /// Phase sigma of the initial state.
@@ -281,20 +275,27 @@ const NEAR_POLE: f64 = 1.0 / 8.0;
 
 /// The turning point of Q met by going from `u0` in direction `dir` (+1 or -1): a geometric
 /// search for the first sign change, refined by Brent's method (near the pole `dir`, in the
-/// distance from it, [`Reduction::q_near_pole`]).
+/// distance from it, in the frame of that pole, [`Reduction::q_in_frame`]).
 fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<Turning> {
     let u = turning_point_u(red, u0, dir)?;
     let gap = 1.0 - dir * u;
-    if !(gap < NEAR_POLE) || gap == 0.0 {
+    if !(gap < NEAR_POLE) {
         return Ok(Turning { u, gap });
     }
-    // Q > 0 toward u0 (larger gap), Q < 0 toward the pole.
-    let q = |v: f64| red.q_near_pole(dir, v);
-    let (inner, outer) = (gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON, gap * (1.0 - 1e-6));
-    let gap = if q(inner) > 0.0 && q(outer) < 0.0 {
-        brent(q, outer, inner, 0.0, 200).unwrap_or(gap)
-    } else {
-        gap
+    // Q > 0 toward u0 (larger gap), Q < 0 toward the pole: at the pole itself
+    // `Q = -c N(p)^2 < 0` unless the motion passes through the axis (`N(p) = 0`, the pole is
+    // the turning point). The root is bracketed in the gap, where u rounded it to `eps`.
+    let q = |v: f64| red.q_in_frame(dir, v);
+    let mut inner = gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON;
+    while !(q(inner) > 0.0) && inner < NEAR_POLE {
+        inner *= 2.0;
+    }
+    let outer = [gap * (1.0 - 1e-6), 0.0]
+        .into_iter()
+        .find(|&v| v < inner && q(v) < 0.0);
+    let gap = match outer {
+        Some(outer) if q(inner) > 0.0 => brent(q, outer, inner, 0.0, 200).unwrap_or(gap),
+        _ => gap,
     };
     Ok(Turning { u, gap })
 }
@@ -352,22 +353,6 @@ fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64, SMatr
     )
 }
 
-/// The absolute round-off of H1, H3, K computed from `state` (`INTEGRAL_EPSILONS` machine
-/// epsilons of the sum of the magnitudes of the terms of each).
-fn integral_errors(body: &Body, state: &State, red: &Reduction) -> [f64; 3] {
-    let norm = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
-    let omega = state.omega(body);
-    let r = body.contact_vector(&state.gamma);
-    let (mm, w) = (norm(state.m), norm(omega));
-    let potential = body.m * body.gravity * (body.radius + body.a.abs());
-    let e = INTEGRAL_EPSILONS * f64::EPSILON;
-    [
-        e * (mm * w + 2.0 * potential),
-        e * mm * norm(r),
-        e * (red.k.abs() + red.routh_g(state.gamma[2]) * omega[2].abs()),
-    ]
-}
-
 impl ExactSolution {
     /// Solve the motion through `initial` by quadrature (body with I1 = I2).
     ///
@@ -384,7 +369,7 @@ impl ExactSolution {
     pub fn new(body: &Body, initial: &State) -> Result<Self> {
         require_finite_inertia(body)?;
         let red = Reduction::of_state(body, initial)?;
-        let errors = integral_errors(body, initial, &red);
+        let (_, errors) = red.frames_of_state(initial);
         let u0 = initial.gamma[2];
         let steady = |u: f64, precession: f64, accuracy: Accuracy| ExactSolution {
             body: *body,
@@ -505,15 +490,17 @@ impl ExactSolution {
     }
 
     /// How much the round-off of the integrals changes the period and the advance: the
-    /// nutation is solved again with H1, H3, K moved by `k` times their round-off, each in the
-    /// direction that raises Q at the middle of the nutation, and the changes divided by `k`
+    /// nutation is solved again with its parameters (K and those of both poles,
+    /// [`Reduction::frames_of_state`]) moved by `k` times their round-off, each in the
+    /// direction that raises Q at the middle of the nutation (or, for the frame of the other
+    /// hemisphere, at the turning point in it), and the changes divided by `k`
     /// (`k` up to 1e4, so that they stand above the round-off of the quadrature, and small
     /// enough that the move stays below a tenth of Q there). The relative change of T and the
     /// absolute change of the advance, or `None` if the moved level set cannot be solved.
     fn sensitivity(
         nutation: &Nutation,
         mid: f64,
-        errors: [f64; 3],
+        errors: [f64; 5],
         initial: &State,
         udot0: f64,
     ) -> Option<(f64, f64)> {
@@ -524,14 +511,15 @@ impl ExactSolution {
         if !(k > 0.0) {
             return None;
         }
-        let moved = |i: usize, v: f64| v + k * errors[i] * grad[i].signum();
-        let other = Reduction::new(
-            &red.body,
-            moved(0, red.h1),
-            moved(1, red.h3),
-            moved(2, red.k),
-        )
-        .ok()?;
+        let ends = [nutation.u2, nutation.u1].map(|u| red.q_integral_gradient(u));
+        let parameters = red.parameters();
+        let other = red.with_parameters(std::array::from_fn(|i| {
+            let slope = std::iter::once(grad[i])
+                .chain(ends.iter().map(|g| g[i]))
+                .find(|g| *g != 0.0)
+                .unwrap_or(1.0);
+            parameters[i] + k * errors[i] * slope.signum()
+        }));
         let lo = turning_point(&other, mid, -1.0).ok()?.snapped(-1.0);
         let hi = turning_point(&other, mid, 1.0).ok()?.snapped(1.0);
         let alt = Nutation::new(other, lo, hi, initial, udot0).ok()?;
@@ -616,20 +604,26 @@ impl ExactSolution {
 }
 
 /// Where a phase sigma puts the tilt: u, `1 - u` and `1 + u` (from the distances to the
-/// turning points, without the rounding of u), the signed sin theta, and `(du/dt) / s * f`.
+/// turning points, without the rounding of u), the signed sin theta, `(du/dt) / s * f`, and
+/// whether u is on the half of the nutation next to the upper turning point.
 struct Phase {
     u: f64,
     one_minus: f64,
     one_plus: f64,
     s: f64,
     udot_over_s_times_f: f64,
+    upper: bool,
 }
 
 impl Turning {
-    /// The pole itself when the turning point is within `POLE_SNAP` of it (a motion through
-    /// the axis).
+    /// The pole itself when the turning point is the pole (a motion through the axis,
+    /// `N(p) = 0`). The gap of a turning point near the pole is found in the frame of the pole,
+    /// to its relative round-off however small: a motion that passes at 1e-6 rad from the axis
+    /// near the unstable vertical spin (a gap of 5e-13) is not one through the axis, and
+    /// taking it for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an
+    /// error that the instability amplifies to O(1) at t = 20.
     fn snapped(self, pole: f64) -> Self {
-        if self.gap <= POLE_SNAP {
+        if self.gap == 0.0 {
             Turning { u: pole, gap: 0.0 }
         } else {
             self
@@ -638,6 +632,19 @@ impl Turning {
 }
 
 impl Phase {
+    /// The pole `p = +-1` itself (outside the nutation, where P is continued to find the
+    /// strengths of the poles of the rate), on the side of its turning point.
+    fn at_pole(pole: f64) -> Self {
+        Phase {
+            u: pole,
+            one_minus: 1.0 - pole,
+            one_plus: 1.0 + pole,
+            s: 0.0,
+            udot_over_s_times_f: 0.0,
+            upper: pole > 0.0,
+        }
+    }
+
     /// `1 - p u` for a pole `p = +-1`.
     fn one_minus_pole(&self, pole: f64) -> f64 {
         if pole > 0.0 {
@@ -674,6 +681,12 @@ impl Nutation {
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             narrow_rule: GaussLegendre::new(NARROW_NODES),
             singularities: red.singularities(),
+            frame_singularities: [1.0, -1.0].map(|pole| {
+                red.singularities()
+                    .iter()
+                    .map(|&(re, im)| (1.0 - pole * re, im))
+                    .collect()
+            }),
             work: Work::default(),
             sigma0: 0.0,
             psi_ref: 0.0,
@@ -685,9 +698,9 @@ impl Nutation {
         // `c_p / (1 - p u)` with `c_p = p N(p) f(p) / (2 A R)` are subtracted from the samples
         // and integrated in closed form (`pole_angle`); the remainder is smooth.
         for (pole, through) in [(1.0, nut.through_top), (-1.0, nut.through_bottom)] {
-            let (p, _) = nut.cofactor_with_noise(pole);
+            let (p, _) = nut.cofactor_with_noise(&Phase::at_pole(pole));
             if !through && p > 0.0 && p.is_finite() {
-                let strength = pole * red.jellett_remainder(pole)
+                let strength = pole * red.frame(pole).remainder
                     / (2.0 * red.body.i1 * red.body.radius)
                     / p.sqrt();
                 nut.poles.push((pole, strength));
@@ -731,12 +744,22 @@ impl Nutation {
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
         // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
         // only to the square root of its error, the rate du/dt fixes it well.
-        let cos0 = (0.5 * (u1 + u2) - initial.gamma[2]) / half;
-        let mut sigma0 = if udot0 < 0.0 {
-            TAU - cos0.clamp(-1.0, 1.0).acos()
-        } else {
-            cos0.clamp(-1.0, 1.0).acos()
+        // The distances of u0 from the turning points, from those of u0 from the poles
+        // (taken from the horizontal part of gamma near a pole) and the gaps.
+        let g = initial.gamma;
+        let horizontal = g[0] * g[0] + g[1] * g[1];
+        let from_pole = |pole: f64| {
+            if pole * g[2] > 0.0 {
+                horizontal / (1.0 + pole * g[2])
+            } else {
+                1.0 - pole * g[2]
+            }
         };
+        let below = (from_pole(-1.0) - nut.gap_bottom).max(0.0);
+        let above = (from_pole(1.0) - nut.gap_top).max(0.0);
+        let cos0 = (above - below) / (2.0 * half);
+        let sigma0 = 2.0 * below.sqrt().atan2(above.sqrt());
+        let mut sigma0 = if udot0 < 0.0 { TAU - sigma0 } else { sigma0 };
         for _ in 0..3 {
             let (f, _) = nut.series.value_and_integral(0, sigma0);
             sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
@@ -769,33 +792,65 @@ impl Nutation {
     /// only to its round-off, and dividing Q by `(u - u1)(u2 - u)` (or Q' from the nearer
     /// turning point, as before) would make P jump by that round-off over `(u2 - u1)^2`
     /// between the two halves of the nutation, a jump no series resolves. Computed without
-    /// dividing Q itself:
+    /// dividing Q by a small distance:
     ///
-    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)` with
-    ///   `Q[a, b] = int_0^1 Q'(a + tau (b - a)) d tau`;
+    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
+    ///   the half of the nutation next to `u2` the near difference `Q[u, u2]` is the mean of
+    ///   `dQ/dx` between the turning point and u in the frame of the top pole
+    ///   (`x = 1 - u` from the phase, [`Reduction::q_in_frame`]), and the far one is
+    ///   `Q(u) / (u - u1)`, which takes `Q(u1) = 0`: u1 is a root of Q, and `u - u1` is at
+    ///   least half the width. Near the pole of a motion passing close to the axis P is small
+    ///   (1e-10: a root of Q lies just beyond the turning point), and the mean of Q' over the
+    ///   whole nutation, which was used for `Q[u1, u]`, left a round-off of `eps` times its
+    ///   O(1) values there. The half next to `u1` is the mirror image in the frame of the
+    ///   bottom pole. The two formulas differ by the round-off of Q at the turning points,
+    ///   and they meet at `sigma = pi/2`, the boundary between the two sides of the panels.
     /// * a narrow one: by Hermite-Genocchi, `Q[u1, u, u2] =
     ///   int_0^1 int_0^1 s Q''(u1 + s (u - u1) + s t (u2 - u)) dt ds`, whose round-off does
     ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`).
     ///
     /// Q' and Q'' by automatic differentiation, the integrals by Gauss-Legendre. Also returns
-    /// the relative round-off of P: `eps` times the magnitudes of the slopes (curvatures) of
-    /// the terms of Q, against P.
-    fn cofactor_with_noise(&self, u: f64) -> (f64, f64) {
+    /// the relative round-off of P: `eps` times the magnitudes of the terms of Q and of their
+    /// slopes (curvatures), against P.
+    fn cofactor_with_noise(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
         let (u1, u2) = (self.u1, self.u2);
         let width = u2 - u1;
         if width > WIDE_NUTATION {
-            let difference = |a: f64, b: f64| {
-                let (mean, pieces) = self
-                    .rule
-                    .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1);
-                self.work.add(pieces);
-                mean
+            // x: the distance of u from the pole on the phase's side; x_end that of the
+            // turning point there; far: the distance of u from the other turning point.
+            let (pole, x, x_end, far) = if phase.upper {
+                (
+                    1.0,
+                    phase.one_minus,
+                    self.gap_top,
+                    phase.one_plus - self.gap_bottom,
+                )
+            } else {
+                (
+                    -1.0,
+                    phase.one_plus,
+                    self.gap_bottom,
+                    phase.one_minus - self.gap_top,
+                )
             };
-            let p = (difference(u1, u) - difference(u, u2)) / width;
-            let scale = red.q_slope_scale(u1) + red.q_slope_scale(u) + red.q_slope_scale(u2);
-            (p, f64::EPSILON * scale / (width * p.abs()))
+            let (near, pieces) = self.rule.mean_avoiding(
+                x_end,
+                x,
+                &self.frame_singularities[usize::from(pole < 0.0)],
+                &|v| red.q_slope_in_frame(pole, v),
+            );
+            self.work.add(pieces);
+            let q = red.q_in_frame(pole, x);
+            let p = (q / far + near) / width;
+            let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
+            let (_, end_slope_scale) = red.q_scales_in_frame(pole, x_end);
+            (
+                p,
+                f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),
+            )
         } else {
+            let u = phase.u;
             let p = -self.narrow_rule.integrate(|s| {
                 s * self
                     .narrow_rule
@@ -827,7 +882,7 @@ impl Nutation {
             let (hc, hs) = (0.5 * rho).sin_cos();
             self.phase_of_half_angle(hs, hc)
         };
-        let (p, p_noise) = self.cofactor_with_noise(phase.u);
+        let (p, p_noise) = self.cofactor_with_noise(&phase);
         if p.is_nan() || p <= 0.0 {
             return Err(RouthError::Singular {
                 formula: "the reduced equation (du/dt)^2 = Q(u)",
@@ -839,17 +894,15 @@ impl Nutation {
             });
         }
         let f = p.sqrt().recip();
-        let quotient = self.jellett_quotient(&phase);
+        let (quotient, quotient_scale) = self.jellett_quotient(&phase);
         let rate = red.precession_from_quotient(phase.u, quotient);
-        // Round-off of the rate: its two terms, and Jellett's remainder N, a difference of H3
-        // and C h omega3, divided by 1 - u^2.
+        // Round-off of the rate: its two terms, and the terms of Jellett's quotient.
         let b = &red.body;
         let spin = red.spin(phase.u);
-        let remainder_noise = red.h3.abs() + (b.i3 * (b.radius * phase.u + b.a) * spin).abs();
         let rate_noise = f64::EPSILON
             * ((phase.u * quotient).abs() / (b.i1 * b.radius)
                 + spin.abs()
-                + remainder_noise / (phase.one_minus * phase.one_plus * b.i1 * b.radius));
+                + quotient_scale / (b.i1 * b.radius));
         let f_noise = 0.5 * f * p_noise;
         let singular: f64 = self
             .poles
@@ -867,26 +920,30 @@ impl Nutation {
         })
     }
 
-    /// Jellett's quotient `N(u) / (1 - u^2)`; near a pole `p` that the motion passes through,
-    /// where `N(p) = 0`, with the factor `u - p` divided out exactly as in `cofactor`:
-    /// `N(u) / (1 - u^2) = -int_0^1 N'(p + tau (u - p)) d tau / (u + p)`; elsewhere with
-    /// `1 - u^2` from the phase's accurate `1 - u` and `1 + u` (near a pole, u itself rounds
-    /// 1 - u to a relative error of `eps / (1 - u)`, which the pole amplifies).
-    fn jellett_quotient(&self, phase: &Phase) -> f64 {
+    /// Jellett's quotient `N(u) / (1 - u^2)` and the sum of the magnitudes of its terms (its
+    /// round-off scale), with `N = n_p + C K x J(x)` in the frame of the pole on the phase's
+    /// side ([`Reduction::jellett_remainder_in_frame`]) and `1 - u^2` from the phase's
+    /// accurate `1 - u` and `1 + u` (near a pole, u itself rounds 1 - u to a relative error of
+    /// `eps / (1 - u)`, which the pole amplifies). Through a pole `p`, where `N(p) = 0`, the
+    /// factor x is divided out exactly: `N / (1 - u^2) = C K J(x) / (1 + p u)`.
+    fn jellett_quotient(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
-        let u = phase.u;
-        let pole = if self.through_top && u > 0.0 {
-            1.0
-        } else if self.through_bottom && u < 0.0 {
-            -1.0
+        let (pole, x, other, through) = if phase.upper {
+            (1.0, phase.one_minus, phase.one_plus, self.through_top)
         } else {
-            return red.jellett_remainder(u) / (phase.one_minus * phase.one_plus);
+            (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
         };
-        let (slope, pieces) = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
-            first_derivative(|w| red.jellett_remainder(w), v).1
-        });
-        self.work.add(pieces);
-        -slope / (u + pole)
+        let divided = red.jellett_divided(pole, x) * (red.body.i3 * red.k);
+        if through {
+            (divided / other, (divided / other).abs())
+        } else {
+            let remainder = red.frame(pole).remainder;
+            let sine2 = x * other;
+            (
+                (divided * x + remainder) / sine2,
+                ((divided * x).abs() + remainder.abs()) / sine2,
+            )
+        }
     }
 
     /// The part of psi from the poles subtracted from the series: `sum_p c_p J_p(sigma)` with
@@ -951,6 +1008,7 @@ impl Nutation {
             one_plus: self.gap_bottom + d1,
             s: c_top * c_bot,
             udot_over_s_times_f: 2.0 * half * r_top * r_bot,
+            upper: d1 > d2,
         }
     }
 
@@ -969,7 +1027,7 @@ impl Nutation {
             phase.s,
             psi,
             phase.udot_over_s_times_f / f,
-            self.jellett_quotient(&phase),
+            self.jellett_quotient(&phase).0,
         )
     }
 
