@@ -7,19 +7,23 @@
 //! evaluations. MODE:
 //! * `one`: one run after the other with [`Dop853`] (the sweep's `--no-batch` loop);
 //! * `lanes4`, `lanes8`: the batched DOP853 of [`routh::batch`] with 4 or 8 lanes;
+//! * `taylor`: one run after the other with [`Taylor`];
+//! * `taylor4`, `taylor8`: the batched Taylor method of [`routh::batch::taylor`] with 4 or 8
+//!   lanes (the instruction set, AVX-512 or AVX2, chosen at run time; `routh sweep` takes 8
+//!   lanes with AVX-512, else 4);
 //! * `vern9`: one run after the other with [`Vern9`] (for the reference at 1e-15).
 //!
 //! `batch_throughput states N`: prints the N initial states of the benchmark, one a line: the
 //! default body with omega = (0.5, 0.2, 8) and gamma = (sin tilt, 0, cos tilt), the tilts
 //! spread evenly over (0.05, 1.5) (ends excluded), M = I_Q omega (om-m).
 //!
-//! `cargo bench --bench batch_throughput` (no arguments): our three loops on the 1024 runs to
+//! `cargo bench --bench batch_throughput` (no arguments): our loops on the 1024 runs to
 //! t = 10 at 1e-12 and 1e-8, as a table (the peers need `bench/throughput/run.py`).
 //!
 //! Build with `cargo bench --bench batch_throughput --no-run`.
 
 use routh::batch::{self, Job, LaneEnd, Queue};
-use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Vern9};
+use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Taylor, Vern9};
 use routh::simulate::ReducedSystem;
 use routh::state::{Normalise, State};
 use routh::Body;
@@ -56,7 +60,9 @@ impl Queue<6> for Finals {
     }
 }
 
+/// The batched DOP853 (`taylor = false`) or Taylor method in `L` lanes.
 fn lanes<const L: usize>(
+    taylor: bool,
     body: &Body,
     x0: &[[f64; 6]],
     t_end: f64,
@@ -70,7 +76,12 @@ fn lanes<const L: usize>(
         stats: Stats::default(),
         failure: None,
     };
-    batch::integrate::<_, _, 6, L>(&ReducedSystem(body), opts, &mut queue)?;
+    let sys = ReducedSystem(body);
+    if taylor {
+        batch::taylor::integrate_in::<_, _, 6, L>(&sys, opts, &mut queue)?;
+    } else {
+        batch::integrate::<_, _, 6, L>(&sys, opts, &mut queue)?;
+    }
     match queue.failure {
         Some(e) => Err(e),
         None => Ok((queue.finals, queue.stats)),
@@ -137,8 +148,11 @@ fn measure(
         let r = match mode {
             "one" => one_by_one!(Dop853, &body, x0, t_end, &opts),
             "vern9" => one_by_one!(Vern9, &body, x0, t_end, &opts),
-            "lanes4" => lanes::<4>(&body, x0, t_end, &opts),
-            "lanes8" => lanes::<8>(&body, x0, t_end, &opts),
+            "taylor" => one_by_one!(Taylor, &body, x0, t_end, &opts),
+            "lanes4" => lanes::<4>(false, &body, x0, t_end, &opts),
+            "lanes8" => lanes::<8>(false, &body, x0, t_end, &opts),
+            "taylor4" => lanes::<4>(true, &body, x0, t_end, &opts),
+            "taylor8" => lanes::<8>(true, &body, x0, t_end, &opts),
             _ => return None,
         };
         best = best.min(start.elapsed().as_secs_f64());
@@ -153,13 +167,13 @@ fn main() {
         .filter(|a| a != "--bench")
         .collect();
     let usage =
-        "usage: batch_throughput [one|lanes4|lanes8|vern9 TOL T_END REPEAT < states | states N]";
+        "usage: batch_throughput [MODE TOL T_END REPEAT < states | states N], MODE one of one, lanes4, lanes8, taylor, taylor4, taylor8, vern9";
     match &args[..] {
         [] => {
-            // `cargo bench`: the table of BENCHMARKS.md for our three loops, without the peers.
+            // `cargo bench`: the table of BENCHMARKS.md for our loops, without the peers.
             let x0 = states(1024);
             for tol in [1e-12, 1e-8] {
-                for mode in ["one", "lanes4", "lanes8"] {
+                for mode in ["one", "lanes4", "lanes8", "taylor", "taylor4", "taylor8"] {
                     let (t, r) = measure(mode, tol, 10.0, 3, &x0).expect("a known mode");
                     let (_, stats) = r.expect("the benchmark runs succeed");
                     println!(

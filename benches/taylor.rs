@@ -1,11 +1,13 @@
 //! Cost of one Taylor step against its order (`src/integrate/taylor`): the expansion of the
 //! default case's field (mg-eq) through one state to the orders 5, 10, 15, 20, 25, 30 (the
-//! Jorba–Zou order is 15 at tolerance 1e-12 and 20 at 1e-16). The tape's size (operations,
+//! integrator's order is 14 at tolerance 1e-8, 20 at 1e-12, 16 at 1e-13 and 20 at 1e-16:
+//! `taylor::taylor_order`). The tape's size (operations,
 //! of which products, quotients and square roots) is printed beside the times, so that the
 //! `O(n_ops p^2)` law can be checked: the time divided by `p^2` should settle to a constant as
 //! `p` grows. Run with `cargo bench --bench taylor`; figures are recorded in BENCHMARKS.md.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use routh::batch::Lanes;
 use routh::case::Case;
 use routh::integrate::taylor::Tape;
 use routh::simulate::ReducedSystem;
@@ -36,9 +38,39 @@ fn expansion(c: &mut Criterion) {
     group.finish();
 }
 
+/// The same expansion for 4 and 8 runs at once (a tape over [`Lanes`], as the batched Taylor
+/// method of `src/batch/taylor.rs` runs it), the instruction set (AVX-512 or AVX2) chosen at
+/// run time: the time per run is the time divided by the lanes.
+fn expansion_in_lanes(c: &mut Criterion) {
+    let case = Case::default_case().expect("the built-in default case is valid");
+    let x = case.initial.to_array();
+    let tape = Tape::record(&ReducedSystem(&case.ball), 30).expect("the reduced system records");
+    println!("expansion in lanes: {:?}", tape.isa());
+    let mut group = c.benchmark_group("taylor expansion in lanes (default case)");
+    let mut four: Tape<6, Lanes<4>> = tape.with_coefficients();
+    let mut eight: Tape<6, Lanes<8>> = tape.with_coefficients();
+    for p in ORDERS {
+        group.bench_with_input(BenchmarkId::new("4 lanes", p), &p, |b, &p| {
+            let y = x.map(Lanes::splat);
+            b.iter(|| {
+                four.expand(Lanes::splat(0.0), black_box(&y), p);
+                four.state_coefficient(0, p)
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("8 lanes", p), &p, |b, &p| {
+            let y = x.map(Lanes::splat);
+            b.iter(|| {
+                eight.expand(Lanes::splat(0.0), black_box(&y), p);
+                eight.state_coefficient(0, p)
+            })
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().measurement_time(Duration::from_secs(3)).warm_up_time(Duration::from_secs(1));
-    targets = expansion
+    targets = expansion, expansion_in_lanes
 }
 criterion_main!(benches);

@@ -22,7 +22,7 @@
 //! mass to the contact point is `a n_h`, with `n = Q e3` the symmetry axis in space (least
 //! squares over the samples), and the height of the centre of mass is `R + a gamma3`.
 
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use crate::motion::{rotate, FULL_COLUMN_NAMES};
 use crate::plot::{drift_plot, theta_plot};
 use crate::table::Table;
@@ -63,9 +63,11 @@ fn frame_names() -> impl Iterator<Item = &'static str> {
 /// The rows of `table` restricted to the columns a frame needs ([`FRAME_COLUMNS`]), checked:
 /// every value finite, t strictly increasing.
 fn frame_rows(table: &Table) -> Result<Vec<[f64; FRAME_COLUMNS]>> {
-    let error = |message: String| RouthError::Table {
-        origin: table.origin.clone(),
-        message,
+    let error = |message: String| {
+        AppError::from(FileError::Table {
+            origin: table.origin.clone(),
+            message,
+        })
     };
     if let Some(missing) = frame_names().find(|n| !table.has(n)) {
         return Err(error(format!(
@@ -122,10 +124,11 @@ fn geometry(rows: &[[f64; FRAME_COLUMNS]], origin: &str) -> Result<(f64, f64)> {
     };
     let radius = rows.iter().map(|r| r[10] - a * r[3]).sum::<f64>() / rows.len() as f64;
     if !(radius.is_finite() && radius > 0.0) {
-        return Err(RouthError::Table {
+        return Err(FileError::Table {
             origin: origin.to_string(),
             message: format!("the samples give a ball radius R = {radius}, not > 0"),
-        });
+        }
+        .into());
     }
     Ok((radius, a))
 }
@@ -209,7 +212,7 @@ pub fn html(table: &Table) -> Result<String> {
         columns,
         drift,
     };
-    let data = serde_json::to_string(&embedded).map_err(|e| RouthError::Table {
+    let data = serde_json::to_string(&embedded).map_err(|e| FileError::Table {
         origin: table.origin.clone(),
         message: format!("cannot embed the samples: {e}"),
     })?;

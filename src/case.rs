@@ -26,7 +26,7 @@
 
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::state::{Normalise, State};
 use serde::Deserialize;
 use std::path::Path;
@@ -78,7 +78,7 @@ impl Integration {
     /// Check the settings: t_end, rtol, atol by the library's one validation
     /// ([`crate::simulate::validate_span`]), the tolerances' range by [`check_tolerances`],
     /// max_steps >= 1.
-    pub fn validate(&self) -> Result<()> {
+    pub fn validate(&self) -> crate::Result<()> {
         crate::simulate::validate_span(self.t_end, self.rtol, self.atol)?;
         check_tolerances(self.rtol, self.atol)?;
         check_max_steps(self.max_steps)
@@ -88,7 +88,7 @@ impl Integration {
 /// The rule for the tolerances a user asks for (a case file or the command line): rtol
 /// finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`], [`MAX_RTOL`]); atol finite and
 /// > 0. The library's own `Settings` accept any finite positive values.
-pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
+pub fn check_tolerances(rtol: f64, atol: f64) -> crate::Result<()> {
     check_option(
         "rtol",
         rtol,
@@ -117,7 +117,7 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
 }
 
 /// `max_steps` must be at least 1.
-pub fn check_max_steps(max_steps: usize) -> Result<()> {
+pub fn check_max_steps(max_steps: usize) -> crate::Result<()> {
     if max_steps == 0 {
         return Err(RouthError::Option {
             name: "max_steps",
@@ -129,7 +129,12 @@ pub fn check_max_steps(max_steps: usize) -> Result<()> {
 }
 
 /// Fail with [`RouthError::Option`] unless `ok`.
-pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str) -> Result<()> {
+pub fn check_option(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    rule: &'static str,
+) -> crate::Result<()> {
     if ok {
         Ok(())
     } else {
@@ -209,7 +214,7 @@ impl Case {
 
     /// Read and validate a case file.
     pub fn from_file(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| RouthError::Case {
+        let text = std::fs::read_to_string(path).map_err(|e| FileError::Case {
             file: path.display().to_string(),
             message: format!("cannot read: {e}"),
         })?;
@@ -226,12 +231,10 @@ impl Case {
 
     /// Parse and validate case text; `source` names the file in error messages.
     pub fn parse(text: &str, source: &str) -> Result<Self> {
-        let document: toml::Table =
-            text.parse()
-                .map_err(|e: toml::de::Error| RouthError::Case {
-                    file: source.to_string(),
-                    message: format!("malformed TOML: {e}"),
-                })?;
+        let document: toml::Table = text.parse().map_err(|e: toml::de::Error| FileError::Case {
+            file: source.to_string(),
+            message: format!("malformed TOML: {e}"),
+        })?;
         Self::from_document(document, source)
     }
 
@@ -239,16 +242,17 @@ impl Case {
     /// the file in error messages.
     pub fn from_document(document: toml::Table, source: &str) -> Result<Self> {
         Self::from_document_unlabelled(document, source).map_err(|e| match e {
-            RouthError::Case { .. } => e,
-            other => RouthError::Case {
+            AppError::File(FileError::Case { .. }) => e,
+            other => FileError::Case {
                 file: source.to_string(),
                 message: other.to_string(),
-            },
+            }
+            .into(),
         })
     }
 
     fn from_document_unlabelled(document: toml::Table, source: &str) -> Result<Self> {
-        let err = |message: String| RouthError::Case {
+        let err = |message: String| FileError::Case {
             file: source.to_string(),
             message,
         };
@@ -273,9 +277,9 @@ impl Case {
             .ball(),
             (None, Some(com)) => Ball::new(body.m, body.radius, inertia, com, body.gravity)?,
             _ => {
-                return Err(err(
-                    "[body] needs exactly one of the keys `a` and `com`".into()
-                ));
+                return Err(
+                    err("[body] needs exactly one of the keys `a` and `com`".into()).into(),
+                );
             }
         };
         let normalise = if initial.normalize {
@@ -287,9 +291,9 @@ impl Case {
             (Some(omega), None) => State::from_omega(&ball, initial.gamma, omega, normalise)?,
             (None, Some(m)) => State::new(initial.gamma, m, normalise)?,
             _ => {
-                return Err(err(
-                    "[initial] needs exactly one of the keys `omega` and `M`".into(),
-                ));
+                return Err(
+                    err("[initial] needs exactly one of the keys `omega` and `M`".into()).into(),
+                );
             }
         };
         crate::range::check_body(&ball)?;
@@ -306,7 +310,7 @@ impl Case {
 
     /// The ball as a [`Body`] (the paper's parameters, centre of mass on e3); an
     /// [`RouthError::OffAxis`] naming `what` for a centre of mass off the axis.
-    pub fn body(&self, what: &'static str) -> Result<Body> {
+    pub fn body(&self, what: &'static str) -> crate::Result<Body> {
         self.ball.axial_body(what)
     }
 
@@ -315,12 +319,13 @@ impl Case {
     pub fn extra_table<T: serde::de::DeserializeOwned>(&self, name: &str) -> Result<Option<T>> {
         match self.document.get(name) {
             None => Ok(None),
-            Some(_) => table(&self.document, name)
-                .map(Some)
-                .map_err(|message| RouthError::Case {
+            Some(_) => table(&self.document, name).map(Some).map_err(|message| {
+                FileError::Case {
                     file: self.source.clone(),
                     message,
-                }),
+                }
+                .into()
+            }),
         }
     }
 }

@@ -1,11 +1,16 @@
 //! Errors of the library: each variant carries the data that explains it.
 //!
+//! Two families, kept apart: [`RouthError`], the errors of the model and its numerics (what
+//! the library core returns, with or without the `io` feature), and, with the `io` feature,
+//! [`FileError`], the errors of files (case files, tables of samples, figures, reading and
+//! writing). [`AppError`], the error of the front ends (case files, tables, figures, the
+//! command-line tool, the sweep), holds either, so that `?` works across both.
+//!
 //! Normal endings of a computation (end time reached, event found) are not errors; they are
 //! returned as values by the modules that produce them.
 
-use std::path::PathBuf;
-
-/// Everything that can go wrong in `routh`.
+/// What can go wrong in the model and its numerics: the library core (the model, the
+/// integrators, the quadrature, the Poisson geometry) returns this error and no other.
 #[derive(Debug, thiserror::Error)]
 pub enum RouthError {
     /// A body parameter breaks a rule (non-finite, non-positive, |a| >= R, ...).
@@ -64,14 +69,6 @@ pub enum RouthError {
         /// The rule it breaks.
         rule: &'static str,
     },
-    /// A case file that cannot be read or does not follow the schema.
-    #[error("case file {file}: {message}")]
-    Case {
-        /// The file (or `<built-in default>`).
-        file: String,
-        /// What is wrong, naming the key.
-        message: String,
-    },
     /// A formula evaluated at one of its singular points.
     #[error("{formula} is singular here: {reason}")]
     Singular {
@@ -119,6 +116,24 @@ pub enum RouthError {
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(#[from] crate::integrate::IntegrateError),
+}
+
+/// Shorthand for results of this crate.
+pub type Result<T> = std::result::Result<T, RouthError>;
+
+/// What can go wrong with a file: a case file, a table of samples, a figure, reading or
+/// writing.
+#[cfg(feature = "io")]
+#[derive(Debug, thiserror::Error)]
+pub enum FileError {
+    /// A case file that cannot be read or does not follow the schema.
+    #[error("case file {file}: {message}")]
+    Case {
+        /// The file (or `<built-in default>`).
+        file: String,
+        /// What is wrong, naming the key.
+        message: String,
+    },
     /// A table of samples (a CSV file of `routh simulate`) that cannot be used.
     #[error("{origin}: {message}")]
     Table {
@@ -139,11 +154,46 @@ pub enum RouthError {
     #[error("{}: {source}", path.display())]
     Io {
         /// The file.
-        path: PathBuf,
+        path: std::path::PathBuf,
         /// The underlying error.
         source: std::io::Error,
     },
 }
 
-/// Shorthand for results of this crate.
-pub type Result<T> = std::result::Result<T, RouthError>;
+/// Any error of the front ends (case files, tables, figures, the command-line tool): an error
+/// of the model or of a file, each shown with its own message.
+#[cfg(feature = "io")]
+#[derive(Debug, thiserror::Error)]
+pub enum AppError {
+    /// An error of the model or its numerics.
+    #[error(transparent)]
+    Model(#[from] RouthError),
+    /// An error of a file.
+    #[error(transparent)]
+    File(#[from] FileError),
+}
+
+#[cfg(feature = "io")]
+impl From<crate::integrate::IntegrateError> for AppError {
+    fn from(e: crate::integrate::IntegrateError) -> Self {
+        AppError::Model(e.into())
+    }
+}
+
+#[cfg(feature = "io")]
+impl AppError {
+    /// For `map_err`: the error of reading or writing `path` ([`FileError::Io`]).
+    pub fn io(path: &std::path::Path) -> impl Fn(std::io::Error) -> AppError + '_ {
+        move |source| {
+            FileError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+            .into()
+        }
+    }
+}
+
+/// Shorthand for results of the front ends.
+#[cfg(feature = "io")]
+pub type AppResult<T> = std::result::Result<T, AppError>;

@@ -47,6 +47,7 @@ pub mod field;
 pub mod integrals;
 pub mod integrate;
 pub mod motion;
+#[cfg(feature = "io")]
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
@@ -66,6 +67,8 @@ pub mod table;
 
 pub use ball::{AsBall, Ball, Model};
 pub use body::Body;
+#[cfg(feature = "io")]
+pub use error::{AppError, AppResult, FileError};
 pub use error::{Result, RouthError};
 pub use state::State;
 pub mod audit;

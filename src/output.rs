@@ -15,17 +15,23 @@
 //!
 //! The temporary files in progress are registered, so that [`remove_temporaries_on_signal`]
 //! (installed by the command-line tool) removes them on SIGINT, SIGTERM or SIGHUP before the
-//! process ends with the signal's usual status.
+//! process ends with the signal's usual status. It is the process's one handler of these
+//! signals: a long computation that can stop cleanly (a sweep) asks it, with
+//! [`stop_on_signal`], to set a flag on the first signal instead.
 
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, RouthError};
 use std::fs::{File, OpenOptions};
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
 
 /// Temporary files being written, removed by the signal handler.
 static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The flag the next SIGINT, SIGTERM or SIGHUP sets instead of ending the process
+/// ([`stop_on_signal`]).
+static STOP: Mutex<Option<Arc<AtomicBool>>> = Mutex::new(None);
 
 /// A counter that keeps the temporary names of one process distinct.
 static SERIAL: AtomicUsize = AtomicUsize::new(0);
@@ -42,17 +48,14 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>
         return stream(path, stdout.lock(), fill);
     }
     let target = follow_links(path)?;
-    let io = |source| RouthError::Io {
-        path: target.clone(),
-        source,
-    };
+    let io = AppError::io(&target);
     match std::fs::metadata(&target) {
         Ok(meta) if meta.is_dir() => Err(io(std::io::Error::new(
             std::io::ErrorKind::IsADirectory,
             "is a directory, expected a file name",
         ))),
         Ok(meta) if !meta.is_file() => {
-            let file = OpenOptions::new().write(true).open(&target).map_err(io)?;
+            let file = OpenOptions::new().write(true).open(&target).map_err(&io)?;
             stream(&target, file, fill)
         }
         Ok(meta) => replace(&target, Some(meta.permissions()), fill),
@@ -63,16 +66,12 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>
 
 /// Write bytes safely (see [`write_atomic`]).
 pub fn write_bytes_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    write_atomic(path, |w| {
-        w.write_all(bytes).map_err(|source| RouthError::Io {
-            path: path.to_path_buf(),
-            source,
-        })
-    })
+    write_atomic(path, |w| w.write_all(bytes).map_err(AppError::io(path)))
 }
 
 /// Install a handler that removes the temporary files in progress on SIGINT, SIGTERM and
-/// SIGHUP, then ends the process as the signal would have (exit status 128 + signal). SIGXFSZ
+/// SIGHUP, then ends the process as the signal would have (exit status 128 + signal); while a
+/// flag is registered with [`stop_on_signal`], the first such signal only sets it. SIGXFSZ
 /// (a file size limit, `ulimit -f`) is caught too, so that the write fails with an error and
 /// the temporary file is removed like on a full disk. Meant for the command-line tool; a
 /// library user keeps its own signal handling.
@@ -82,25 +81,30 @@ pub fn remove_temporaries_on_signal() -> Result<()> {
         SIGXFSZ,
         std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)),
     )
-    .map_err(|source| RouthError::Io {
-        path: PathBuf::from("<signal handler>"),
-        source,
-    })?;
-    let mut signals =
-        signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]).map_err(|source| {
-            RouthError::Io {
-                path: PathBuf::from("<signal handler>"),
-                source,
-            }
-        })?;
+    .map_err(AppError::io(Path::new("<signal handler>")))?;
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
+        .map_err(AppError::io(Path::new("<signal handler>")))?;
     std::thread::spawn(move || {
-        if let Some(signal) = signals.forever().next() {
-            remove_registered();
-            let _ = signal_hook::low_level::emulate_default_handler(signal);
-            std::process::exit(128 + signal);
+        for signal in signals.forever() {
+            let stop = STOP.lock().unwrap_or_else(|e| e.into_inner()).take();
+            match stop {
+                Some(flag) => flag.store(true, Ordering::SeqCst),
+                None => {
+                    remove_registered();
+                    let _ = signal_hook::low_level::emulate_default_handler(signal);
+                    std::process::exit(128 + signal);
+                }
+            }
         }
     });
     Ok(())
+}
+
+/// Let the next SIGINT, SIGTERM or SIGHUP set `flag` instead of ending the process (with the
+/// handler of [`remove_temporaries_on_signal`]): a computation that polls it stops and keeps
+/// what is done. A further signal ends the process as usual.
+pub fn stop_on_signal(flag: Arc<AtomicBool>) {
+    *STOP.lock().unwrap_or_else(|e| e.into_inner()) = Some(flag);
 }
 
 /// Remove every registered temporary file (the signal handler's work).
@@ -119,10 +123,7 @@ fn stream(
 ) -> Result<()> {
     let mut writer = BufWriter::new(sink);
     fill(&mut writer)?;
-    writer.flush().map_err(|source| RouthError::Io {
-        path: path.to_path_buf(),
-        source,
-    })
+    writer.flush().map_err(AppError::io(path))
 }
 
 /// Write a temporary file beside `target` and rename it over `target` when complete.
@@ -131,10 +132,7 @@ fn replace(
     permissions: Option<std::fs::Permissions>,
     fill: impl FnOnce(&mut dyn Write) -> Result<()>,
 ) -> Result<()> {
-    let io = |source| RouthError::Io {
-        path: target.to_path_buf(),
-        source,
-    };
+    let io = AppError::io(target);
     let name = target.file_name().ok_or_else(|| RouthError::Option {
         name: "output path",
         value: target.display().to_string(),
@@ -150,16 +148,16 @@ fn replace(
         .write(true)
         .create_new(true)
         .open(&temporary.path)
-        .map_err(io)?;
+        .map_err(&io)?;
     let mut writer = BufWriter::new(file);
     fill(&mut writer)?;
     let file: File = writer.into_inner().map_err(|e| io(e.into_error()))?;
     if let Some(permissions) = permissions {
-        file.set_permissions(permissions).map_err(io)?;
+        file.set_permissions(permissions).map_err(&io)?;
     }
-    file.sync_all().map_err(io)?;
+    file.sync_all().map_err(&io)?;
     drop(file);
-    std::fs::rename(&temporary.path, target).map_err(io)?;
+    std::fs::rename(&temporary.path, target).map_err(&io)?;
     temporary.renamed();
     Ok(())
 }
@@ -171,10 +169,7 @@ fn follow_links(path: &Path) -> Result<PathBuf> {
     for _ in 0..MAX_LINK_DEPTH {
         match std::fs::symlink_metadata(&current) {
             Ok(meta) if meta.file_type().is_symlink() => {
-                let link = std::fs::read_link(&current).map_err(|source| RouthError::Io {
-                    path: current.clone(),
-                    source,
-                })?;
+                let link = std::fs::read_link(&current).map_err(AppError::io(&current))?;
                 current = match current.parent() {
                     Some(dir) if link.is_relative() => dir.join(link),
                     _ => link,
@@ -183,12 +178,9 @@ fn follow_links(path: &Path) -> Result<PathBuf> {
             _ => return Ok(current),
         }
     }
-    Err(RouthError::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(format!(
-            "more than {MAX_LINK_DEPTH} symbolic links to follow"
-        )),
-    })
+    Err(AppError::io(path)(std::io::Error::other(format!(
+        "more than {MAX_LINK_DEPTH} symbolic links to follow"
+    ))))
 }
 
 /// A registered temporary file, removed (and unregistered) when dropped unless renamed.
@@ -197,12 +189,25 @@ struct Temporary {
     renamed: bool,
 }
 
+/// Put `path` on the list of temporary files that a signal removes ([`remove_temporaries_on_signal`]).
+pub(crate) fn register_temporary(path: &Path) {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .push(path.to_path_buf());
+}
+
+/// Take `path` off that list (it was renamed or removed).
+pub(crate) fn unregister_temporary(path: &Path) {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .retain(|p| p != path);
+}
+
 impl Temporary {
     fn register(path: PathBuf) -> Self {
-        TEMPORARIES
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .push(path.clone());
+        register_temporary(&path);
         Temporary {
             path,
             renamed: false,
@@ -219,8 +224,7 @@ impl Drop for Temporary {
         if !self.renamed {
             let _ = std::fs::remove_file(&self.path);
         }
-        let mut list = TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner());
-        list.retain(|p| p != &self.path);
+        unregister_temporary(&self.path);
     }
 }
 
@@ -249,7 +253,7 @@ mod tests {
         std::fs::write(&path, "old").unwrap();
         let result = write_atomic(&path, |w| {
             w.write_all(b"half").unwrap();
-            Err(RouthError::State("stopped".into()))
+            Err(RouthError::State("stopped".into()).into())
         });
         assert!(result.is_err());
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");

@@ -17,7 +17,7 @@
 //! Units: the SI units of the case (lengths in m, times in s; `G = 9.81` means metres and
 //! seconds).
 
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::INTEGRAL_NAMES;
 use crate::output::write_atomic;
 use crate::table::Table;
@@ -206,10 +206,11 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
         });
     }
     if series.is_empty() {
-        return Err(RouthError::Table {
+        return Err(FileError::Table {
             origin: table.origin.clone(),
             message: format!("no integral columns ({})", INTEGRAL_NAMES.join(", ")),
-        });
+        }
+        .into());
     }
     Ok(Plot {
         name: "integral_drift",
@@ -250,9 +251,11 @@ const COMPARED_VECTORS: [(&str, [&str; 3]); 3] = [
 /// whose three columns are in both tables); the tables must be sampled at the same times.
 /// `labels` name a and b in the title (for example `("quadrature", "DOP853")`).
 pub fn difference_plot(a: &Table, b: &Table, labels: (&str, &str)) -> Result<Plot> {
-    let error = |message: &str| RouthError::Table {
-        origin: format!("{} and {}", a.origin, b.origin),
-        message: message.to_string(),
+    let error = |message: &str| {
+        AppError::from(FileError::Table {
+            origin: format!("{} and {}", a.origin, b.origin),
+            message: message.to_string(),
+        })
     };
     let (ta, tb) = (a.column("t")?, b.column("t")?);
     let same_times = ta.len() == tb.len()
@@ -522,9 +525,11 @@ impl Figure for Plot {
 /// Draw `figure` into `path` in `format` (written atomically, with the shipped font).
 pub fn render_figure(figure: &impl Figure, path: &Path, format: Format) -> Result<()> {
     register_font();
-    let failed = |e: &dyn std::fmt::Display| RouthError::Plot {
-        figure: path.display().to_string(),
-        message: e.to_string(),
+    let failed = |e: &dyn std::fmt::Display| {
+        AppError::from(FileError::Plot {
+            figure: path.display().to_string(),
+            message: e.to_string(),
+        })
     };
     match format {
         Format::Svg => {

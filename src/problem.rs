@@ -204,7 +204,7 @@ impl Problem {
             .map(|c| move |_: f64, x: &[f64; 6]| x[c.component] - c.value);
         let event_ref = event.as_ref().map(|g| g as &dyn Fn(f64, &[f64; 6]) -> f64);
         let mut samples = Vec::new();
-        let run = integrate_observed(
+        let run = integrate_observed::<_, RouthError, 6>(
             &self.ball,
             &ReducedSystem(&self.ball),
             self.initial.to_array(),

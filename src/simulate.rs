@@ -8,7 +8,7 @@ use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
     check_samples, drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem,
-    Options, Projection, Stepper, Stop,
+    OnSample, Options, Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -218,7 +218,8 @@ pub fn validate(settings: &Settings) -> Result<()> {
 /// (further components, such as the orientation of the full motion, follow it), from
 /// `y0` over `[0, t_end]`. `on_sample(t, y)` receives the equally spaced samples; the
 /// integrals are tracked on the reduced part at every step end and sample. A failed
-/// integration is an error ([`RouthError::Integrate`]); [`integrate_observed`] tells more.
+/// integration is an error ([`RouthError::Integrate`]); [`integrate_observed`] tells more
+/// (and takes a callback with an error of its own, one that writes a file, say).
 pub fn run<S: OdeSystem<N>, const N: usize>(
     body: &impl AsBall,
     sys: &S,
@@ -226,11 +227,7 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
     settings: &Settings,
     on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
 ) -> Result<Summary> {
-    let observed = integrate_observed(body, sys, y0, settings, None, on_sample, &mut |_| {})?;
-    match observed.failure {
-        Some(e) => Err(e.into()),
-        None => Ok(observed.summary),
-    }
+    integrate_observed(body, sys, y0, settings, None, on_sample, &mut |_| {})?.summary()
 }
 
 /// What [`integrate_observed`] and [`integrate_span`] return: the summary, how the run
@@ -248,6 +245,16 @@ pub struct Observed<const N: usize> {
     pub y: [f64; N],
     /// The integrator's error, if it failed.
     pub failure: Option<IntegrateError>,
+}
+
+impl<const N: usize> Observed<N> {
+    /// The summary of a run that reached its end, or the integrator's failure as an error.
+    pub fn summary(self) -> Result<Summary> {
+        match self.failure {
+            Some(e) => Err(e.into()),
+            None => Ok(self.summary),
+        }
+    }
 }
 
 /// The interval and the sample times of [`integrate_span`].
@@ -283,22 +290,35 @@ pub enum Next<const N: usize> {
 
 /// The per-step observer of [`integrate_span`]: `on_step(t, y, stepper)` after each accepted
 /// step, with the (projected) step end and the stepper (for its dense output on the step).
-pub type StepObserver<'a, const N: usize> =
-    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> Result<Next<N>> + 'a;
+pub type StepObserver<'a, E, const N: usize> =
+    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> std::result::Result<Next<N>, E> + 'a;
+
+/// Why the driver stopped early inside [`integrate_span`]: the integrator failed (reported in
+/// [`Observed::failure`]) or a callback returned its error `E` (returned as is).
+enum Halt<E> {
+    Integrate(IntegrateError),
+    Callback(E),
+}
+
+impl<E> From<IntegrateError> for Halt<E> {
+    fn from(e: IntegrateError) -> Self {
+        Halt::Integrate(e)
+    }
+}
 
 /// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: [`integrate_span`]
 /// over `[0, settings.t_end]` with `settings.samples` equally spaced samples, `on_step(stepper)`
-/// called after each step.
+/// called after each step. `E` is the error type of `on_sample`, as in [`integrate_span`].
 #[allow(clippy::too_many_arguments)]
-pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
+pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     body: &impl AsBall,
     sys: &S,
     y0: [f64; N],
     settings: &Settings,
     event: Option<EventFn<'_, N>>,
-    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+    on_sample: &mut OnSample<'_, E, N>,
     on_step: &mut dyn FnMut(&dyn Stepper<N>),
-) -> Result<Observed<N>> {
+) -> std::result::Result<Observed<N>, E> {
     validate(settings)?;
     let times: Vec<f64> = (0..settings.samples)
         .map(|i| {
@@ -340,17 +360,19 @@ pub fn integrate_observed<S: OdeSystem<N>, const N: usize>(
 /// the end (projected, with `settings.project`) go to `on_sample`; the integrals are tracked at
 /// the samples and the step end. `event` stops the run at its first sign change (as in
 /// [`drive`]). Invalid settings or samples and errors of the callbacks are errors; a failure of
-/// the integrator is reported in [`Observed::failure`] with the state reached.
+/// the integrator is reported in [`Observed::failure`] with the state reached. The callbacks'
+/// error type `E` (the library's [`RouthError`], or one holding it, such as the front ends'
+/// `AppError`) is the error type of the result.
 #[allow(clippy::too_many_arguments)]
-pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
+pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     body: &impl AsBall,
     sys: &S,
     span: &Span<'_, N>,
     settings: &Settings,
     event: Option<EventFn<'_, N>>,
-    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
-    on_step: &mut StepObserver<'_, N>,
-) -> Result<Observed<N>> {
+    on_sample: &mut OnSample<'_, E, N>,
+    on_step: &mut StepObserver<'_, E, N>,
+) -> std::result::Result<Observed<N>, E> {
     let Span {
         t0,
         y0,
@@ -362,7 +384,7 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
         samples: 0,
         ..*settings
     })?;
-    check_samples(t0, t1, samples)?;
+    check_samples(t0, t1, samples).map_err(RouthError::from)?;
     let start = Instant::now();
     let dir = if t1 >= t0 { 1.0 } else { -1.0 };
     let x0 = reduced(&y0);
@@ -374,7 +396,7 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
         max_steps: settings.max_steps,
         ..Options::default()
     };
-    let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts)?;
+    let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
     let plan = Drive {
         samples,
         project: level.is_some().then_some(&project as Projection<'_, N>),
@@ -383,7 +405,7 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
     let drift = RefCell::new(DriftTracker::new(body, &x0));
     // The samples of a step wait for the observer, which may end the run within the step.
     let pending: RefCell<Vec<(f64, [f64; N])>> = RefCell::new(Vec::new());
-    let mut report = |until: f64| -> Result<()> {
+    let mut report = |until: f64| -> std::result::Result<(), E> {
         let mut pending = pending.borrow_mut();
         for (s, mut y) in pending.drain(..) {
             if (s - until) * dir <= 0.0 {
@@ -405,15 +427,15 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
         },
         &mut |t, y, stepper| {
             if y.iter().any(|v| !v.is_finite()) {
-                return Err(IntegrateError::NonFinite { t }.into());
+                return Err(Halt::Integrate(IntegrateError::NonFinite { t }));
             }
             last_good = t;
-            let next = on_step(t, y, stepper)?;
+            let next = on_step(t, y, stepper).map_err(Halt::Callback)?;
             let (until, y_last) = match next {
                 Next::StopAt { t, y } => (t, y),
                 Next::Continue | Next::Stop => (t, *y),
             };
-            report(until)?;
+            report(until).map_err(Halt::Callback)?;
             drift.borrow_mut().observe(body, &reduced(&y_last));
             Ok(match next {
                 Next::Continue => Control::Continue,
@@ -430,8 +452,8 @@ pub fn integrate_span<S: OdeSystem<N>, const N: usize>(
             Some((t, y)) => (Stop::Stopped { t }, t, y, None),
             None => (o.stop, o.t, o.y, None),
         },
-        Err(RouthError::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
-        Err(other) => return Err(other),
+        Err(Halt::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
+        Err(Halt::Callback(e)) => return Err(e),
     };
     report(if failure.is_some() { last_good } else { t })?;
     let stats = stepper.stats();

@@ -4,11 +4,11 @@
 //! reads as NaN). The plots and the animation draw from a [`Table`].
 
 use crate::case::Case;
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
 use crate::integrate::Method;
 use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
-use crate::simulate::{run, Settings};
+use crate::simulate::{integrate_observed, Settings};
 use crate::state::State;
 use std::path::Path;
 
@@ -111,11 +111,12 @@ impl Table {
             .ok_or_else(|| self.error(format!("no column `{name}`")))
     }
 
-    fn error(&self, message: String) -> RouthError {
-        RouthError::Table {
+    fn error(&self, message: String) -> AppError {
+        FileError::Table {
             origin: self.origin.clone(),
             message,
         }
+        .into()
     }
 
     /// Parse CSV text: a header of distinct names, then at least two rows of finite numbers,
@@ -124,9 +125,11 @@ impl Table {
     /// else that cannot be drawn (a `NaN` or `inf` written out, a ragged row, one row) is
     /// refused with its line and column.
     pub fn parse_csv(text: &str, origin: &str) -> Result<Self> {
-        let error = |message: String| RouthError::Table {
-            origin: origin.to_string(),
-            message,
+        let error = |message: String| {
+            AppError::from(FileError::Table {
+                origin: origin.to_string(),
+                message,
+            })
         };
         let mut lines = text
             .lines()
@@ -185,7 +188,7 @@ impl Table {
 
     /// Read a CSV file written by `routh simulate`.
     pub fn read_csv(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|source| RouthError::Io {
+        let text = std::fs::read_to_string(path).map_err(|source| FileError::Io {
             path: path.to_path_buf(),
             source,
         })?;
@@ -213,11 +216,12 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
     let names = csv_header(&tail).split(',').map(str::to_string).collect();
     let mut table = Table::new(&case.source, names);
     let body = &case.ball;
-    run(
+    integrate_observed(
         body,
         &FullMotion { body },
         initial_full(&case.initial),
         &settings,
+        None,
         &mut |t, y| {
             let x: [f64; 6] = std::array::from_fn(|i| y[i]);
             let omega = State::from_array(&x).omega(body);
@@ -232,7 +236,9 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
                 .collect();
             table.push_row(&row)
         },
-    )?;
+        &mut |_| {},
+    )?
+    .summary()?;
     Ok(table)
 }
 

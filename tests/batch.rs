@@ -1,11 +1,14 @@
-//! The batched DOP853 ([`routh::batch`]) against the one-at-a-time DOP853
-//! ([`routh::integrate::Dop853`] through [`routh::integrate::drive`]): each lane is bitwise
+//! The batched DOP853 and Taylor method ([`routh::batch`], [`routh::batch::taylor`]) against
+//! the one-at-a-time DOP853 and Taylor method ([`routh::integrate::Dop853`],
+//! [`routh::integrate::Taylor`] through [`routh::integrate::drive`]): each lane is bitwise
 //! the one-at-a-time integration (the same operations in the same order), so the tolerance
 //! of every comparison here is zero: equal bits of every step end, of the dense output in the
 //! middle of every step, of the final state, and equal counters.
 
 use routh::batch::{self, Job, LaneEnd, Queue, LANES};
-use routh::integrate::{drive, Control, Dop853, Drive, IntegrateError, Options, Stats, Stepper};
+use routh::integrate::{
+    drive, Control, Dop853, Drive, IntegrateError, Method, Options, Stats, Stepper, Taylor,
+};
 use routh::simulate::ReducedSystem;
 use routh::state::{Normalise, State};
 use routh::Body;
@@ -68,10 +71,25 @@ impl Queue<6> for Recorder {
     }
 }
 
+/// The runs of `queue` in lanes of `method` (DOP853 or Taylor).
+fn integrate(
+    method: Method,
+    body: &Body,
+    opts: &Options,
+    queue: &mut Recorder,
+) -> Result<(), IntegrateError> {
+    let sys = ReducedSystem(body);
+    match method {
+        Method::Dop853 => batch::integrate::<_, _, 6, LANES>(&sys, opts, queue),
+        Method::Taylor => batch::taylor::integrate(&sys, opts, queue),
+        other => panic!("no lanes for {other}"),
+    }
+}
+
 /// The runs in lanes.
-fn in_lanes(body: &Body, jobs: &[Job<6>], opts: &Options) -> Vec<Record> {
+fn in_lanes(method: Method, body: &Body, jobs: &[Job<6>], opts: &Options) -> Vec<Record> {
     let mut queue = Recorder::new(jobs.to_vec());
-    batch::integrate::<_, _, 6, LANES>(&ReducedSystem(body), opts, &mut queue).unwrap();
+    integrate(method, body, opts, &mut queue).unwrap();
     assert!(
         queue.in_lane.iter().all(Option::is_none),
         "a lane never ended"
@@ -80,13 +98,22 @@ fn in_lanes(body: &Body, jobs: &[Job<6>], opts: &Options) -> Vec<Record> {
 }
 
 /// The same run one at a time, recorded the same way.
-fn one_at_a_time(body: &Body, job: &Job<6>, opts: &Options) -> Record {
+fn one_at_a_time(method: Method, body: &Body, job: &Job<6>, opts: &Options) -> Record {
     let sys = ReducedSystem(body);
     let mut record = Record {
         steps: Vec::new(),
         end: None,
     };
-    let mut stepper = match Dop853::new(&sys, job.t0, job.y0, job.t_end, opts) {
+    let stepper: Result<Box<dyn Stepper<6>>, _> = match method {
+        Method::Dop853 => {
+            Dop853::new(&sys, job.t0, job.y0, job.t_end, opts).map(|s| Box::new(s) as _)
+        }
+        Method::Taylor => {
+            Taylor::new(&sys, job.t0, job.y0, job.t_end, opts).map(|s| Box::new(s) as _)
+        }
+        other => panic!("no lanes for {other}"),
+    };
+    let mut stepper = match stepper {
         Ok(s) => s,
         Err(e) => {
             record.end = Some((job.t0, job.y0, Stats::default(), Some(e)));
@@ -94,7 +121,7 @@ fn one_at_a_time(body: &Body, job: &Job<6>, opts: &Options) -> Record {
         }
     };
     let outcome = drive(
-        &mut stepper,
+        stepper.as_mut(),
         &Drive::default(),
         &mut |_, _| Ok::<_, IntegrateError>(()),
         &mut |_, _, s| {
@@ -168,38 +195,51 @@ fn same_bits(a: &Record, b: &Record) -> bool {
         }
 }
 
-/// 1024 runs of the default body, tilts in (0.05, 1.5), to t = 10 at rtol = atol = 1e-12:
-/// every lane is bitwise the one-at-a-time run (every step end, the dense output in every
-/// step, the final state, the counters). Tolerance zero, because the lanes do the same
-/// floating-point operations in the same order. Negative control: the one-at-a-time runs
-/// without compensated summation (one rounding per step moved) differ in the last bits for
-/// most runs, so the comparison sees a single rounding.
-#[test]
-fn lanes_are_bitwise_the_one_at_a_time_dop853_on_1024_runs() {
+/// 1024 runs of the default body, tilts in (0.05, 1.5), to t = 10 at rtol = atol = 1e-12,
+/// in lanes of `method`: every lane is bitwise the one-at-a-time run (every step end, the
+/// dense output in every step, the final state, the counters). Tolerance zero, because the
+/// lanes do the same floating-point operations in the same order. Negative control: the
+/// one-at-a-time runs without compensated summation (one rounding per step moved) differ in
+/// the last bits for most runs (more than `min_differ`), so the comparison sees a single
+/// rounding.
+fn lanes_are_bitwise_the_one_at_a_time_run_on_1024_runs(method: Method, min_differ: usize) {
     let body = Body::default();
     let opts = options(1e-12);
     let jobs = runs(&body, 1024, 10.0);
-    let lanes = in_lanes(&body, &jobs, &opts);
+    let lanes = in_lanes(method, &body, &jobs, &opts);
     let plain = Options {
         compensated: false,
         ..opts
     };
     let mut differ = 0;
     for (j, (job, record)) in jobs.iter().zip(&lanes).enumerate() {
-        let alone = one_at_a_time(&body, job, &opts);
+        let alone = one_at_a_time(method, &body, job, &opts);
         assert!(alone.end.as_ref().unwrap().3.is_none(), "run {j} failed");
         assert!(
             same_bits(record, &alone),
             "run {j}: lanes differ from one at a time"
         );
-        if !same_bits(record, &one_at_a_time(&body, job, &plain)) {
+        if !same_bits(record, &one_at_a_time(method, &body, job, &plain)) {
             differ += 1;
         }
     }
     assert!(
-        differ > 900,
+        differ > min_differ,
         "negative control: only {differ} of 1024 runs differ"
     );
+}
+
+#[test]
+fn lanes_are_bitwise_the_one_at_a_time_dop853_on_1024_runs() {
+    lanes_are_bitwise_the_one_at_a_time_run_on_1024_runs(Method::Dop853, 900);
+}
+
+/// The Taylor lanes (4 or 8, as this CPU has AVX2 or AVX-512): bitwise the one-at-a-time
+/// [`Taylor`] run, the same orders and steps; its compensated update moves fewer roundings
+/// than DOP853's (fewer, longer steps), hence the lower bound of the control.
+#[test]
+fn lanes_are_bitwise_the_one_at_a_time_taylor_on_1024_runs() {
+    lanes_are_bitwise_the_one_at_a_time_run_on_1024_runs(Method::Taylor, 500);
 }
 
 /// Each lane keeps its own end time and direction: runs to different ends, forward and
@@ -207,6 +247,12 @@ fn lanes_are_bitwise_the_one_at_a_time_dop853_on_1024_runs() {
 /// bitwise their one-at-a-time run.
 #[test]
 fn each_lane_keeps_its_own_end_time() {
+    for method in [Method::Dop853, Method::Taylor] {
+        each_lane_keeps_its_own_end_time_with(method);
+    }
+}
+
+fn each_lane_keeps_its_own_end_time_with(method: Method) {
     let body = Body::default();
     let opts = options(1e-10);
     let jobs: Vec<Job<6>> = tilts(37)
@@ -222,10 +268,11 @@ fn each_lane_keeps_its_own_end_time() {
             },
         })
         .collect();
-    for (j, (job, record)) in jobs.iter().zip(in_lanes(&body, &jobs, &opts)).enumerate() {
+    let lanes = in_lanes(method, &body, &jobs, &opts);
+    for (j, (job, record)) in jobs.iter().zip(lanes).enumerate() {
         assert!(
-            same_bits(&record, &one_at_a_time(&body, job, &opts)),
-            "run {j}"
+            same_bits(&record, &one_at_a_time(method, &body, job, &opts)),
+            "{method} run {j}"
         );
     }
 }
@@ -237,6 +284,12 @@ fn each_lane_keeps_its_own_end_time() {
 /// failing ones.
 #[test]
 fn a_failing_lane_does_not_disturb_the_others() {
+    for method in [Method::Dop853, Method::Taylor] {
+        a_failing_lane_does_not_disturb_the_others_with(method);
+    }
+}
+
+fn a_failing_lane_does_not_disturb_the_others_with(method: Method) {
     let body = Body::default();
     let opts = Options {
         max_steps: 400,
@@ -265,15 +318,18 @@ fn a_failing_lane_does_not_disturb_the_others() {
             ..good[0]
         },
     );
-    let mixed = in_lanes(&body, &jobs, &opts);
-    let clean = in_lanes(&body, &good, &opts);
+    let mixed = in_lanes(method, &body, &jobs, &opts);
+    let clean = in_lanes(method, &body, &good, &opts);
     for (slot, kind) in [(3, "max_steps"), (10, "NaN"), (20, "infinite t_end")] {
         let failure = mixed[slot].end.as_ref().unwrap().3.clone();
         assert!(failure.is_some(), "{kind}: should fail");
         assert_eq!(
             failure,
-            one_at_a_time(&body, &jobs[slot], &opts).end.unwrap().3,
-            "{kind}"
+            one_at_a_time(method, &body, &jobs[slot], &opts)
+                .end
+                .unwrap()
+                .3,
+            "{method} {kind}"
         );
     }
     assert!(matches!(
@@ -289,32 +345,47 @@ fn a_failing_lane_does_not_disturb_the_others() {
     assert_eq!(survivors.len(), good.len());
     for (j, (record, job)) in survivors.iter().zip(&good).enumerate() {
         assert!(record.end.as_ref().unwrap().3.is_none(), "run {j} failed");
-        assert!(same_bits(record, &clean[j]), "run {j} disturbed");
+        assert!(same_bits(record, &clean[j]), "{method} run {j} disturbed");
         assert!(
-            same_bits(record, &one_at_a_time(&body, job, &opts)),
-            "run {j}"
+            same_bits(record, &one_at_a_time(method, &body, job, &opts)),
+            "{method} run {j}"
         );
     }
 }
 
 /// Negative control of the harness: a lane is compared with the one-at-a-time run of its
 /// neighbour's tilt, and with its own run at another tolerance; both must be seen to differ.
+/// For the Taylor lanes also: a lane fed another state (its neighbour's, perturbed in the
+/// last bit of M3) differs from its own one-at-a-time run.
 #[test]
 fn the_comparison_sees_a_different_run() {
     let body = Body::default();
     let opts = options(1e-12);
     let jobs = runs(&body, 16, 10.0);
-    let lanes = in_lanes(&body, &jobs, &opts);
-    for j in 0..15 {
-        assert!(!same_bits(
-            &lanes[j],
-            &one_at_a_time(&body, &jobs[j + 1], &opts)
-        ));
-        assert!(!same_bits(
-            &lanes[j],
-            &one_at_a_time(&body, &jobs[j], &options(1e-11))
-        ));
+    for method in [Method::Dop853, Method::Taylor] {
+        let lanes = in_lanes(method, &body, &jobs, &opts);
+        for j in 0..15 {
+            assert!(!same_bits(
+                &lanes[j],
+                &one_at_a_time(method, &body, &jobs[j + 1], &opts)
+            ));
+            assert!(!same_bits(
+                &lanes[j],
+                &one_at_a_time(method, &body, &jobs[j], &options(1e-11))
+            ));
+        }
     }
+    let mut fed: Vec<Job<6>> = jobs.clone();
+    fed[5].y0[5] = f64::from_bits(fed[5].y0[5].to_bits() + 1);
+    let lanes = in_lanes(Method::Taylor, &body, &fed, &opts);
+    assert!(!same_bits(
+        &lanes[5],
+        &one_at_a_time(Method::Taylor, &body, &jobs[5], &opts)
+    ));
+    assert!(same_bits(
+        &lanes[6],
+        &one_at_a_time(Method::Taylor, &body, &jobs[6], &opts)
+    ));
 }
 
 /// Invalid options are refused before any run starts, as by the one-at-a-time integrator.
@@ -327,10 +398,12 @@ fn invalid_options_are_refused_before_any_run() {
         t_end: 1.0,
     }]);
     let bad = options(-1e-10);
-    let err = batch::integrate::<_, _, 6, LANES>(&ReducedSystem(&body), &bad, &mut queue);
-    assert!(matches!(
-        err,
-        Err(IntegrateError::InvalidOption { name: "rtol", .. })
-    ));
-    assert_eq!(queue.next, 0, "no run should have started");
+    for method in [Method::Dop853, Method::Taylor] {
+        let err = integrate(method, &body, &bad, &mut queue);
+        assert!(matches!(
+            err,
+            Err(IntegrateError::InvalidOption { name: "rtol", .. })
+        ));
+        assert_eq!(queue.next, 0, "no run should have started");
+    }
 }

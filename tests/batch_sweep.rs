@@ -4,7 +4,6 @@
 //! grid that mixes bodies (runs of one body share lanes), fails some runs (max steps) and
 //! has more runs than lanes. Tolerance zero: the lanes do the one-at-a-time arithmetic.
 
-#[allow(dead_code)] // this file uses only `routh` of the shared helpers
 mod common;
 use common::routh;
 
@@ -27,9 +26,21 @@ fn sweep_rows(case: &str, extra: &[&str]) -> Vec<serde_json::Value> {
 /// differ.
 #[test]
 fn sweep_rows_in_lanes_equal_one_at_a_time_bitwise() {
+    rows_in_lanes_equal_one_at_a_time("dop853", "150");
+}
+
+/// The same with `--method taylor` (the Taylor lanes of `routh::batch::taylor`), max_steps
+/// set so that the fastest spins fail (the runs take 8 to 150 steps at rtol 1e-10 with the
+/// order rule of `taylor::step_exponent`; 120 fails the fast spins only).
+#[test]
+fn taylor_sweep_rows_in_lanes_equal_one_at_a_time_bitwise() {
+    rows_in_lanes_equal_one_at_a_time("taylor", "120");
+}
+
+fn rows_in_lanes_equal_one_at_a_time(method: &str, max_steps: &str) {
     let dir = std::env::temp_dir().join(format!("routh-batch-sweep-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let case = dir.join("grid.toml");
+    let case = dir.join(format!("grid-{method}.toml"));
     std::fs::write(
         &case,
         "[body]\nm = 1.0\nR = 1.0\na = 0.3\nI1 = 0.4\nI3 = 0.5\nG = 9.81\n\
@@ -40,7 +51,7 @@ fn sweep_rows_in_lanes_equal_one_at_a_time_bitwise() {
     )
     .unwrap();
     let case = case.to_str().unwrap();
-    let limit = ["--max-steps", "150"];
+    let limit = ["--max-steps", max_steps, "--method", method];
     let lanes = sweep_rows(case, &limit);
     let alone = sweep_rows(case, &[&limit[..], &["--no-batch"]].concat());
     assert_eq!(lanes.len(), 100);

@@ -2,7 +2,7 @@
 //! body and state validation gives an error that names the key (or parameter) and the file.
 
 use routh::case::{Case, DEFAULT_CASE};
-use routh::RouthError;
+use routh::{AppError, FileError};
 
 fn with(old: &str, new: &str) -> String {
     assert!(
@@ -140,6 +140,6 @@ fn integration_rules_are_enforced() {
 #[test]
 fn missing_file_is_an_error_naming_it() {
     let e = Case::from_file(std::path::Path::new("/nonexistent/case.toml")).unwrap_err();
-    assert!(matches!(e, RouthError::Case { .. }));
+    assert!(matches!(e, AppError::File(FileError::Case { .. })));
     assert!(e.to_string().contains("/nonexistent/case.toml"));
 }

@@ -1,7 +1,9 @@
 //! `steady` names the quantity that overflows and its cause (issue 10, item 5), and JSON output
 //! to a closed pipe ends quietly instead of panicking.
 
-use std::process::{Command, Stdio};
+use std::process::Command;
+
+mod common;
 
 fn routh() -> Command {
     Command::new(env!("CARGO_BIN_EXE_routh"))
@@ -68,14 +70,9 @@ fn json_to_a_closed_pipe_ends_quietly() {
     // The reader has gone before `steady` writes (it computes first): the write fails with
     // EPIPE, which ends the process with exit code 0 and nothing on stderr (it panicked with
     // exit code 101 before).
-    let mut child = routh()
-        .args(["steady", "--json"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    drop(child.stdout.take());
-    let out = child.wait_with_output().unwrap();
+    let mut command = routh();
+    command.args(["steady", "--json"]);
+    let out = common::with_closed_stdout(command);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{err}");
     assert!(err.is_empty(), "{err}");

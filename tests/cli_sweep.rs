@@ -49,10 +49,27 @@ const GRID: &str = "[sweep]\ntilt = { range = [0.3, 1.2], n = 4 }\nspin = { valu
 /// run 0's case differs from run 1's row.
 #[test]
 fn every_run_equals_routh_simulate_bitwise_whatever_the_thread_count() {
-    let case = case_file("grid.toml", [0.0, 0.0, 1.0], [0.5, 0.2, 8.0], 5.0, GRID);
+    every_run_equals_routh_simulate("dop853");
+}
+
+/// The same with the Taylor method (its runs in the Taylor lanes of the sweep, one at a time
+/// in `routh simulate`).
+#[test]
+fn every_taylor_run_equals_routh_simulate_bitwise_whatever_the_thread_count() {
+    every_run_equals_routh_simulate("taylor");
+}
+
+fn every_run_equals_routh_simulate(method: &str) {
+    let case = case_file(
+        &format!("grid-{method}.toml"),
+        [0.0, 0.0, 1.0],
+        [0.5, 0.2, 8.0],
+        5.0,
+        GRID,
+    );
     let case = case.to_str().unwrap();
-    let one = sweep_json(&["--case", case, "--threads", "1"]);
-    let two = sweep_json(&["--case", case, "--threads", "2"]);
+    let one = sweep_json(&["--case", case, "--threads", "1", "--method", method]);
+    let two = sweep_json(&["--case", case, "--threads", "2", "--method", method]);
     let rows = one["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 16);
     assert_eq!(one["rows"], two["rows"], "1 thread and 2 threads differ");
@@ -60,13 +77,20 @@ fn every_run_equals_routh_simulate_bitwise_whatever_the_thread_count() {
         let tilt = row["tilt"].as_f64().unwrap();
         let spin = row["spin"].as_f64().unwrap();
         let a = row["body.a"].as_f64().unwrap();
-        let single = scratch(&format!("run{}.toml", row["run"]));
+        let single = scratch(&format!("run{}-{method}.toml", row["run"]));
         let text = format!(
             "[body]\nm = 1.0\nR = 1.0\na = {a:?}\nI1 = 0.4\nI3 = 0.5\nG = 9.81\n[initial]\ngamma = {:?}\nomega = [0.5, 0.2, {spin:?}]\n[integration]\nt_end = 5.0\nrtol = 1e-10\natol = 1e-10\n",
             [tilt.sin(), 0.0, tilt.cos()]
         );
         std::fs::write(&single, text).unwrap();
-        let out = routh(&["simulate", "--json", "--case", single.to_str().unwrap()]);
+        let out = routh(&[
+            "simulate",
+            "--json",
+            "--case",
+            single.to_str().unwrap(),
+            "--method",
+            method,
+        ]);
         assert!(out.status.success());
         let sim: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         let fs = &sim["final_state"];
@@ -93,7 +117,8 @@ fn every_run_equals_routh_simulate_bitwise_whatever_the_thread_count() {
             assert_eq!(row[key], sim[key], "run {}: {key}", row["run"]);
         }
         // Locating a turning point prepares DOP853's 7th-order dense output on its step,
-        // which costs 3 more field evaluations: the only difference in the counts.
+        // which costs 3 more field evaluations: the only difference in the counts (none for
+        // the Taylor method, whose dense output is the step's series).
         let extra = row["rhs_evals"].as_u64().unwrap() - sim["rhs_evals"].as_u64().unwrap();
         assert!(
             extra % 3 == 0 && extra <= 3 * row["steps"].as_u64().unwrap(),

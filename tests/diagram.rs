@@ -407,3 +407,35 @@ fn monodromy_matrix_is_reproducible_and_unipotent() {
     let points = follow_loop(&body, elsewhere, radii, 64).unwrap().unwrap();
     assert_eq!(winding(&points), 0);
 }
+
+/// The monodromy loop of the diagram keeps clear of the critical curves by at least its own
+/// size (in units of the window): every loop point is at least the loop's fraction of the
+/// window away from the polylines of the curves. The old fixed size (4 % of the window) put
+/// the loop of the default body at H3 = 1 within 1 % of the window of the elliptic curve
+/// (touching it on the figure): this test fails for it.
+#[test]
+fn monodromy_loop_keeps_clear_of_the_critical_curves() {
+    use routh::diagram::{clearance, Diagram, Resolution};
+    let body = default_body();
+    let resolution = Resolution {
+        tilts: 400,
+        grid: 6,
+        loop_points: 32,
+    };
+    let diagram = Diagram::new(&body, 1.0, &[], resolution).unwrap();
+    let m = diagram
+        .monodromy
+        .as_ref()
+        .expect("a focus-focus point at H3 = 1");
+    let fraction = m.radii.0 / (diagram.window.k.1 - diagram.window.k.0);
+    let nearest = m
+        .points
+        .iter()
+        .map(|p| clearance(&diagram.window, p.value, &diagram.critical_curves))
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        nearest >= 0.99 * fraction,
+        "the loop comes within {nearest:e} of a critical curve, its size is {fraction:e}"
+    );
+    assert_eq!(m.matrix, [[1, -1], [0, 1]]);
+}

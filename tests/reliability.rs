@@ -7,6 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
+mod common;
+
 const DEFAULT: &str = routh::case::DEFAULT_CASE;
 
 fn binary() -> String {
@@ -148,6 +150,15 @@ fn a_named_pipe_is_streamed_into() {
     assert_eq!(listing(&dir), ["pipe"], "no temporary file beside the pipe");
 }
 
+/// Sends `signal` (as `kill` spells it, e.g. `-INT`) to process `pid`.
+fn send(signal: &str, pid: u32) {
+    assert!(Command::new("kill")
+        .args([signal, &pid.to_string()])
+        .status()
+        .unwrap()
+        .success());
+}
+
 /// Start a long `simulate --out`, wait until its temporary file exists, send `signal`, and
 /// check that it ends with the signal and leaves neither the temporary nor the target.
 fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
@@ -176,12 +187,7 @@ fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
         std::thread::sleep(Duration::from_millis(20));
     }
     std::thread::sleep(Duration::from_millis(200));
-    let pid = child.id().to_string();
-    assert!(Command::new("kill")
-        .args([signal, &pid])
-        .status()
-        .unwrap()
-        .success());
+    send(signal, child.id());
     let status = child.wait().unwrap();
     assert!(!status.success(), "{status:?}");
     assert!(
@@ -441,4 +447,181 @@ fn overflow_is_named_with_its_cause() {
     for command in ["exact", "steady"] {
         succeeded(&routh(&[command, "--case", &fast]));
     }
+}
+
+/// Every command that prints on standard output (text, CSV rows, the list of files written),
+/// with quick arguments; the files some of them write go to `dir`.
+fn printing_commands(dir: &Path) -> Vec<Vec<String>> {
+    let sweep = case_file(
+        dir,
+        "sweep.toml",
+        &format!("{DEFAULT}\n[sweep]\nspin = {{ values = [3.0, 5.0] }}\n"),
+    );
+    let d = dir.to_str().unwrap();
+    [
+        "simulate --t-end 1",
+        "simulate --t-end 1 --samples 5",
+        "exact --t 1",
+        "exact --t 1 --samples 5",
+        "exact --t 1 --flow X1",
+        "exact --t 1 --flow X1 --samples 5",
+        "steady",
+        "audit --points 1",
+        "diagram --tilts 8 --grid 8 --loop-points 16 --out DIR/diagram",
+        "plot --t-end 1 --samples 10 --format svg --out DIR/plots",
+        "animate --t-end 1 --samples 10 --out DIR/plots",
+        "sweep --t-end 1 --case SWEEP",
+    ]
+    .iter()
+    .map(|c| {
+        c.replace("DIR", d)
+            .replace("SWEEP", &sweep)
+            .split(' ')
+            .map(str::to_string)
+            .collect()
+    })
+    .collect()
+}
+
+#[test]
+fn plain_text_to_a_closed_pipe_ends_quietly() {
+    // The reader has gone before the command writes: every write fails with EPIPE, which ends
+    // the command with exit code 0 and nothing on stderr (`print!` panicked with exit code 101
+    // before, "failed printing to stdout: Broken pipe").
+    let dir = scratch("closed-pipe");
+    for args in printing_commands(&dir) {
+        let mut command = Command::new(binary());
+        command.args(&args);
+        let out = common::with_closed_stdout(command);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
+        assert!(err.is_empty(), "{args:?}: {err}");
+        // Negative control: with a reader, the command prints something (so the closed pipe
+        // was written to).
+        let printed = succeeded(&routh(&args.iter().map(String::as_str).collect::<Vec<_>>()));
+        assert!(!printed.is_empty(), "{args:?} printed nothing");
+    }
+}
+
+#[test]
+fn plain_text_to_a_full_device_exits_2() {
+    // Any other write error on standard output (a full disk) is reported with exit code 2,
+    // naming standard output (`-` for the samples of `simulate --samples` without `--out`).
+    let dir = scratch("full-device");
+    let Ok(_) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        return;
+    };
+    for args in printing_commands(&dir) {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        let out = Command::new(binary())
+            .args(&args)
+            .stdout(full)
+            .output()
+            .unwrap();
+        refused(&out, &["No space left on device"]);
+        let err = text(&out.stderr);
+        assert!(
+            err.contains("error: standard output: ") || err.contains("error: -: "),
+            "{args:?}: {err}"
+        );
+    }
+}
+
+/// Starts a sweep long enough to be interrupted (300 runs to t = 30, one thread) into
+/// `dir/stopped.csv` and returns once its temporary file holds a row: the case file, the target,
+/// the temporary file and the running child.
+fn running_sweep(dir: &Path) -> (String, PathBuf, PathBuf, std::process::Child) {
+    let case = case_file(
+        dir,
+        "long.toml",
+        &format!(
+            "{}\n[sweep]\ntilt = {{ range = [0.3, 1.4], n = 150 }}\nspin = {{ values = [3.0, 5.0] }}\n",
+            edited("t_end = 100.0", "t_end = 30.0")
+        ),
+    );
+    let target = dir.join("stopped.csv");
+    let child = Command::new(binary())
+        .args(["sweep", "--case", &case, "--threads", "1", "--out"])
+        .arg(&target)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let tmp = dir.join(format!(".stopped.csv.tmp-{}", child.id()));
+    let start = Instant::now();
+    while std::fs::read_to_string(&tmp).map_or(0, |t| t.lines().count()) < 2 {
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "no rows written"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    (case, target, tmp, child)
+}
+
+/// SIGINT during a sweep into `--out`: the sweep stops after the runs in progress, the
+/// target holds the finished rows (a complete table, no temporary file left), and `--resume`
+/// completes it to the rows of an uninterrupted sweep. (SIGTERM: `tests/cli_sweep.rs`.)
+#[test]
+fn sigint_stops_a_sweep_and_resume_completes_it() {
+    let dir = scratch("sweep-sigint");
+    let (case, target, tmp, child) = running_sweep(&dir);
+    send("-INT", child.id());
+    let out = child.wait_with_output().unwrap();
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(130), "{err}");
+    assert!(err.contains("--resume"), "{err}");
+    assert!(!tmp.exists(), "the temporary file was left behind");
+    let rows = |path: &Path| -> Vec<String> {
+        let mut lines: Vec<String> = std::fs::read_to_string(path)
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(str::to_string)
+            .collect();
+        lines.sort_by_key(|l| l.split(',').next().unwrap().parse::<u64>().unwrap());
+        lines
+    };
+    let kept = rows(&target).len();
+    assert!(kept > 0 && kept < 300, "{kept} rows kept");
+    let target_arg = target.to_str().unwrap();
+    succeeded(&routh(&[
+        "sweep", "--case", &case, "--out", target_arg, "--resume",
+    ]));
+    let whole = dir.join("whole.csv");
+    succeeded(&routh(&[
+        "sweep",
+        "--case",
+        &case,
+        "--out",
+        whole.to_str().unwrap(),
+    ]));
+    assert_eq!(rows(&target), rows(&whole));
+    assert_eq!(listing(&dir), ["long.toml", "stopped.csv", "whole.csv"]);
+}
+
+/// A second SIGINT during a sweep (after the first one asked it to stop) ends the process at
+/// once, and the signal handler removes the sweep's temporary file too (it is registered with
+/// the handler's list; before, only the first, graceful stop removed it).
+#[test]
+fn a_second_sigint_during_a_sweep_leaves_no_temporary_file() {
+    let dir = scratch("sweep-sigint-twice");
+    let (_, _, tmp, child) = running_sweep(&dir);
+    for _ in 0..2 {
+        send("-INT", child.id());
+    }
+    let out = child.wait_with_output().unwrap();
+    // Ended by the second signal (the default action, after the handler's cleanup), or with
+    // 130 if the graceful stop of the first one won the race.
+    use std::os::unix::process::ExitStatusExt;
+    assert!(
+        out.status.signal() == Some(2) || out.status.code() == Some(130),
+        "{:?}: {}",
+        out.status,
+        text(&out.stderr)
+    );
+    assert!(!tmp.exists(), "the temporary file was left behind");
 }

@@ -2,14 +2,13 @@
 //! centre of mass anywhere inside), its model and integrals; and [`Rolling`], a `Body` or a
 //! `Ball` as `Problem` and `simulate` take it.
 
-use crate::body::{integrals_dict, map_points, PyBody};
+use crate::body::{integrals_dict, rolling_methods, PyBody};
 use crate::convert::{bad_argument, python_error, vector};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use routh_core::ball::{AsBall, Ball, Model};
-use routh_core::field::vector_field;
 use routh_core::integrals::{Integrals, ALL_INTEGRAL_NAMES};
-use routh_core::state::{State, UNIT_TOLERANCE};
+use routh_core::state::UNIT_TOLERANCE;
 use routh_core::Body;
 
 /// A ball of radius `R` and mass `m` rolling without slipping on a horizontal plane (SI units
@@ -29,8 +28,7 @@ pub struct PyBall {
     pub inner: Ball,
 }
 
-#[pymethods]
-impl PyBall {
+rolling_methods!(PyBall {
     /// `Ball(m, R, I1, I2, I3, com=(0, 0, 0), G=9.81)`; invalid parameters raise
     /// `ValueError` naming the parameter and the rule it breaks.
     #[new]
@@ -54,47 +52,11 @@ impl PyBall {
             .map_err(python_error)
     }
 
-    /// Mass m.
-    #[getter]
-    fn m(&self) -> f64 {
-        self.inner.m
-    }
-
-    /// Radius R.
-    #[getter(R)]
-    fn radius(&self) -> f64 {
-        self.inner.radius
-    }
-
-    /// Principal moment I1 about the centre of mass.
-    #[getter(I1)]
-    fn i1(&self) -> f64 {
-        self.inner.inertia[0]
-    }
-
-    /// Principal moment I2 about the centre of mass.
-    #[getter(I2)]
-    fn i2(&self) -> f64 {
-        self.inner.inertia[1]
-    }
-
-    /// Principal moment I3 about the centre of mass.
-    #[getter(I3)]
-    fn i3(&self) -> f64 {
-        self.inner.inertia[2]
-    }
-
     /// The centre of mass relative to the geometric centre, body frame.
     #[getter]
     fn com(&self) -> (f64, f64, f64) {
         let [x, y, z] = self.inner.com;
         (x, y, z)
-    }
-
-    /// Gravitational acceleration G.
-    #[getter(G)]
-    fn gravity(&self) -> f64 {
-        self.inner.gravity
     }
 
     /// `"routh-sphere"`, `"chaplygin"` or `"general"` (see the class).
@@ -121,10 +83,6 @@ impl PyBall {
         )
     }
 
-    fn __eq__(&self, other: &Self) -> bool {
-        self.inner == other.inner
-    }
-
     /// Pickling: the constructor and its arguments.
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
@@ -140,31 +98,6 @@ impl PyBall {
             b.gravity,
         );
         Ok((slf.get_type().into_any(), args.into_pyobject(slf.py())?))
-    }
-
-    /// The vector field (mg-eq) `dx/dt` at `x` (shape `(6,)` or `(6, k)`), as `Body.field`.
-    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
-    fn field<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        unit_tolerance: Option<f64>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let ball = self.inner;
-        map_points(py, x, unit_tolerance, |p| vector_field(&ball, p))
-    }
-
-    /// The angular velocity `omega = I_Q^{-1} M` (om-m) at `x` (rad per unit time, body
-    /// frame), shape `(3,)` or `(3, k)`, as `Body.omega`.
-    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
-    fn omega<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        unit_tolerance: Option<f64>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let ball = self.inner;
-        map_points(py, x, unit_tolerance, |p| State::from_array(p).omega(&ball))
     }
 
     /// The integrals of the ball's model at `x`, by name (only those the model has; see the
@@ -183,7 +116,7 @@ impl PyBall {
             Integrals::at(&ball, p).all()
         })
     }
-}
+});
 
 /// The rolling body of a `Problem`: a `Body` (the Routh sphere's parameters) or a `Ball`.
 /// Both integrate the same field; the object given is kept to be returned and pickled.

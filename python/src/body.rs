@@ -5,7 +5,6 @@ use crate::convert::{bad_argument, columns, python_error, states, vector};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
-use routh_core::field::vector_field;
 use routh_core::integrals::{Integrals, INTEGRAL_NAMES};
 use routh_core::state::{Normalise, State, UNIT_TOLERANCE};
 
@@ -109,8 +108,94 @@ fn checked_points(
     Ok((points, single))
 }
 
-#[pymethods]
-impl PyBody {
+/// The `#[pymethods]` of a rolling ball's class (`Body`, `Ball`; a class has one such block):
+/// the class's own methods `{ ... }`, then those both share, written once: the getters m, R,
+/// I1, I2, I3, G (of the ball, [`AsBall`](routh_core::ball::AsBall)), equality, `field` and
+/// `omega`.
+macro_rules! rolling_methods {
+    ($class:ident { $($own:tt)* }) => {
+        #[pymethods]
+        impl $class {
+            $($own)*
+
+            /// Mass m.
+            #[getter]
+            fn m(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).m
+            }
+
+            /// Radius R.
+            #[getter(R)]
+            fn radius(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).radius
+            }
+
+            /// Principal moment I1 about the centre of mass.
+            #[getter(I1)]
+            fn i1(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).inertia[0]
+            }
+
+            /// Principal moment I2 about the centre of mass.
+            #[getter(I2)]
+            fn i2(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).inertia[1]
+            }
+
+            /// Principal moment I3 about the centre of mass (the symmetry axis e3 of a `Body`).
+            #[getter(I3)]
+            fn i3(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).inertia[2]
+            }
+
+            /// Gravitational acceleration G.
+            #[getter(G)]
+            fn gravity(&self) -> f64 {
+                routh_core::ball::AsBall::ball(&self.inner).gravity
+            }
+
+            fn __eq__(&self, other: &Self) -> bool {
+                self.inner == other.inner
+            }
+
+            /// The vector field (mg-eq) `dx/dt` at `x` (shape `(6,)` or `(6, k)`; result the same
+            /// shape), in units of x per unit time. `x` must be finite with `||gamma| - 1|` at most
+            /// `unit_tolerance` (default 1e-12, as a state of the library; `None`: not checked; the
+            /// field is defined off the sphere, and another integrator's stages need a looser value
+            /// such as 1e-3): `ValueError` naming the column otherwise.
+            #[pyo3(signature = (x, unit_tolerance = Some(routh_core::state::UNIT_TOLERANCE)))]
+            fn field<'py>(
+                &self,
+                py: Python<'py>,
+                x: &Bound<'py, PyAny>,
+                unit_tolerance: Option<f64>,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let inner = self.inner;
+                $crate::body::map_points(py, x, unit_tolerance, |p| {
+                    routh_core::field::vector_field(&inner, p)
+                })
+            }
+
+            /// The angular velocity `omega = I_Q^{-1} M` of (om-m) at `x` (rad per unit time, body
+            /// frame), shape `(3,)` or `(3, k)`; `unit_tolerance` as in `field`.
+            #[pyo3(signature = (x, unit_tolerance = Some(routh_core::state::UNIT_TOLERANCE)))]
+            fn omega<'py>(
+                &self,
+                py: Python<'py>,
+                x: &Bound<'py, PyAny>,
+                unit_tolerance: Option<f64>,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let inner = self.inner;
+                $crate::body::map_points(py, x, unit_tolerance, |p| {
+                    routh_core::state::State::from_array(p).omega(&inner)
+                })
+            }
+        }
+    };
+}
+pub(crate) use rolling_methods;
+
+rolling_methods!(PyBody {
     /// `Body(m, R, a, I1, I3, G=9.81, I2=None)`; invalid parameters raise `ValueError`
     /// naming the parameter and the rule it breaks.
     #[new]
@@ -122,46 +207,10 @@ impl PyBody {
             .map_err(python_error)
     }
 
-    /// Mass m.
-    #[getter]
-    fn m(&self) -> f64 {
-        self.inner.m
-    }
-
-    /// Radius R.
-    #[getter(R)]
-    fn radius(&self) -> f64 {
-        self.inner.radius
-    }
-
     /// Offset a of the centre of mass (the centre of mass is at `-a e3`).
     #[getter]
     fn a(&self) -> f64 {
         self.inner.a
-    }
-
-    /// Principal moment I1.
-    #[getter(I1)]
-    fn i1(&self) -> f64 {
-        self.inner.i1
-    }
-
-    /// Principal moment I2.
-    #[getter(I2)]
-    fn i2(&self) -> f64 {
-        self.inner.i2
-    }
-
-    /// Principal moment I3 about the symmetry axis e3.
-    #[getter(I3)]
-    fn i3(&self) -> f64 {
-        self.inner.i3
-    }
-
-    /// Gravitational acceleration G.
-    #[getter(G)]
-    fn gravity(&self) -> f64 {
-        self.inner.gravity
     }
 
     /// Whether the body is the Routh sphere (I1 = I2): the exact solution, the steady motions
@@ -179,10 +228,6 @@ impl PyBody {
         )
     }
 
-    fn __eq__(&self, other: &Self) -> bool {
-        self.inner == other.inner
-    }
-
     /// Pickling: the constructor and its arguments.
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
@@ -190,35 +235,6 @@ impl PyBody {
         let b = slf.get().inner;
         let args = (b.m, b.radius, b.a, b.i1, b.i3, b.gravity, b.i2);
         Ok((slf.get_type().into_any(), args.into_pyobject(slf.py())?))
-    }
-
-    /// The vector field (mg-eq) `dx/dt` at `x` (shape `(6,)` or `(6, k)`; result the same
-    /// shape), in units of x per unit time. `x` must be finite with `||gamma| - 1|` at most
-    /// `unit_tolerance` (default 1e-12, as a state of the library; `None`: not checked; the
-    /// field is defined off the sphere, and another integrator's stages need a looser value
-    /// such as 1e-3): `ValueError` naming the column otherwise.
-    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
-    fn field<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        unit_tolerance: Option<f64>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        map_points(py, x, unit_tolerance, |p| vector_field(&self.inner, p))
-    }
-
-    /// The angular velocity `omega = I_Q^{-1} M` of (om-m) at `x` (rad per unit time, body
-    /// frame), shape `(3,)` or `(3, k)`; `unit_tolerance` as in `field`.
-    #[pyo3(signature = (x, unit_tolerance = Some(UNIT_TOLERANCE)))]
-    fn omega<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        unit_tolerance: Option<f64>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        map_points(py, x, unit_tolerance, |p| {
-            State::from_array(p).omega(&self.inner)
-        })
     }
 
     /// The integrals at `x` as a dict `{H1, H2, H3, H4, K}`: energy H1 (int-g, twice the
@@ -262,4 +278,4 @@ impl PyBody {
             .map_err(|e| bad_argument("gamma/omega", e))?;
         Ok(PyArray1::from_slice(py, &state.to_array()))
     }
-}
+});

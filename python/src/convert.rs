@@ -7,29 +7,35 @@ use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use routh_core::state::{Normalise, State};
-use routh_core::RouthError;
+use routh_core::{AppError, FileError, RouthError};
 use serde::Serialize;
 
 /// The Python exception for a library error: the integration or a figure failing at run time
 /// is a `RuntimeError`, a file that cannot be accessed an `OSError`, everything else (parameters,
 /// states, options, case files) a `ValueError`.
-pub fn python_error(e: RouthError) -> PyErr {
+pub fn python_error(e: impl Into<AppError>) -> PyErr {
+    let e = e.into();
     let message = e.to_string();
     match e {
-        RouthError::Integrate(_) | RouthError::Plot { .. } => PyRuntimeError::new_err(message),
-        RouthError::Io { .. } => PyOSError::new_err(message),
-        RouthError::Parameter { .. }
-        | RouthError::Triangle { .. }
-        | RouthError::NotSymmetric { .. }
-        | RouthError::OffAxis { .. }
-        | RouthError::Horizon { .. }
-        | RouthError::Overflow { .. }
-        | RouthError::State(_)
-        | RouthError::Option { .. }
-        | RouthError::Case { .. }
-        | RouthError::Singular { .. }
-        | RouthError::Separatrix { .. }
-        | RouthError::Table { .. } => PyValueError::new_err(message),
+        AppError::Model(RouthError::Integrate(_)) | AppError::File(FileError::Plot { .. }) => {
+            PyRuntimeError::new_err(message)
+        }
+        AppError::File(FileError::Io { .. }) => PyOSError::new_err(message),
+        AppError::Model(
+            RouthError::Parameter { .. }
+            | RouthError::Triangle { .. }
+            | RouthError::NotSymmetric { .. }
+            | RouthError::OffAxis { .. }
+            | RouthError::Horizon { .. }
+            | RouthError::Overflow { .. }
+            | RouthError::State(_)
+            | RouthError::Option { .. }
+            | RouthError::Singular { .. }
+            | RouthError::Separatrix { .. },
+        )
+        | AppError::File(FileError::Case { .. } | FileError::Table { .. }) => {
+            PyValueError::new_err(message)
+        }
     }
 }
 

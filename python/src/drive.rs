@@ -267,7 +267,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         None,
         &mut |t, y| {
             reported.borrow_mut().push((t, *y));
-            Ok(())
+            Ok::<_, routh_core::RouthError>(())
         },
         &mut |t, y, stepper| {
             if dense {

@@ -171,11 +171,19 @@ def test_ctrl_c_interrupts_a_long_integration():
     # SIGINT from a timer thread (as Ctrl-C) 0.3 s into a run that would take minutes
     # (t = 1e6 at 1e-12: ~4e7 steps, ~6 minutes): KeyboardInterrupt within seconds (0.3 ms
     # unloaded; 5 s leaves room for a loaded machine).
+    # Python's own Ctrl-C handler, also when this process was started with SIGINT ignored
+    # (a job started with `&` by a shell without job control).
+    import signal
+
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(0.3, _thread.interrupt_main)
     start = time.perf_counter()
     timer.start()
-    with pytest.raises(KeyboardInterrupt):
-        routh.simulate(BODY, X0, 1e6)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            routh.simulate(BODY, X0, 1e6)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     elapsed = time.perf_counter() - start
     timer.cancel()
     assert elapsed < 5.0, elapsed
@@ -189,7 +197,8 @@ def test_a_real_sigint_stops_a_python_process():
     import subprocess
     import sys
 
-    code = ("import routh, sys\n"
+    code = ("import routh, signal, sys\n"
+            "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
             "b, x, *_ = routh.default_case()\n"
             "print('running', flush=True)\n"
             "routh.simulate(b, x, 1e6)\n")

@@ -12,17 +12,19 @@ use crate::differential::{jacobian, Dual6};
 use crate::integrals::{
     energy, jellett, quadratic_integral, quadratic_integral_free, routh_integral,
 };
+use crate::poisson::deformation::{lie_derivative, TrivialDeformation};
 use crate::poisson::first::{
     g_eq1_coefficients, g_eq2_coefficients, Alpha, Beta, FirstBracket, FirstForm,
 };
 use crate::poisson::lie_poisson::LiePoisson;
 use crate::poisson::reduction::{
     energy_spherical, integrals_in_l, pushforward, routh_spherical, spherical, theta_rate,
-    theta_rate_squared, PoissonMap,
+    theta_rate_squared, MomentumMap, PoissonMap,
 };
 use crate::poisson::second::{
     g_eq3_coefficients, g_eq3_coefficients_h1, SecondAlphas, SecondBracket,
 };
+use crate::poisson::second_reduction::SecondMap;
 use crate::poisson::{norm, Bivector, Reading};
 use crate::scalar::Real;
 
@@ -444,18 +446,25 @@ pub fn claims() -> Vec<Claim> {
             id: "cond2.trivial-deformation",
             label: "cond2",
             statement: "under (cond2) P is a trivial deformation of P0: P = L_Z P0 for some vector field Z",
-            check: |_| Outcome {
-                residual: None,
-                note: "an existence statement about a vector field Z that the paper does not give; the compatibility [P0, P] = 0 it implies is checked by cond2.compatible".into(),
+            check: |s| {
+                let z = TrivialDeformation { bracket: cond2_bracket(body()) };
+                let pts = s.points(&z.bracket.body);
+                let integrability = checks::worst(&pts, |x| {
+                    let (d, w) = z.gauges(&[x[0], x[1], x[2]]);
+                    d.azimuthal.max(w.azimuthal)
+                });
+                Outcome::checked(deformation_defect(&|y| z.field(y), &z.bracket, &pts), format!("Z constructed (poisson::deformation): Z = (0, C(gamma) M + d(gamma) + (gamma, M) w(gamma)), rows of C = {{gamma, M_n}}_P x gamma, d and w by the gauge equation on the sphere (meridian quadratures); max |L_Z P0 - P|/max(|L_Z P0|, |P|) (Frobenius, L_Z P0 with the Jacobian of Z and dP0 by AD); integrability of the gauge equation (azimuthal part of the rest) {integrability:.1e}; alpha = 0.8"))
             },
         },
         Claim {
             id: "p-bv2.e3",
             label: "p-bv2",
             statement: "a change of momenta M -> L takes the bracket of P' to the Lie-Poisson bracket of e*(3)",
-            check: |_| Outcome {
-                residual: None,
-                note: "an existence statement: the paper does not print the map; both bivectors have rank 4 with two Casimirs (P2.rank, p-bv2.involution), which is necessary, not sufficient".into(),
+            check: |s| {
+                let map = SecondMap { bracket: printed_second(body()) };
+                let pts = s.points(&map.bracket.body);
+                let integrability = checks::worst(&pts, |x| map.gauge(&[x[0], x[1], x[2]]).azimuthal);
+                Outcome::checked(p_map_defect(&map.bracket, &map, &pts), format!("map constructed (poisson::second_reduction): L = A(gamma) M + K v(gamma), K = g omega3, rows of A from {{L_i, gamma_j}}' = eps_ijk gamma_k, v by the gauge equation on the sphere (meridian quadratures); max |J P' J^T - P0(gamma, L)|/max(|J|^2 |P'|, |P0|) (J the Jacobian of the map by AD), printed alpha_i; integrability of the gauge equation (azimuthal part of the defect) {integrability:.1e}"))
             },
         },
         Claim {
@@ -464,7 +473,7 @@ pub fn claims() -> Vec<Claim> {
             statement: "X = g P dF(H1, H2, H3, H4) has no solution with a linear-in-momenta Poisson P of (geom-eq)",
             check: |_| Outcome {
                 residual: None,
-                note: "a non-existence statement over all linear-in-M bivectors and all functions F: it needs the symbolic solution of (eq-cf) with (geom-eq), not an evaluation at points".into(),
+                note: "not decided: a non-existence statement over all bivectors P_ij = a_ijk(gamma) M_k + b_ij(gamma) (45 + 15 unknown functions of gamma) and all functions F. With dF = sum_a F_a dH_a (F_a = dF/dH_a, constant on each common level of the integrals), (eq-cf) is the linear system X = g sum_a F_a P dH_a in a_ijk, b_ij, and the Casimir conditions of (geom-eq) are linear too; [P, P] = 0 is quadratic. A bounded computation would expand a_ijk, b_ij (divided by g) in polynomials in gamma of degree <= d, impose the linear conditions at sample points for each ratio F_1 : F_2 : F_3 : F_4 (a projective 3-parameter family, or symbolic in it), and test [P, P] = 0 on the solution space; it would exclude only the polynomial P of degree <= d, not the rational and algebraic entries (1/(gamma1^2 + gamma2^2), g) that (p-br) and (p-bv2) have. Not done".into(),
             },
         },
     ]
@@ -515,7 +524,7 @@ fn theta_outcome(s: &Sample, reading: Reading) -> Outcome {
 /// The (p-map) check for the bracket P and the map: `max |J P J^T - P0(gamma, L)| /
 /// max(|J|^2 |P|, |P0|)` (Frobenius norms; `|J|^2 |P|` bounds the terms summed in `J P J^T`,
 /// large where the map is steep, near `R gamma3 + a = 0` or `gamma1^2 + gamma2^2 = 0`).
-pub fn p_map_defect<P: Bivector>(p: &P, map: &PoissonMap, points: &[[f64; 6]]) -> f64 {
+pub fn p_map_defect<P: Bivector, F: MomentumMap>(p: &P, map: &F, points: &[[f64; 6]]) -> f64 {
     checks::worst(points, |x| {
         let pushed = pushforward(p, |y| map.image(y), x);
         let target = LiePoisson.entries(&map.image(x));
@@ -529,6 +538,18 @@ pub fn p_map_defect<P: Bivector>(p: &P, map: &PoissonMap, points: &[[f64; 6]]) -
         let scale =
             (j * j * norm(p.entries(x).iter().flatten())).max(norm(target.iter().flatten()));
         norm(&diff) / scale.max(f64::MIN_POSITIVE)
+    })
+}
+
+/// The trivial-deformation check: `max |L_Z P0 - P| / max(|L_Z P0|, |P|)` (Frobenius norms) for a
+/// field Z, the Lie derivative with the Jacobian of Z by automatic differentiation.
+pub fn deformation_defect<P: Bivector>(
+    field: &dyn Fn(&[Dual6; 6]) -> [Dual6; 6],
+    p: &P,
+    points: &[[f64; 6]],
+) -> f64 {
+    checks::worst(points, |x| {
+        checks::matrix_distance(&lie_derivative(field, &LiePoisson, x), &p.entries(x))
     })
 }
 

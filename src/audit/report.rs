@@ -75,6 +75,7 @@ pub fn markdown(verdicts: &[Verdict], sample: &Sample) -> String {
         );
     }
     out.push_str(&corrections(verdicts));
+    out.push_str(CONSTRUCTIONS);
     let mut labels: Vec<&str> = Vec::new();
     for v in verdicts {
         if !labels.contains(&v.label) {
@@ -97,6 +98,59 @@ pub fn markdown(verdicts: &[Verdict], sample: &Sample) -> String {
     }
     out
 }
+
+/// The derivations of the constructions that decide the existence claims `p-bv2.e3` and
+/// `cond2.trivial-deformation`, and what `eq-cf` would need.
+const CONSTRUCTIONS: &str = r#"
+## Existence claims decided by construction
+
+Two statements of the paper assert that an object exists without printing it. The audit
+constructs each (code in `src/poisson/second_reduction.rs`, `src/poisson/deformation.rs` and
+`src/poisson/sphere_gauge.rs`) and checks it like any printed formula, with the Jacobians and
+Lie derivatives by automatic differentiation of the same code.
+
+**One equation on the sphere.** Both constructions end in the same linear equation for a
+vector `v(gamma)` on `|gamma| = 1`, given an antisymmetric defect `G_ij(gamma)`:
+`G_ij + D_i v_j - D_j v_i - eps_ijk v_k = 0`, with `D_i f = (grad f x gamma)_i` the derivative
+along the rotation field of `L_i` in e*(3). With `G = (G_23, -G_13, G_12)` it reads
+`G + gamma div v - grad (gamma, v) = 0`; writing `v = nu gamma + w` (w tangent) its tangential
+part is `grad_S nu = G_tan` (integrability: `G_tan` must be a gradient) and its normal part
+`div_S w = -((G, gamma) + nu)`. For both defects below G is axially symmetric,
+`G_tan = mu(gamma3) (e3 - gamma3 gamma)` with no azimuthal part (measured: the notes give the
+azimuthal part, 1e-16), so `nu' = mu` and `w = omega(gamma3) (e3 - gamma3 gamma)` with
+`((1 - z^2) omega)' = -((G, gamma) + nu)`: two quadratures along the meridian, from the pole on
+the point's side of the singular latitude (24-node Gauss-Legendre pieces, bisected toward the
+complex singularities). nu and `(1 - z^2) omega` enter the map as first-order jets in gamma3
+(value by quadrature, derivative the integrand), exact in value and first derivatives.
+
+**`p-bv2.e3`: the change of momenta of P'.** `L = A(gamma) M + K v(gamma)` with K = g omega3,
+the Casimir of P' linear in M. (1) `{L_i, gamma_j}' = eps_ijk gamma_k` is
+`Gamma' a_i = e_i x gamma` for the rows `a_i` of A; the columns of (p-bv2)'s `Gamma'` give
+`Gamma' a = sigma (e3 x gamma) + alpha3 tau (e2 x gamma)`, `sigma = alpha1 a1 + alpha2 a2 - p a3`,
+`tau = gamma1 a2 - gamma2 a1` (`p = m R h (gamma1 alpha1 + gamma2 alpha2)/(I1 + m h^2)`, which is
+`-m R h` for the printed alpha_i), so with `e1 x gamma = -(gamma2 (e2 x gamma) + gamma3 (e3 x
+gamma))/gamma1` and the gauge `a_13 = a_23 = 0`, `a_3 = (0, 0, -1/p)` and `a_1`, `a_2` solve 2x2
+systems. A is fixed up to multiples of `dK/dM`, the kernel of `Gamma'`, which the term `K v`
+spans. (2) The momentum block of `A M` then misses e*(3) by `K G_ij(gamma)`: it commutes with
+every gamma_i (Jacobi identity of P') and vanishes at `M = 0`, so it is a function of gamma
+times K (were it not, the final check would fail), and `K v` absorbs it by the equation above. The result holds for the printed alpha_i (P' Poisson); for generic alpha_i the
+same construction fails (tests/audit_constructions.rs), as it must. `(L, gamma)` is a constant
+multiple of K (tested above `R gamma3 + a = 0`). The map is local like (p-map):
+`gamma1 gamma3 != 0` (the printed alpha_i), `R gamma3 + a != 0`.
+
+**`cond2.trivial-deformation`: the field Z.** `Z = (0, C(gamma) M + d(gamma) + (gamma, M) w(gamma))`.
+(1) For a field with no gamma component the gamma-M block of `L_Z P0` is `-Gamma0 C^T` with
+`Gamma0 y = y x gamma`, so `C` has rows `c_n = t_n x gamma`, `t_n` the column `{gamma_i, M_n}`
+of P (tangent, as H4 is a Casimir of P); then the gamma-gamma and gamma-M blocks of
+`P - L_{CM} P0` vanish (1e-17). (2) For `Phi(gamma, c)`, `c = (gamma, M)` the Casimir of P0,
+`(L_Phi P0)^{M_i M_j} = eps_ijk Phi_k - D_i Phi_j + D_j Phi_i` and the other blocks vanish; the
+rest `R = P - L_{CM} P0` is affine in c, `R0(gamma) + c R1(gamma)` (the final check at random
+M would fail otherwise), so
+`Phi = d + c w` with d and w from the equation above for `G = R0`, `R1`. Under (cond) the same
+construction fails (P is not compatible with P0 there, and `[P0, L_Z P0] = 0` for every Z).
+
+**`eq-cf`** stays undecided: the note in the table says what a bounded computation would need.
+"#;
 
 /// One section per failing claim: what was found, and the corrected claim (id `<id>.corrected`)
 /// with its verdict and the note that says what differs from the printed text.

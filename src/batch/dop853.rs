@@ -10,6 +10,7 @@
 
 use std::cell::Cell;
 
+use super::lanes::{lane_of, set_lane};
 use super::{Field, Lanes};
 use crate::integrate::compensated::compensated_add;
 use crate::integrate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
@@ -60,6 +61,24 @@ pub struct LaneEnd<const N: usize> {
     pub stats: Stats,
     /// Why the run stopped early, as the one-at-a-time integrator reports it.
     pub failure: Option<IntegrateError>,
+}
+
+impl<const N: usize> LaneEnd<N> {
+    /// The end of the run in lane `l` of the states `y`, at `t` with the counters `stats`.
+    pub(super) fn of<const L: usize>(
+        t: f64,
+        y: &[Lanes<L>; N],
+        l: usize,
+        stats: Stats,
+        failure: Option<IntegrateError>,
+    ) -> Self {
+        LaneEnd {
+            t,
+            y: lane_of(y, l),
+            stats,
+            failure,
+        }
+    }
 }
 
 /// The runs of a batch and what happens to each: the batch asks for a run whenever a lane is
@@ -206,18 +225,6 @@ pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
 }
 
 impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
-    /// Lane `l` of a vector of lanes.
-    fn lane_of(v: &[Lanes<L>; N], l: usize) -> [f64; N] {
-        std::array::from_fn(|i| v[i].0[l])
-    }
-
-    /// Writes `x` into lane `l`.
-    fn set_lane(v: &mut [Lanes<L>; N], l: usize, x: &[f64; N]) {
-        for i in 0..N {
-            v[i].0[l] = x[i];
-        }
-    }
-
     /// Fills every free lane from the queue and prepares every busy lane's attempt (ending
     /// the runs that cannot step on); `false` when no lane is busy any more.
     fn ready<Q: Queue<N>>(&mut self, queue: &mut Q) -> bool {
@@ -257,8 +264,8 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
             t_end: job.t_end,
             ..Lane::default()
         };
-        Self::set_lane(&mut self.y, l, &job.y0);
-        Self::set_lane(&mut self.carry, l, &[0.0; N]);
+        set_lane(&mut self.y, l, &job.y0);
+        set_lane(&mut self.carry, l, &[0.0; N]);
         let failure = [("t0", job.t0), ("t_end", job.t_end)]
             .into_iter()
             .find(|(_, v)| !v.is_finite())
@@ -279,7 +286,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
         }
         let f0 = self.field.eval(&job.y0);
         lane.stats.rhs_evals = 1;
-        Self::set_lane(&mut self.f, l, &f0);
+        set_lane(&mut self.f, l, &f0);
         if f0.iter().any(|v| !v.is_finite()) {
             self.lanes[l] = lane;
             return self.end(l, Some(IntegrateError::NonFinite { t: job.t0 }), queue);
@@ -337,15 +344,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
     fn end<Q: Queue<N>>(&mut self, l: usize, failure: Option<IntegrateError>, queue: &mut Q) {
         let lane = &mut self.lanes[l];
         lane.busy = false;
-        queue.end(
-            l,
-            LaneEnd {
-                t: lane.t,
-                y: Self::lane_of(&self.y, l),
-                stats: lane.stats,
-                failure,
-            },
-        );
+        queue.end(l, LaneEnd::of(lane.t, &self.y, l, lane.stats, failure));
     }
 
     /// One attempted step in every busy lane: the stages and error norms on all lanes at
@@ -388,15 +387,15 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
             self.lanes[l].stats.rhs_evals += 11;
             if self.control(l, err5.0[l], err3.0[l]) {
                 accepted[l] = true;
-                let mut y = Self::lane_of(&y_new, l);
+                let mut y = lane_of(&y_new, l);
                 if self.opts.compensated {
-                    let mut carry = Self::lane_of(&self.carry, l);
-                    y = Self::lane_of(&self.y, l);
+                    let mut carry = lane_of(&self.carry, l);
+                    y = lane_of(&self.y, l);
                     let delta = std::array::from_fn(|i| h.0[l] * inc[i].0[l]);
                     compensated_add(&mut y, &mut carry, &delta);
-                    Self::set_lane(&mut self.carry, l, &carry);
+                    set_lane(&mut self.carry, l, &carry);
                 }
-                Self::set_lane(&mut y_acc, l, &y);
+                set_lane(&mut y_acc, l, &y);
             }
         }
         if !accepted.contains(&true) {
@@ -457,19 +456,19 @@ impl<F: Field<N>, const N: usize, const L: usize> Batch<'_, F, N, L> {
             lane.t + lane.h_try
         };
         lane.stats.rhs_evals += 1;
-        let y = Self::lane_of(y_acc, l);
-        let f = Self::lane_of(f_new, l);
+        let y = lane_of(y_acc, l);
+        let f = lane_of(f_new, l);
         if y.iter().chain(f.iter()).any(|v| !v.is_finite()) {
             return self.end(l, Some(IntegrateError::NonFinite { t: t_new }), queue);
         }
         lane.stats.steps += 1;
         lane.t_prev = lane.t;
         lane.t = t_new;
-        let y_prev = Self::lane_of(&self.y, l);
-        Self::set_lane(&mut self.y_prev, l, &y_prev);
-        Self::set_lane(&mut self.y, l, &y);
-        Self::set_lane(&mut self.f, l, &f);
-        Self::set_lane(&mut self.k[12], l, &f);
+        let y_prev = lane_of(&self.y, l);
+        set_lane(&mut self.y_prev, l, &y_prev);
+        set_lane(&mut self.y, l, &y);
+        set_lane(&mut self.f, l, &f);
+        set_lane(&mut self.k[12], l, &f);
         let lane = *lane;
         let view = LaneStep {
             field: self.field,

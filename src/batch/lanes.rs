@@ -10,6 +10,7 @@
 //! implementation (fused where the target has a fused multiply-add instruction, else a
 //! product and a sum), so that this holds in every build.
 
+use crate::integrate::taylor::tape::Coefficient;
 use crate::scalar::Scalar;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -107,6 +108,41 @@ impl<const L: usize> Scalar for Lanes<L> {
         Lanes(std::array::from_fn(|l| {
             Scalar::mul_add(self.0[l], a.0[l], b.0[l])
         }))
+    }
+}
+
+/// Lane `l` of a state in lanes.
+#[inline(always)]
+pub fn lane_of<const N: usize, const L: usize>(v: &[Lanes<L>; N], l: usize) -> [f64; N] {
+    std::array::from_fn(|i| v[i].0[l])
+}
+
+/// Writes `x` into lane `l` of a state in lanes.
+#[inline(always)]
+pub fn set_lane<const N: usize, const L: usize>(v: &mut [Lanes<L>; N], l: usize, x: &[f64; N]) {
+    for (vi, &xi) in v.iter_mut().zip(x) {
+        vi.0[l] = xi;
+    }
+}
+
+/// Lanes as the coefficients of a Taylor [`Tape`](crate::integrate::taylor::Tape): `L` runs
+/// expanded at once, each lane bitwise an `f64` tape's.
+impl<const L: usize> Coefficient for Lanes<L> {
+    const WIDTH: usize = L;
+
+    #[inline(always)]
+    fn fused_mul_add(self, a: Self, b: Self) -> Self {
+        Lanes(std::array::from_fn(|l| self.0[l].mul_add(a.0[l], b.0[l])))
+    }
+
+    #[inline(always)]
+    fn lane(&self, l: usize) -> f64 {
+        self.0[l]
+    }
+
+    #[inline(always)]
+    fn set_lane(&mut self, l: usize, v: f64) {
+        self.0[l] = v;
     }
 }
 

@@ -3,7 +3,9 @@
 //! A sweep integrates thousands of runs of the same field (mg-eq) from different initial
 //! states. [`dop853::integrate`] keeps `L` of them side by side in [`Lanes`] (structure of
 //! arrays: component `i` of the `L` states in one vector) and evaluates the field, written
-//! once generic over [`Scalar`], on all `L` at once. Each lane keeps its own time, step size,
+//! once generic over [`Scalar`], on all `L` at once; [`taylor::integrate`] does the same with
+//! the Taylor method, the recorded tape of the field expanded for all lanes at once (its
+//! coefficients [`Lanes`], the recurrences written once for `f64` and lanes). Each lane keeps its own time, step size,
 //! rejections, counters and end time; when a run ends (or fails) its lane takes the next run
 //! of the queue at once, so no lane waits for another's end.
 //!
@@ -13,10 +15,13 @@
 //! multiply-add decisions ([`Lanes`]), the same step-size control, initial step
 //! ([`crate::integrate::hinit`]) and compensated update. A lane is therefore **bitwise
 //! identical** to the one-at-a-time integrator: the same steps, rejections, field
-//! evaluations and final state, to the last bit (tests/batch.rs checks it on 1024 runs).
+//! evaluations and final state, to the last bit (tests/batch.rs checks it on 1024 runs). The
+//! same holds for the Taylor lanes and [`Taylor`](crate::integrate::Taylor) (see
+//! [`taylor`]).
 
 pub mod dop853;
 pub mod lanes;
+pub mod taylor;
 
 pub use dop853::{integrate, Job, LaneEnd, Queue, LANES};
 pub use lanes::Lanes;

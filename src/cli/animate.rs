@@ -5,7 +5,7 @@
 use super::plot::{create_dir, report, Source, Written};
 use routh::animate::html;
 use routh::output::write_bytes_atomic;
-use routh::Result;
+use routh::AppResult as Result;
 use std::path::PathBuf;
 
 /// The file written in the output directory.
@@ -37,6 +37,5 @@ pub fn run(args: Args) -> Result<()> {
             skipped: Vec::new(),
         },
         args.json,
-    );
-    Ok(())
+    )
 }

@@ -6,7 +6,7 @@ use clap::Args as ClapArgs;
 use routh::audit::claims::{audit, Sample};
 use routh::audit::report::{markdown, table};
 use routh::output::write_atomic;
-use routh::RouthError;
+use routh::{AppError, RouthError};
 use std::path::PathBuf;
 
 /// Options of `routh audit`.
@@ -27,13 +27,14 @@ pub struct Args {
 }
 
 /// Run the audit and print or write its report.
-pub fn run(args: Args) -> routh::Result<()> {
+pub fn run(args: Args) -> routh::AppResult<()> {
     if args.points == 0 {
         return Err(RouthError::Option {
             name: "--points",
             value: "0".into(),
             rule: "must be at least 1",
-        });
+        }
+        .into());
     }
     let sample = Sample {
         seed: args.seed,
@@ -43,17 +44,13 @@ pub fn run(args: Args) -> routh::Result<()> {
     if let Some(path) = &args.markdown {
         let text = markdown(&verdicts, &sample);
         write_atomic(path, |w| {
-            w.write_all(text.as_bytes())
-                .map_err(|source| RouthError::Io {
-                    path: path.clone(),
-                    source,
-                })
+            w.write_all(text.as_bytes()).map_err(AppError::io(path))
         })?;
     }
     if args.json {
-        super::print_json(&verdicts);
+        super::print_json(&verdicts)?;
     } else {
-        print!("{}", table(&verdicts));
+        out!("{}", table(&verdicts))?;
     }
     Ok(())
 }

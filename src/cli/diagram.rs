@@ -9,7 +9,7 @@ use routh::diagram::figure::{EnergyMomentum, RotationNumberFigure, SleepingTopFi
 use routh::diagram::{sleeping_tops, torus_count, Diagram, Resolution, TorusCount, Value};
 use routh::output::write_atomic;
 use routh::plot::{render_figure, Figure, Format};
-use routh::{Result, RouthError};
+use routh::{AppError, AppResult as Result};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -62,13 +62,10 @@ struct Report<'a> {
 /// Write a CSV table atomically: a header and rows of numbers or words.
 fn write_csv(path: &Path, header: &str, rows: impl Iterator<Item = String>) -> Result<()> {
     write_atomic(path, |w| {
-        let io = |source| RouthError::Io {
-            path: path.to_path_buf(),
-            source,
-        };
-        writeln!(w, "{header}").map_err(io)?;
+        let io = AppError::io(path);
+        writeln!(w, "{header}").map_err(&io)?;
         for row in rows {
-            writeln!(w, "{row}").map_err(io)?;
+            writeln!(w, "{row}").map_err(&io)?;
         }
         Ok(())
     })
@@ -163,29 +160,29 @@ fn both_formats(figure: &impl Figure, dir: &Path, stem: &str) -> Result<Vec<Path
         .collect()
 }
 
-fn print_text(r: &Report) {
+fn print_text(r: &Report) -> Result<()> {
     let d = r.diagram;
-    println!("case: {}", r.case);
-    println!("Jellett H3 = {} (from the {})", d.h3, r.h3_from);
+    outln!("case: {}", r.case)?;
+    outln!("Jellett H3 = {} (from the {})", d.h3, r.h3_from)?;
     for v in &d.vertical_spins {
-        println!(
+        outln!(
             "vertical spin gamma3 = {:+}: K = {}, H1 = {}, {}",
             v.state.gamma[2].round(),
             v.value.k,
             v.value.h1,
             v.stability.name()
-        );
+        )?;
     }
     for c in &d.critical_curves {
-        println!(
+        outln!(
             "critical curve (branch {}): {} points, {}",
             c.branch,
             c.points.len(),
             c.stability.name()
-        );
+        )?;
     }
     match &d.monodromy {
-        Some(m) => println!(
+        Some(m) => outln!(
             "monodromy around K = {}, H1 = {}: W changes by {} once around ({} points, largest \
              step {:.3}); matrix {:?}",
             m.centre.value.k,
@@ -194,16 +191,17 @@ fn print_text(r: &Report) {
             m.points.len(),
             m.max_step,
             m.matrix
-        ),
-        None => println!("no focus-focus point at this H3"),
+        )?,
+        None => outln!("no focus-focus point at this H3")?,
     }
     match r.case_value.tori() {
-        Some(n) => println!("the case's value: {n} torus/tori"),
-        None => println!("the case's value is critical"),
+        Some(n) => outln!("the case's value: {n} torus/tori")?,
+        None => outln!("the case's value is critical")?,
     }
     for f in &r.files {
-        println!("wrote {}", f.display());
+        outln!("wrote {}", f.display())?;
     }
+    Ok(())
 }
 
 /// Run `routh diagram`.
@@ -276,9 +274,9 @@ pub fn run(args: Args) -> Result<()> {
         files,
     };
     if args.json {
-        super::print_json(&report);
+        super::print_json(&report)?;
     } else {
-        print_text(&report);
+        print_text(&report)?;
     }
     Ok(())
 }

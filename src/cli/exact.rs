@@ -6,7 +6,7 @@ use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{Accuracy, ExactSolution, Motion};
 use routh::table::csv_header;
-use routh::{Body, Result, RouthError, State};
+use routh::{AppError, AppResult as Result, Body, State};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -155,35 +155,39 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
     }
 }
 
-fn print_text(s: &Summary) {
-    println!("case: {}", s.case);
-    println!("motion: {}", s.motion);
-    println!(
+fn print_text(s: &Summary) -> Result<()> {
+    outln!("case: {}", s.case)?;
+    outln!("motion: {}", s.motion)?;
+    outln!(
         "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        s.theta_min, s.theta_max, s.gamma3_min, s.gamma3_max
-    );
+        s.theta_min,
+        s.theta_max,
+        s.gamma3_min,
+        s.gamma3_max
+    )?;
     match (s.period, s.precession_advance_per_period, s.precession_rate) {
         (Some(period), Some(advance), _) => {
-            println!("nutation period T = {period}");
-            println!("precession advance per period = {advance}");
+            outln!("nutation period T = {period}")?;
+            outln!("precession advance per period = {advance}")?;
         }
-        (_, _, Some(rate)) => println!("steady: precession rate dpsi/dt = {rate}"),
+        (_, _, Some(rate)) => outln!("steady: precession rate dpsi/dt = {rate}")?,
         _ => {}
     }
     if s.passes_through_axis {
-        println!("the motion passes through the symmetry axis (sin theta = 0) once per period");
+        outln!("the motion passes through the symmetry axis (sin theta = 0) once per period")?;
     }
-    println!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k);
-    println!(
+    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
+    outln!(
         "estimated relative error at t: {:.1e} (below {ACCURACY_TOLERANCE:e} for |t| <= {})",
         s.error_estimate,
         s.horizon
             .map_or("any t".to_string(), |h| format!("{h:.6e}"))
-    );
-    println!("state at t = {:?}:", s.t);
-    println!("  gamma = {:?}", s.gamma);
-    println!("  M     = {:?}", s.m);
-    println!("  omega = {:?}", s.omega);
+    )?;
+    outln!("state at t = {:?}:", s.t)?;
+    outln!("  gamma = {:?}", s.gamma)?;
+    outln!("  M     = {:?}", s.m)?;
+    outln!("  omega = {:?}", s.omega)?;
+    Ok(())
 }
 
 /// Run `routh exact`.
@@ -238,15 +242,15 @@ pub fn run(args: Args) -> Result<()> {
                 &body,
                 &exact,
                 times(n),
-                Path::new("<stdout>"),
+                Path::new(super::STANDARD_OUTPUT),
             );
         }
         (None, _) => {}
     }
     if args.json {
-        super::print_json(&s);
+        super::print_json(&s)?;
     } else {
-        print_text(&s);
+        print_text(&s)?;
     }
     Ok(())
 }
@@ -259,13 +263,10 @@ fn write_csv(
     times: impl Iterator<Item = f64>,
     path: &Path,
 ) -> Result<()> {
-    let io = |source| RouthError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
+    let io = AppError::io(path);
+    writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(&io)?;
     for ti in times {
-        writeln!(w, "{}", csv_row(body, ti, &exact.state_at(ti))).map_err(io)?;
+        writeln!(w, "{}", csv_row(body, ti, &exact.state_at(ti))).map_err(&io)?;
     }
     Ok(())
 }

@@ -8,7 +8,7 @@ use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::poisson::flows::{Field, Flow};
 use routh::table::csv_header;
-use routh::{Result, RouthError, State};
+use routh::{AppError, AppResult as Result, State};
 use serde::Serialize;
 use std::io::Write;
 
@@ -66,14 +66,15 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
     let samples = args.samples.or(args.out.as_ref().map(|_| 1001));
     if let Some(n) = samples {
         let write_rows = |w: &mut dyn Write| -> Result<()> {
-            let io = |source| RouthError::Io {
-                path: args.out.clone().unwrap_or_else(|| "<stdout>".into()),
-                source,
-            };
-            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(io)?;
+            let path = args
+                .out
+                .clone()
+                .unwrap_or_else(|| super::STANDARD_OUTPUT.into());
+            let io = AppError::io(&path);
+            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(&io)?;
             for i in 0..n {
                 let ti = t * i as f64 / (n - 1) as f64;
-                writeln!(w, "{}", csv_row(&body, ti, &state_at(ti))).map_err(io)?;
+                writeln!(w, "{}", csv_row(&body, ti, &state_at(ti))).map_err(&io)?;
             }
             Ok(())
         };
@@ -111,34 +112,40 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         k: routh_integral(&body, &x0),
     };
     if args.json {
-        super::print_json(&summary);
+        super::print_json(&summary)?;
     } else {
-        print_text(&summary);
+        print_text(&summary)?;
     }
     Ok(())
 }
 
-fn print_text(s: &Summary) {
-    println!("case: {}", s.case);
-    println!(
+fn print_text(s: &Summary) -> Result<()> {
+    outln!("case: {}", s.case)?;
+    outln!(
         "flow {} = P dH of the first bracket (p-br) at ({}), alpha = {}",
-        s.flow, s.condition, s.alpha
-    );
-    println!(
+        s.flow,
+        s.condition,
+        s.alpha
+    )?;
+    outln!(
         "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        s.theta_min, s.theta_max, s.gamma3_min, s.gamma3_max
-    );
+        s.theta_min,
+        s.theta_max,
+        s.gamma3_min,
+        s.gamma3_max
+    )?;
     match (s.period, s.precession_advance_per_period, s.precession_rate) {
         (Some(period), Some(advance), _) => {
-            println!("period of theta T = {period}");
-            println!("advance of phi per period = {advance}");
+            outln!("period of theta T = {period}")?;
+            outln!("advance of phi per period = {advance}")?;
         }
-        (_, _, Some(rate)) => println!("theta constant: dphi/dt = {rate}"),
+        (_, _, Some(rate)) => outln!("theta constant: dphi/dt = {rate}")?,
         _ => {}
     }
-    println!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k);
-    println!("state at t = {}:", s.t);
-    println!("  gamma = {:?}", s.gamma);
-    println!("  M     = {:?}", s.m);
-    println!("  omega = {:?}", s.omega);
+    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
+    outln!("state at t = {}:", s.t)?;
+    outln!("  gamma = {:?}", s.gamma)?;
+    outln!("  M     = {:?}", s.m)?;
+    outln!("  omega = {:?}", s.omega)?;
+    Ok(())
 }

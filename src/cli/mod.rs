@@ -1,5 +1,23 @@
 //! Command-line interface: one module per command. Errors become a message on stderr and
-//! exit code 2; clap's own usage errors also exit 2.
+//! exit code 2; clap's own usage errors also exit 2. Every command writes its output (text,
+//! JSON, CSV rows) through one writer of standard output, [`write_out`] (the macros `out!` and
+//! `outln!`, used as `print!` and `println!`), whose errors end the command like any other:
+//! a reader that closed the pipe early (`routh exact | head -1`) ends it quietly with exit
+//! code 0, another write error (a full disk) with exit code 2.
+
+/// `print!` through [`write_out`]: returns its error.
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::cli::write_out(format_args!($($arg)*))
+    };
+}
+
+/// `println!` through [`write_out`]: returns its error.
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        $crate::cli::write_out(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
 
 mod animate;
 mod audit;
@@ -12,7 +30,13 @@ mod steady;
 mod sweep;
 
 use clap::{Parser, Subcommand};
+use routh::{AppError, AppResult, FileError};
+use std::io::Write;
+use std::path::Path;
 use std::process::ExitCode;
+
+/// The name of standard output in error messages.
+pub const STANDARD_OUTPUT: &str = "standard output";
 
 /// The Routh sphere: simulation, exact quadrature, Poisson geometry.
 #[derive(Parser)]
@@ -52,22 +76,25 @@ pub fn json<T: serde::Serialize>(value: &T) -> String {
     serde_json::to_string_pretty(value).expect("serialisable output") + "\n"
 }
 
-/// Print `value` as pretty JSON on stdout. A reader that closed the pipe early (`routh audit
-/// --json | head -c 10`) ends the process quietly with exit code 0, as `print!` would panic;
-/// any other write error is reported with exit code 2.
-pub fn print_json<T: serde::Serialize>(value: &T) {
-    use std::io::Write;
-    let mut out = std::io::stdout().lock();
-    if let Err(e) = out
-        .write_all(json(value).as_bytes())
-        .and_then(|()| out.flush())
-    {
-        if e.kind() == std::io::ErrorKind::BrokenPipe {
-            std::process::exit(0);
-        }
-        eprintln!("error: standard output: {e}");
-        std::process::exit(2);
-    }
+/// Print `value` as pretty JSON on stdout ([`write_out`]).
+pub fn print_json<T: serde::Serialize>(value: &T) -> AppResult<()> {
+    out!("{}", json(value))
+}
+
+/// Write on standard output: the one path of the commands' output. Where `print!` would panic
+/// on a write error, this returns it, naming standard output.
+pub fn write_out(text: std::fmt::Arguments) -> AppResult<()> {
+    std::io::stdout()
+        .lock()
+        .write_fmt(text)
+        .map_err(AppError::io(Path::new(STANDARD_OUTPUT)))
+}
+
+/// Whether `e` is a write to standard output (`--out -` included) whose reader has gone.
+fn closed_pipe(e: &AppError) -> bool {
+    matches!(e, AppError::File(FileError::Io { path, source })
+        if source.kind() == std::io::ErrorKind::BrokenPipe
+            && (path == Path::new(STANDARD_OUTPUT) || path == Path::new("-")))
 }
 
 /// Parse the arguments, run the command, map errors to exit code 2.
@@ -77,7 +104,7 @@ pub fn main() -> ExitCode {
         eprintln!("error: {e}");
         return ExitCode::from(2);
     }
-    let result: routh::Result<()> = match cli.command {
+    let result: AppResult<()> = match cli.command {
         Command::Simulate(args) => simulate::run_command(args),
         Command::Plot(args) => plot::run(args),
         Command::Animate(args) => animate::run(args),
@@ -87,8 +114,14 @@ pub fn main() -> ExitCode {
         Command::Sweep(args) => sweep::run(args),
         Command::Diagram(args) => diagram::run(args),
     };
-    match result {
+    let flushed = result.and_then(|()| {
+        std::io::stdout()
+            .flush()
+            .map_err(AppError::io(Path::new(STANDARD_OUTPUT)))
+    });
+    match flushed {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if closed_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)

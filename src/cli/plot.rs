@@ -5,7 +5,7 @@
 use routh::case::Case;
 use routh::plot::{difference_plot, standard_plots, Format};
 use routh::table::{simulate_full, Table};
-use routh::{Result, RouthError};
+use routh::{AppError, AppResult as Result, RouthError};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -53,7 +53,8 @@ impl Source {
                 name: "samples",
                 value: self.samples.to_string(),
                 rule: "must be between 2 and 1000000 (a figure's points are kept in memory)",
-            });
+            }
+            .into());
         }
         simulate_full(&case, t_end, self.samples)
     }
@@ -91,24 +92,22 @@ pub struct Written {
 
 /// Create the output directory, naming it in the error.
 pub fn create_dir(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir).map_err(|source| RouthError::Io {
-        path: dir.to_path_buf(),
-        source,
-    })
+    std::fs::create_dir_all(dir).map_err(AppError::io(dir))
 }
 
 /// Print the files written (and figures skipped), as JSON or as lines.
-pub fn report(written: &Written, json: bool) {
+pub fn report(written: &Written, json: bool) -> Result<()> {
     if json {
-        super::print_json(written);
-        return;
+        super::print_json(written)?;
+        return Ok(());
     }
     for file in &written.files {
-        println!("wrote {}", file.display());
+        outln!("wrote {}", file.display())?;
     }
     for reason in &written.skipped {
-        println!("skipped {reason}");
+        outln!("skipped {reason}")?;
     }
+    Ok(())
 }
 
 /// The last component of a path, for titles.
@@ -136,6 +135,6 @@ pub fn run(args: Args) -> Result<()> {
         .iter()
         .map(|plot| plot.render(&args.out, args.format))
         .collect::<Result<_>>()?;
-    report(&Written { files, skipped }, args.json);
+    report(&Written { files, skipped }, args.json)?;
     Ok(())
 }

@@ -6,9 +6,9 @@ use routh::integrals::{Integrals, INTEGRAL_NAMES};
 use routh::integrate::{Method, OdeSystem};
 use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh::output::write_atomic;
-use routh::simulate::{run, ReducedSystem, Settings, Summary};
+use routh::simulate::{integrate_observed, run, ReducedSystem, Settings, Summary};
 use routh::table::csv_header;
-use routh::{Result, RouthError};
+use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
 
 /// Samples written to CSV when `--out` is given without `--samples`.
@@ -116,7 +116,8 @@ pub fn run_command(args: Args) -> Result<()> {
                 name: "samples",
                 value: n.to_string(),
                 rule: "must be >= 2 (the samples include t = 0 and t_end)",
-            })
+            }
+            .into())
         }
         (Some(n), _) => n,
         (None, Some(_)) => DEFAULT_CSV_SAMPLES,
@@ -156,7 +157,7 @@ pub fn run_command(args: Args) -> Result<()> {
     if out.as_deref() == Some(Path::new("-")) {
         eprint!("{report}");
     } else {
-        print!("{report}");
+        out!("{report}")?;
     }
     Ok(())
 }
@@ -174,25 +175,32 @@ fn execute<S: OdeSystem<N>, const N: usize>(
     extra: impl Fn(&[f64; N]) -> Vec<f64>,
 ) -> Result<Summary> {
     let Some(path) = out else {
-        return run(&case.ball, system, y0, settings, &mut |_, _| Ok(()));
+        return Ok(run(&case.ball, system, y0, settings, &mut |_, _| Ok(()))?);
     };
     let mut summary = None;
     write_atomic(path, |w| {
-        let io = |source| RouthError::Io {
-            path: path.to_path_buf(),
-            source,
-        };
+        let io = AppError::io(path);
         let separator = if extra_header.is_empty() { "" } else { "," };
         let header = csv_header(&INTEGRAL_NAMES);
-        writeln!(w, "{header}{separator}{extra_header}").map_err(io)?;
-        summary = Some(run(&case.ball, system, y0, settings, &mut |t, y| {
+        writeln!(w, "{header}{separator}{extra_header}").map_err(&io)?;
+        let mut on_sample = |t: f64, y: &[f64; N]| {
             let x: [f64; 6] = std::array::from_fn(|i| y[i]);
             let mut row = csv_row(case, t, &x);
             for v in extra(y) {
                 row.push_str(&format!(",{v}"));
             }
-            writeln!(w, "{row}").map_err(io)
-        })?);
+            writeln!(w, "{row}").map_err(&io)
+        };
+        let observed = integrate_observed(
+            &case.ball,
+            system,
+            y0,
+            settings,
+            None,
+            &mut on_sample,
+            &mut |_| {},
+        )?;
+        summary = Some(observed.summary()?);
         Ok(())
     })?;
     Ok(summary.expect("run returned a summary"))

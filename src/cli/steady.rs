@@ -5,7 +5,7 @@ use routh::case::Case;
 use routh::steady::{
     routh_threshold, steady_precessions, vertical_spin, SteadyPrecession, VerticalSpin,
 };
-use routh::{Body, Result};
+use routh::{AppResult as Result, Body};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -49,12 +49,12 @@ fn stable(b: bool) -> &'static str {
     }
 }
 
-fn print_text(r: &Report) {
-    println!("case: {}", r.case);
-    println!("spin omega3 = {}", r.spin);
-    println!("vertical spins (gamma = (0, 0, +-1), omega = (0, 0, omega3)):");
+fn print_text(r: &Report) -> Result<()> {
+    outln!("case: {}", r.case)?;
+    outln!("spin omega3 = {}", r.spin)?;
+    outln!("vertical spins (gamma = (0, 0, +-1), omega = (0, 0, omega3)):")?;
     for v in &r.vertical {
-        println!(
+        outln!(
             "  gamma3 = {:+}: centre of mass {}, threshold |omega3| = {}; {} by Q'' = {:.6e}, \
              {} by the Jacobian (max Re lambda = {:.3e})",
             v.gamma3,
@@ -64,12 +64,12 @@ fn print_text(r: &Report) {
             v.stability.q_second_derivative,
             stable(v.stability.stable_by_jacobian),
             v.stability.max_real_eigenvalue
-        );
+        )?;
     }
-    println!("steady precessions at constant tilt (omega_n = 0):");
-    println!("  theta        omega_t      dpsi/dt      Q''          by Q      by Jacobian");
+    outln!("steady precessions at constant tilt (omega_n = 0):")?;
+    outln!("  theta        omega_t      dpsi/dt      Q''          by Q      by Jacobian")?;
     for p in &r.precessions {
-        println!(
+        outln!(
             "  {:<12.6} {:<12.6} {:<12.6} {:<12.4e} {:<9} {}",
             p.theta,
             p.omega_t,
@@ -77,8 +77,9 @@ fn print_text(r: &Report) {
             p.stability.q_second_derivative,
             stable(p.stability.stable_by_q),
             stable(p.stability.stable_by_jacobian)
-        );
+        )?;
     }
+    Ok(())
 }
 
 /// Run `routh steady`.
@@ -89,7 +90,7 @@ pub fn run(args: Args) -> Result<()> {
     let vertical = [1.0, -1.0]
         .into_iter()
         .map(|pole| vertical_spin(&body, pole, spin))
-        .collect::<Result<Vec<_>>>()?;
+        .collect::<routh::Result<Vec<_>>>()?;
     let top_heavy_gamma3 = (body.a != 0.0).then(|| body.a.signum());
     let mut precessions = vec![];
     for degrees in TILTS_DEGREES {
@@ -105,9 +106,9 @@ pub fn run(args: Args) -> Result<()> {
         precessions,
     };
     if args.json {
-        super::print_json(&report);
+        super::print_json(&report)?;
     } else {
-        print_text(&report);
+        print_text(&report)?;
     }
     Ok(())
 }

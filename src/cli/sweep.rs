@@ -5,10 +5,10 @@ use routh::integrate::Method;
 use routh::sweep::record::{columns, Row};
 use routh::sweep::table::{open, TableWriter};
 use routh::sweep::{Completion, Overrides, Sweep};
-use routh::{Result, RouthError};
+use routh::{AppResult as Result, FileError, RouthError};
 use std::io::IsTerminal;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -41,7 +41,8 @@ pub struct Args {
     /// that needs more is a row with that reason.
     #[arg(long)]
     pub max_steps: Option<usize>,
-    /// Integrator: `dop853`, `vern9`, `taylor`, `auto` or `rk4` / `rk4:<steps>`.
+    /// Integrator: `dop853`, `vern9`, `taylor`, `auto` or `rk4` / `rk4:<steps>`; `auto` picks
+    /// by the sweep's own table (`SWEEP_AUTO_TABLE`) and the rows name the method that ran.
     #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
     pub method: Method,
     /// Worker threads (default: one per core).
@@ -57,8 +58,8 @@ pub struct Args {
     /// Print the summary and every row as JSON.
     #[arg(long)]
     pub json: bool,
-    /// Integrate the runs one at a time instead of together in SIMD lanes (DOP853 only; the
-    /// rows are the same bit for bit, only the speed differs).
+    /// Integrate the runs one at a time instead of together in SIMD lanes (DOP853 and Taylor;
+    /// the rows are the same bit for bit, only the speed differs).
     #[arg(long)]
     pub no_batch: bool,
 }
@@ -71,7 +72,7 @@ struct Stdout {
 impl TableWriter for Stdout {
     fn write(&mut self, rows: &[Row]) -> Result<()> {
         for row in rows {
-            println!("{}", row.csv_line(&self.settings));
+            outln!("{}", row.csv_line(&self.settings))?;
         }
         Ok(())
     }
@@ -83,7 +84,7 @@ impl TableWriter for Stdout {
 
 /// Run `routh sweep`.
 pub fn run(args: Args) -> Result<()> {
-    let text = std::fs::read_to_string(&args.case).map_err(|e| RouthError::Case {
+    let text = std::fs::read_to_string(&args.case).map_err(|e| FileError::Case {
         file: args.case.display().to_string(),
         message: format!("cannot read: {e}"),
     })?;
@@ -96,7 +97,8 @@ pub fn run(args: Args) -> Result<()> {
             name: "resume",
             value: "true".into(),
             rule: "needs --out FILE (the table to continue)",
-        });
+        }
+        .into());
     }
     let overrides = Overrides {
         method: args.method,
@@ -112,7 +114,7 @@ pub fn run(args: Args) -> Result<()> {
         None => {
             if !args.json {
                 let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
-                println!("{}", names.join(","));
+                outln!("{}", names.join(","))?;
             }
             (
                 Box::new(Stdout {
@@ -124,11 +126,7 @@ pub fn run(args: Args) -> Result<()> {
     };
     let todo: Vec<u64> = (0..sweep.runs()).filter(|k| !done.contains(k)).collect();
     let stop = Arc::new(AtomicBool::new(false));
-    let flag = stop.clone();
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).map_err(|e| RouthError::Io {
-        path: "<signal handler>".into(),
-        source: std::io::Error::other(e),
-    })?;
+    routh::output::stop_on_signal(stop.clone());
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.threads.unwrap_or(0))
         .build()
@@ -194,17 +192,17 @@ pub fn run(args: Args) -> Result<()> {
             "elapsed_s": elapsed,
             "out": args.out,
             "rows": json_rows,
-        }));
+        }))?;
     } else if args.out.is_some() {
-        println!("routh sweep: {source}");
-        println!(
+        outln!("routh sweep: {source}")?;
+        outln!(
             "  {ran} runs in {elapsed:.3} s ({:.1} runs/s), {failed} failed, {} resumed, of {}",
             ran as f64 / elapsed.max(1e-9),
             done.len(),
             sweep.runs()
-        );
+        )?;
         if let Some(path) = &args.out {
-            println!("  table written to {}", path.display());
+            outln!("  table written to {}", path.display())?;
         }
     }
     if stopped {

@@ -143,14 +143,12 @@ impl Diagram {
             .filter(|v| v.stability == StabilityType::FocusFocus)
             .cloned()
             .collect();
-        // The loop's semi-axes: a fixed fraction of the window, so that it is round on the figure.
-        let radii = (
-            0.04 * (window.k.1 - window.k.0),
-            0.04 * (window.h1.1 - window.h1.0),
-        );
         let monodromy = focus_focus
             .first()
-            .map(|centre| monodromy(body, centre, radii, resolution.loop_points))
+            .map(|centre| {
+                let radii = loop_radii(&window, centre.value, &critical_curves);
+                monodromy(body, centre, radii, resolution.loop_points)
+            })
             .transpose()?;
         let tori = torus_grid(body, h3, &window, resolution.grid)?;
         Ok(Diagram {
@@ -163,6 +161,50 @@ impl Diagram {
             tori,
         })
     }
+}
+
+/// The largest fraction of the window taken by the monodromy loop's semi-axes.
+const LOOP_FRACTION: f64 = 0.04;
+
+/// The semi-axes of the monodromy loop around `centre`: the same fraction of the window in K
+/// and in H1 (so that the loop is round on the figure), [`LOOP_FRACTION`] at most and half the
+/// distance from `centre` to the critical curves (in units of the window) at most, so that the
+/// loop keeps clear of them by at least its own size on the figure.
+fn loop_radii(window: &Window, centre: Value, curves: &[CriticalCurve]) -> (f64, f64) {
+    let fraction = LOOP_FRACTION.min(0.5 * clearance(window, centre, curves));
+    (
+        fraction * (window.k.1 - window.k.0),
+        fraction * (window.h1.1 - window.h1.0),
+    )
+}
+
+/// The distance from `value` to the polylines of the critical curves in the plane (K, H1)
+/// scaled to the unit square by the window (infinite when there is no curve).
+pub fn clearance(window: &Window, value: Value, curves: &[CriticalCurve]) -> f64 {
+    let scale = |v: &Value| {
+        [
+            (v.k - value.k) / (window.k.1 - window.k.0),
+            (v.h1 - value.h1) / (window.h1.1 - window.h1.0),
+        ]
+    };
+    curves
+        .iter()
+        .flat_map(|curve| curve.points.windows(2))
+        .map(|pair| segment_distance(scale(&pair[0].value), scale(&pair[1].value)))
+        .filter(|d| d.is_finite())
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The distance from the origin to the segment from `a` to `b`.
+fn segment_distance(a: [f64; 2], b: [f64; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let length2 = d[0] * d[0] + d[1] * d[1];
+    let s = if length2 > 0.0 {
+        (-(a[0] * d[0] + a[1] * d[1]) / length2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a[0] + s * d[0]).hypot(a[1] + s * d[1])
 }
 
 /// The torus counts at the centres of a grid of `columns` x `2 columns / 3` cells.

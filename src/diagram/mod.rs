@@ -16,8 +16,8 @@ pub mod relative_equilibria;
 pub mod stability;
 pub mod tori;
 
+pub use energy_momentum::{clearance, Diagram, Resolution, TorusGrid, Window};
 pub use energy_momentum::{sleeping_tops, SleepingTop};
-pub use energy_momentum::{Diagram, Resolution, TorusGrid, Window};
 pub use monodromy::{follow_loop, monodromy, winding, LoopPoint, Monodromy};
 pub use relative_equilibria::{
     critical_curves, precession_spins, steady_precession_at, vertical_spin_at, CriticalCurve,

@@ -5,7 +5,9 @@ use std::cell::Cell;
 
 use super::compensated::compensated_add;
 use super::tableau::{dense_at, dense_rows, A, B, BHH, C, ER};
-use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
+use super::{
+    check_start, drive, Control, Drive, IntegrateError, OdeSystem, Options, Stats, Stepper,
+};
 
 /// Rounding unit used in the step-size-too-small test (Hairer's `UROUND`).
 const UROUND: f64 = 2.3e-16;
@@ -38,6 +40,30 @@ pub(crate) fn next_attempt(
         Ok((h, false))
     }
 }
+
+/// The options of `steps` equal steps from `t0` to `t_end` without error control: the step
+/// as the initial step, a budget of `steps` steps. `steps = 0` is refused
+/// ([`IntegrateError::InvalidOption`]).
+pub(crate) fn fixed_step_options(
+    t0: f64,
+    t_end: f64,
+    steps: usize,
+) -> Result<Options, IntegrateError> {
+    if steps == 0 {
+        return Err(IntegrateError::InvalidOption {
+            name: "steps",
+            value: 0.0,
+            rule: "must be > 0",
+        });
+    }
+    let h = (t_end - t0) / steps as f64;
+    Ok(Options {
+        h_init: (h != 0.0).then_some(h),
+        max_steps: steps,
+        ..Options::default()
+    })
+}
+
 /// Safety factor of the step-size prediction.
 const SAFE: f64 = 0.9;
 /// Lower bound `FAC1` of `h_new / h`.
@@ -202,6 +228,8 @@ pub struct Dop853<'a, S, const N: usize> {
     atol: f64,
     max_steps: usize,
     compensated: bool,
+    /// Every step accepted with the same size ([`Dop853::fixed_steps`]): no error control.
+    fixed: bool,
     facold: f64,
     reject: bool,
     done: bool,
@@ -267,12 +295,31 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
             atol: opts.atol,
             max_steps: opts.max_steps,
             compensated: opts.compensated,
+            fixed: false,
             facold: 1e-4,
             reject: false,
             done,
             cont: Cell::new(None),
             stats: Cell::new(stats),
         })
+    }
+
+    /// `steps` equal steps of `sys` from `(t0, y0)` to `t_end`, each accepted without error
+    /// control, the last landing on `t_end`: the method's own order 8, for convergence
+    /// studies. The dense output and the driver work as for the adaptive steps.
+    ///
+    /// Fails as [`Dop853::new`] does, and with [`IntegrateError::InvalidOption`] for
+    /// `steps = 0`.
+    pub fn fixed_steps(
+        sys: &'a S,
+        t0: f64,
+        y0: [f64; N],
+        t_end: f64,
+        steps: usize,
+    ) -> Result<Self, IntegrateError> {
+        let mut solver = Self::new(sys, t0, y0, t_end, &fixed_step_options(t0, t_end, steps)?)?;
+        solver.fixed = true;
+        Ok(solver)
     }
 
     /// Performs one accepted step (rejected attempts are repeated internally)
@@ -330,8 +377,8 @@ impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
             err = h.abs() * err * (1.0 / (N as f64 * deno)).sqrt();
             let fac11 = err.powf(EXPO1);
             let fac = facc2.max(facc1.min(fac11 / SAFE));
-            let mut h_new = h / fac;
-            if err <= 1.0 {
+            let mut h_new = if self.fixed { h } else { h / fac };
+            if err <= 1.0 || self.fixed {
                 let t_new = if last { self.t_end } else { self.t + h };
                 let mut carry = self.carry;
                 if self.compensated {
@@ -473,24 +520,21 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
 }
 
 /// Integrates `sys` from `(t0, y0)` to `t_end` with `n` equal DOP853 steps
-/// without error control (for convergence-order studies); returns `y(t_end)`.
+/// without error control ([`Dop853::fixed_steps`] through the one driver [`drive`]), for
+/// convergence-order studies; returns `y(t_end)`.
 pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     sys: &S,
     t0: f64,
     y0: [f64; N],
     t_end: f64,
     n: usize,
-) -> [f64; N] {
-    let h = (t_end - t0) / n as f64;
-    let mut y = y0;
-    let mut k = [[0.0; N]; 16];
-    for step in 0..n {
-        let t = t0 + step as f64 * h;
-        k[0] = sys.rhs(t, &y);
-        let inc = stages(sys, t, h, &y, &mut k);
-        for i in 0..N {
-            y[i] += h * inc[i];
-        }
-    }
-    y
+) -> Result<[f64; N], IntegrateError> {
+    let mut solver = Dop853::fixed_steps(sys, t0, y0, t_end, n)?;
+    let outcome = drive::<_, IntegrateError, N>(
+        &mut solver,
+        &Drive::default(),
+        &mut |_, _| Ok(()),
+        &mut |_, _, _| Ok(Control::Continue),
+    )?;
+    Ok(outcome.y)
 }

@@ -88,8 +88,10 @@ pub enum Method {
 /// 2026-11-23, three cases to t = 1000): Verner 9(8) reaches every error from 1e-5 to 1e-10
 /// first among our methods (at tolerances down to 1e-15; its smallest error is 2.5e-11 to
 /// 3.6e-11); only the Taylor method reaches errors below that (3.0e-12 to 8.5e-12 at tol 1e-13
-/// to 1e-15), at 1.5 to 2.2x Vern9's time for 1e-10. So tolerances from 1e-13 up go to
-/// Vern9 (its errors there are 5e-9 and above, where Taylor is slower), tighter ones to Taylor.
+/// to 1e-15), at 1.5 to 2.2x Vern9's time for 1e-10. With the Taylor method's order rule of
+/// tol >= 1e-12 (`taylor::step_exponent`), measured again in CPU time: still 1.2 to 1.3x
+/// Vern9's time at 1e-10 and 1.4 to 1.5x at 1e-9. So tolerances from 1e-13 up go to Vern9
+/// (its errors there are 5e-9 and above, where Taylor is slower), tighter ones to Taylor.
 pub const AUTO_TABLE: [(f64, Method); 2] = [(1e-13, Method::Vern9), (0.0, Method::Taylor)];
 
 impl Method {

@@ -14,7 +14,7 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::dop853::{hinit, next_attempt};
+use super::dop853::{fixed_step_options, hinit, next_attempt};
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
 use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
 
@@ -175,19 +175,7 @@ impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
         t_end: f64,
         steps: usize,
     ) -> Result<Self, IntegrateError> {
-        if steps == 0 {
-            return Err(IntegrateError::InvalidOption {
-                name: "steps",
-                value: 0.0,
-                rule: "must be > 0",
-            });
-        }
-        let h = (t_end - t0) / steps as f64;
-        let opts = Options {
-            h_init: (h != 0.0).then_some(h),
-            max_steps: steps,
-            ..Options::default()
-        };
+        let opts = fixed_step_options(t0, t_end, steps)?;
         let mut solver = Self::new(sys, t0, y0, t_end, &opts)?;
         solver.fixed = true;
         Ok(solver)

@@ -11,6 +11,7 @@
 //! Entries are written once, generic over [`Real`]; their first derivatives, which the
 //! Schouten bracket needs, come from forward-mode automatic differentiation ([`Jet::at`]).
 
+pub mod deformation;
 pub mod first;
 pub mod flows;
 pub mod hamiltonian;
@@ -18,6 +19,8 @@ pub mod lie_poisson;
 pub mod reduction;
 pub mod schouten;
 pub mod second;
+pub mod second_reduction;
+pub mod sphere_gauge;
 
 use crate::differential::Dual6;
 use crate::scalar::{lift, Real};

@@ -23,6 +23,19 @@ pub struct PoissonMap {
     pub c: f64,
 }
 
+/// A change of momenta `(gamma, M) -> (gamma, L)` written once for every scalar type, so that
+/// its Jacobian comes from automatic differentiation of the same code.
+pub trait MomentumMap {
+    /// The image `(gamma, L)` of `x = (gamma, M)`.
+    fn image<D: Real>(&self, x: &[D; 6]) -> [D; 6];
+}
+
+impl MomentumMap for PoissonMap {
+    fn image<D: Real>(&self, x: &[D; 6]) -> [D; 6] {
+        PoissonMap::image(self, x)
+    }
+}
+
 impl PoissonMap {
     /// The image `(gamma, L)` of `x = (gamma, M)`.
     pub fn image<D: Real>(&self, x: &[D; 6]) -> [D; 6] {

@@ -58,6 +58,17 @@ pub struct SecondBracket {
     pub alphas: SecondAlphas,
 }
 
+impl SecondBracket {
+    /// The entry `p = m R (R gamma3 + a)(gamma1 alpha1 + gamma2 alpha2)/(I1 + m (R gamma3 + a)^2)`
+    /// of (p-bv2): `{gamma1, M3}' = gamma2 p`, `{gamma2, M3}' = -gamma1 p`.
+    pub fn coupling<D: Real>(&self, gamma: &[D; 3]) -> D {
+        let b = &self.body;
+        let [a1, a2, _] = self.alphas.at(b, gamma);
+        let h = gamma[2] * b.radius + b.a;
+        (gamma[0] * a1 + gamma[1] * a2) * h * (b.m * b.radius) / (h * h * b.m + b.i1)
+    }
+}
+
 impl Bivector for SecondBracket {
     fn entries<D: Real>(&self, x: &[D; 6]) -> Matrix6<D> {
         let b = &self.body;
@@ -66,11 +77,10 @@ impl Bivector for SecondBracket {
         let [a1, a2, a3] = self.alphas.at(b, &gamma);
         let r = b.contact_vector(&gamma);
         let h = r[2];
-        let k = h * h * b.m + b.i1;
         let u = g1 * m[0] + g2 * m[1];
         let g = b.routh_g(&gamma);
         let w = dot(&gamma, &r) * dot(&m, &r) * (b.m * b.m) + (u * b.i3 + g3 * m[2] * b.i1) * b.m;
-        let p = (g1 * a1 + g2 * a2) * h * (b.m * b.radius) / k;
+        let p = self.coupling(&gamma);
         let wg = w / (g * g);
         let zero = lift::<D>(0.0);
         from_blocks(

@@ -7,7 +7,7 @@
 use super::record::{columns, Cell, Kind, Row, RunSettings};
 use super::runner::Sweep;
 use super::table::{check_resumed_row, not_this_sweep, Staged, TableWriter};
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use arrow_array::{Array, ArrayRef, Float64Array, RecordBatch, StringArray, UInt64Array};
 use arrow_schema::{DataType, Field, Schema, SchemaRef};
 use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
@@ -49,11 +49,12 @@ fn schema(sweep: &Sweep) -> SchemaRef {
     Arc::new(Schema::new(fields))
 }
 
-fn parquet_error(path: &Path, e: impl std::fmt::Display) -> RouthError {
-    RouthError::Table {
+fn parquet_error(path: &Path, e: impl std::fmt::Display) -> AppError {
+    FileError::Table {
         origin: path.display().to_string(),
         message: format!("Parquet: {e}"),
     }
+    .into()
 }
 
 fn settings_text(s: &RunSettings) -> String {
@@ -100,9 +101,12 @@ fn batch(schema: &SchemaRef, rows: &[Row], settings: &RunSettings) -> Result<Rec
             }
         })
         .collect();
-    RecordBatch::try_new(schema.clone(), arrays).map_err(|e| RouthError::Table {
-        origin: "sweep".into(),
-        message: format!("cannot build a record batch: {e}"),
+    RecordBatch::try_new(schema.clone(), arrays).map_err(|e| {
+        FileError::Table {
+            origin: "sweep".into(),
+            message: format!("cannot build a record batch: {e}"),
+        }
+        .into()
     })
 }
 
@@ -127,7 +131,7 @@ impl ParquetTable {
             .map_err(|e| parquet_error(&staged.tmp, e))?;
         let mut done = HashSet::new();
         if resume && target.exists() {
-            let file = std::fs::File::open(target).map_err(|source| RouthError::Io {
+            let file = std::fs::File::open(target).map_err(|source| FileError::Io {
                 path: target.to_path_buf(),
                 source,
             })?;

@@ -1,8 +1,8 @@
 //! Running a sweep: the case of each run, one run as `routh simulate` does it plus the
 //! nutation from events and from the quadrature, and many runs on a pool of threads,
-//! handed to a writer chunk by chunk. With DOP853 the runs of one body are integrated
-//! together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the one-at-a-time
-//! integrator: the rows are the same, bit for bit, only faster.
+//! handed to a writer chunk by chunk. With DOP853 or the Taylor method the runs of one body
+//! are integrated together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the
+//! one-at-a-time integrator: the rows are the same, bit for bit, only faster.
 
 use super::design::Design;
 use super::record::{NutationQuadrature, Row, RunSettings, Status};
@@ -12,7 +12,7 @@ use crate::ball::AsBall;
 use crate::batch::{self, Field, Job, LaneEnd, Queue, LANES};
 use crate::body::Body;
 use crate::case::Case;
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Stepper};
 use crate::quadrature::{ExactSolution, Motion};
 use crate::scalar::Scalar;
@@ -42,7 +42,7 @@ pub struct Sweep {
     /// The settings of every run.
     pub settings: Settings,
     /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
-    /// method is DOP853 (the default, `true`); `false` runs them one at a time. The rows are
+    /// method is DOP853 or Taylor (the default, `true`); `false` runs them one at a time. The rows are
     /// the same, bit for bit: only the speed differs.
     pub batch: bool,
 }
@@ -153,6 +153,27 @@ pub enum Completion {
     Stopped,
 }
 
+/// What `routh sweep --method auto` runs: `(tol_min, method)` rows, the first with
+/// `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not [`crate::integrate::AUTO_TABLE`],
+/// which is for one run), from the throughput benchmark of the lanes (BENCHMARKS.md, "Sweeps"):
+/// at equal error the Taylor lanes are about 5x faster than the DOP853 lanes at 2e-12 and at
+/// par at 1.5e-8 (looser tolerances were not measured), and at a given tolerance their error
+/// is hundreds of times smaller.
+pub const SWEEP_AUTO_TABLE: [(f64, Method); 1] = [(0.0, Method::Taylor)];
+
+/// The method a sweep runs for `method` at the tolerance `tol`: [`SWEEP_AUTO_TABLE`] for
+/// [`Method::Auto`] (the rows then name the method that ran, and `routh simulate` with that
+/// method gives the same numbers), the method itself otherwise.
+pub fn resolve(method: Method, tol: f64) -> Method {
+    match method {
+        Method::Auto => SWEEP_AUTO_TABLE
+            .iter()
+            .find(|(tol_min, _)| tol >= *tol_min)
+            .map_or(Method::Taylor, |&(_, m)| m),
+        other => other,
+    }
+}
+
 /// Set `path` (`table.key` or `table.key[i]`) of a case document to `value`.
 fn set(
     doc: &mut toml::Table,
@@ -187,8 +208,12 @@ impl Sweep {
     /// that makes a body or a state invalid is refused, naming the key and the value.
     pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
         let case = Case::parse(text, source)?;
+        let tol = overrides
+            .rtol
+            .unwrap_or(case.integration.rtol)
+            .min(overrides.atol.unwrap_or(case.integration.atol));
         let settings = Settings {
-            method: overrides.method,
+            method: resolve(overrides.method, tol),
             t_end: overrides.t_end.unwrap_or(case.integration.t_end),
             rtol: overrides.rtol.unwrap_or(case.integration.rtol),
             atol: overrides.atol.unwrap_or(case.integration.atol),
@@ -197,11 +222,11 @@ impl Sweep {
             max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
         };
         crate::simulate::validate(&settings)?;
-        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| RouthError::Case {
+        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
             message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
         })?;
-        let refused = |e: Refusal| RouthError::Case {
+        let refused = |e: Refusal| FileError::Case {
             file: source.to_string(),
             message: e.to_string(),
         };
@@ -300,7 +325,7 @@ impl Sweep {
 
     /// The case of run `k`, its body and its initial state `(gamma, M)`.
     fn start(&self, k: u64) -> Result<(Case, Body, [f64; 6])> {
-        let case = self.case_of(k).map_err(|e| RouthError::Case {
+        let case = self.case_of(k).map_err(|e| FileError::Case {
             file: self.source.clone(),
             message: e.to_string(),
         })?;
@@ -366,12 +391,12 @@ impl Sweep {
                 x0,
                 &self.settings,
                 None,
-                &mut |_, _| Ok(()),
+                &mut |_, _| Ok::<_, AppError>(()),
                 &mut |step| turning.observe(step),
             )?;
             match observed.failure {
                 Some(e) => Err(e.into()),
-                None => Ok::<_, RouthError>(self.finished(
+                None => Ok::<_, AppError>(self.finished(
                     k,
                     &body,
                     &case,
@@ -398,13 +423,16 @@ impl Sweep {
     }
 
     /// Whether the runs go through the batched integrator ([`crate::batch`]): asked for
-    /// ([`Sweep::batch`]), DOP853, and a time span to integrate.
+    /// ([`Sweep::batch`]), DOP853 or Taylor, and a time span to integrate.
     fn in_lanes(&self) -> bool {
-        self.batch && self.settings.method == Method::Dop853 && self.settings.t_end > 0.0
+        self.batch
+            && matches!(self.settings.method, Method::Dop853 | Method::Taylor)
+            && self.settings.t_end > 0.0
     }
 
     /// The runs `runs` (on this thread), in their order, the runs of each body together in
-    /// [`LANES`] lanes of the batched DOP853: each row bitwise the row of [`Sweep::run`].
+    /// lanes of the batched DOP853 ([`LANES`]) or Taylor method ([`batch::taylor::lanes`]):
+    /// each row bitwise the row of [`Sweep::run`].
     /// Once `stop` is set no run starts. Should the batch panic, its runs are run one at a
     /// time (where a panicking run is a failed row).
     fn run_in_lanes(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
@@ -438,9 +466,13 @@ impl Sweep {
                     rows: &mut rows,
                     stop,
                 };
-                batch::integrate::<_, _, 6, LANES>(&ReducedSystem(body), &opts, &mut queue)?;
+                let sys = ReducedSystem(body);
+                match self.settings.method {
+                    Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
+                    _ => batch::integrate::<_, _, 6, LANES>(&sys, &opts, &mut queue)?,
+                }
             }
-            Ok::<_, RouthError>(rows.into_iter().flatten().collect())
+            Ok::<_, AppError>(rows.into_iter().flatten().collect())
         }));
         let one_at_a_time = || {
             runs.iter()
@@ -501,7 +533,8 @@ impl Sweep {
                 name: "start, stop",
                 value: format!("{start}, {stop}"),
                 rule: "need 0 <= start <= stop <= the number of runs",
-            });
+            }
+            .into());
         }
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)

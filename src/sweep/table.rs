@@ -7,7 +7,7 @@
 
 use super::record::{columns, Row};
 use super::runner::Sweep;
-use crate::error::{Result, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use std::collections::HashSet;
 use std::io::{BufRead, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -37,23 +37,27 @@ impl Staged {
             value: target.display().to_string(),
             rule: "must name a file",
         })?;
+        let tmp = target.with_file_name(format!(
+            ".{}.tmp-{}",
+            name.to_string_lossy(),
+            std::process::id()
+        ));
+        // A signal that ends the process (a second one, after the sweep's stop) removes it.
+        crate::output::register_temporary(&tmp);
         Ok(Staged {
-            tmp: target.with_file_name(format!(
-                ".{}.tmp-{}",
-                name.to_string_lossy(),
-                std::process::id()
-            )),
+            tmp,
             target: target.to_path_buf(),
             committed: false,
         })
     }
 
     /// An I/O error on the temporary file.
-    pub fn io(&self, source: std::io::Error) -> RouthError {
-        RouthError::Io {
+    pub fn io(&self, source: std::io::Error) -> AppError {
+        FileError::Io {
             path: self.tmp.clone(),
             source,
         }
+        .into()
     }
 
     /// Rename the temporary file over the target.
@@ -69,15 +73,17 @@ impl Drop for Staged {
         if !self.committed {
             let _ = std::fs::remove_file(&self.tmp);
         }
+        crate::output::unregister_temporary(&self.tmp);
     }
 }
 
 /// The error for a file that is not a stopped run of this sweep.
-pub fn not_this_sweep(path: &Path, why: impl std::fmt::Display) -> RouthError {
-    RouthError::Table {
+pub fn not_this_sweep(path: &Path, why: impl std::fmt::Display) -> AppError {
+    FileError::Table {
         origin: path.display().to_string(),
         message: format!("cannot resume: {why}; remove the file or choose another --out"),
     }
+    .into()
 }
 
 /// Check that `values` (the swept values and settings read from row `run` of an existing
@@ -128,7 +134,7 @@ impl CsvTable {
         writeln!(file, "{header}").map_err(|e| staged.io(e))?;
         let mut done = HashSet::new();
         if resume && target.exists() {
-            let read_err = |source| RouthError::Io {
+            let read_err = |source| FileError::Io {
                 path: target.to_path_buf(),
                 source,
             };
@@ -218,11 +224,12 @@ pub fn open(
             name: "out",
             value: target.display().to_string(),
             rule: "this build has no Parquet output: build with `cargo build --release --features parquet`, or write .csv",
-        }),
+        }.into()),
         _ => Err(RouthError::Option {
             name: "out",
             value: target.display().to_string(),
             rule: "must end in .parquet or .csv",
-        }),
+        }
+        .into()),
     }
 }

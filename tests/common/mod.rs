@@ -1,6 +1,9 @@
 //! Running the `routh` binary from the integration tests, as a user would.
 
-use std::process::{Command, Output};
+// Each test binary compiles this module and uses a subset of it.
+#![allow(dead_code)]
+
+use std::process::{Command, Output, Stdio};
 
 /// Run `routh` with `args` and collect its output.
 pub fn routh(args: &[&str]) -> Output {
@@ -21,4 +24,16 @@ pub fn assert_exit_2(args: &[&str], expected: &str) {
         "{args:?}: `{err}` lacks `{expected}`"
     );
     assert!(!err.contains("panicked"), "{args:?}: {err}");
+}
+
+/// Run `command` with its standard output a pipe whose reader has gone before the command
+/// writes (as `command | head -0`), and collect its exit status and stderr.
+pub fn with_closed_stdout(mut command: Command) -> Output {
+    let mut child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    drop(child.stdout.take());
+    child.wait_with_output().expect("the binary ends")
 }

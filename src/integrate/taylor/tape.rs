@@ -34,6 +34,7 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
+use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use crate::integrate::OdeSystem;
@@ -305,31 +306,110 @@ enum Instr {
     MinusMul(u32, u32, u32),
 }
 
+/// The numbers the Taylor coefficients are made of: `f64` (one run) or
+/// [`Lanes`](crate::batch::Lanes) (one run per lane, structure of arrays: coefficient `k` of a
+/// slot for all lanes side by side, the convolutions vectorised across the lanes). The
+/// recurrences of [`Tape::expand`] are written once for every such type, and each lane's
+/// arithmetic is that of `f64`, operation for operation: a lane's coefficients are bitwise
+/// those of an `f64` tape expanded through the same state.
+pub trait Coefficient: Scalar + fmt::Debug + Send + Sync {
+    /// The number of runs (lanes) one coefficient carries.
+    const WIDTH: usize;
+    /// `self * a + b` with one rounding in each lane ([`f64::mul_add`]).
+    fn fused_mul_add(self, a: Self, b: Self) -> Self;
+    /// Lane `l`.
+    fn lane(&self, l: usize) -> f64;
+    /// Sets lane `l` to `v`.
+    fn set_lane(&mut self, l: usize, v: f64);
+}
+
+impl Coefficient for f64 {
+    const WIDTH: usize = 1;
+
+    #[inline(always)]
+    fn fused_mul_add(self, a: f64, b: f64) -> f64 {
+        f64::mul_add(self, a, b)
+    }
+
+    #[inline(always)]
+    fn lane(&self, _l: usize) -> f64 {
+        *self
+    }
+
+    #[inline(always)]
+    fn set_lane(&mut self, _l: usize, v: f64) {
+        *self = v;
+    }
+}
+
+/// The instruction set the expansion runs in, detected at run time ([`Isa::detect`]). The
+/// dot products fuse their multiply-adds with AVX2 or AVX-512 alike: the arithmetic of a lane
+/// does not depend on how many lanes run beside it, nor on the width of the registers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Isa {
+    /// The target's baseline (x86-64: SSE2, two doubles a register): products and sums apart.
+    Baseline,
+    /// AVX2 and FMA: four doubles a register, fused multiply-adds in the dot products.
+    Avx2Fma,
+    /// AVX-512F with AVX2 and FMA: eight doubles a register, fused multiply-adds in the dot
+    /// products.
+    Avx512,
+}
+
+impl Isa {
+    /// The widest of the three that this CPU has.
+    pub fn detect() -> Isa {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::is_x86_feature_detected as has;
+            if has!("avx2") && has!("fma") {
+                return if has!("avx512f") {
+                    Isa::Avx512
+                } else {
+                    Isa::Avx2Fma
+                };
+            }
+        }
+        Isa::Baseline
+    }
+
+    /// The number of doubles in one vector register.
+    pub fn doubles(self) -> usize {
+        match self {
+            Isa::Baseline => 2,
+            Isa::Avx2Fma => 4,
+            Isa::Avx512 => 8,
+        }
+    }
+}
+
 /// A field `y' = f(t, y)` of dimension `N` as a compiled expression tape, with the storage of
-/// the Taylor coefficients of all its slots up to order `max_order`.
+/// the Taylor coefficients (of type `T`: [`Coefficient`]) of all its slots up to order
+/// `max_order`.
 #[derive(Debug, Clone)]
-pub struct Tape<const N: usize> {
+pub struct Tape<const N: usize, T = f64> {
     code: Vec<Instr>,
     /// Slot of the time.
     time: usize,
-    /// First slot written by `code`.
+    /// First slot written by `code`; the constants are the slots `N + 1 .. first_op`.
     first_op: usize,
     /// Slot of each output component `f_i`.
     outputs: [usize; N],
+    /// The values of the constants, in slot order.
+    constants: Vec<f64>,
     /// Coefficients per slot: `coef[s * stride + k] = x_s^[k]`, `k <= max_order`.
-    coef: Vec<f64>,
+    coef: Vec<T>,
     /// The same, reversed within each slot: `rev[s * stride + max_order - k] = x_s^[k]`, so
     /// that the convolutions `sum_j a^[j] b^[k-j]` read both runs forward (a dot product),
     /// followed by `PAD` zeros that are never written: a dot product of order `k` can then run
     /// over `k + 1` rounded up to a multiple of 4 (the extra terms pair an order above `k`
     /// of the forward run, finite, with a zero).
-    rev: Vec<f64>,
+    rev: Vec<T>,
     max_order: usize,
     /// `max_order + 1 + PAD`.
     stride: usize,
-    /// The CPU has AVX2 and FMA: the orders `k >= 1` run in a copy of the code compiled for
-    /// them, with fused multiply-adds in the dot products.
-    fused: bool,
+    /// The instruction set of the orders `k >= 1` (and whether their dot products fuse).
+    isa: Isa,
 }
 
 /// Zeros after each reversed run (see [`Tape`]).
@@ -450,23 +530,50 @@ impl<const N: usize> Tape<N> {
                 },
             })
             .collect::<Vec<_>>();
-        let mut tape = Tape {
-            coef: vec![0.0; (first_op + code.len()) * stride],
-            rev: vec![0.0; (first_op + code.len()) * stride],
+        let tape: Tape<N> = Tape {
             code,
             time: N,
             first_op,
             outputs: outputs.map(|o| slot[o as usize]),
+            constants: constants.iter().map(|&(_, c)| c).collect(),
+            coef: vec![],
+            rev: vec![],
             max_order,
             stride,
-            fused: avx2_fma(),
+            isa: Isa::detect(),
         };
-        for (j, &(_, c)) in constants.iter().enumerate() {
-            tape.set(N + 1 + j, 0, c);
+        tape.with_coefficients()
+    }
+}
+
+impl<const N: usize, T: Coefficient> Tape<N, T> {
+    /// The same tape with the coefficient storage of type `U` (e.g. [`Lanes`](crate::batch::Lanes)
+    /// to expand several runs at once), every coefficient zero but the constants.
+    pub fn with_coefficients<U: Coefficient>(&self) -> Tape<N, U> {
+        let zero = U::from_f64(0.0);
+        let size = (self.first_op + self.code.len()) * self.stride;
+        let mut tape = Tape {
+            code: self.code.clone(),
+            time: self.time,
+            first_op: self.first_op,
+            outputs: self.outputs,
+            constants: self.constants.clone(),
+            coef: vec![zero; size],
+            rev: vec![zero; size],
+            max_order: self.max_order,
+            stride: self.stride,
+            isa: self.isa,
+        };
+        for j in 0..tape.constants.len() {
+            tape.set(N + 1 + j, 0, U::from_f64(tape.constants[j]));
         }
         tape
     }
 
+    /// The instruction set the expansion runs in (detected when the tape was recorded).
+    pub fn isa(&self) -> Isa {
+        self.isa
+    }
     /// Number of operations on the compiled tape.
     pub fn len(&self) -> usize {
         self.code.len()
@@ -506,23 +613,28 @@ impl<const N: usize> Tape<N> {
     }
 
     /// The field `f(t, y)` from the tape (order 0 of the recurrences): the same numbers, bit
-    /// for bit, as the `f64` field it was recorded from.
-    pub fn evaluate(&mut self, t: f64, y: &[f64; N]) -> [f64; N] {
+    /// for bit, as the `f64` field it was recorded from (in each lane).
+    pub fn evaluate(&mut self, t: T, y: &[T; N]) -> [T; N] {
         self.seed(t, y);
         self.order_zero();
         self.outputs.map(|o| self.coef[o * self.stride])
     }
 
-    /// Taylor coefficients `y^[0..=p]` of the solution through `(t, y)`: on return,
-    /// [`Tape::state_coefficient`]`(i, k)` holds `y_i^[k]` for `k <= p` (`p <= max_order`).
-    /// From `y^[k+1] = f^[k] / (k + 1)`: one pass of the tape per order.
-    pub fn expand(&mut self, t: f64, y: &[f64; N], p: usize) {
+    /// Taylor coefficients `y^[0..=p]` of the solution through `(t, y)` (in each lane): on
+    /// return, [`Tape::state_coefficient`]`(i, k)` holds `y_i^[k]` for `k <= p`
+    /// (`p <= max_order`). From `y^[k+1] = f^[k] / (k + 1)`: one pass of the tape per order.
+    ///
+    /// A lane whose series is not finite is cleared ([`Tape::clear_lane`]) and its state
+    /// coefficients `y^[0..=p]` set to NaN, so that a step taken from them is NaN (its
+    /// integrator reports it); expanding that lane again gives NaN until it is cleared.
+    pub fn expand(&mut self, t: T, y: &[T; N], p: usize) {
         #[cfg(target_arch = "x86_64")]
-        if self.fused {
-            // SAFETY: `fused` is true only if the CPU has AVX2 and FMA (`avx2_fma`), the
-            // features `expand_avx2_fma` is compiled for.
-            unsafe { self.expand_avx2_fma(t, y, p) };
-            return;
+        match self.isa {
+            // SAFETY: `isa` comes from `Isa::detect`: the CPU has the features each function
+            // is compiled for.
+            Isa::Avx512 => return unsafe { self.expand_avx512(t, y, p) },
+            Isa::Avx2Fma => return unsafe { self.expand_avx2_fma(t, y, p) },
+            Isa::Baseline => {}
         }
         self.expand_with::<false>(t, y, p);
     }
@@ -530,13 +642,20 @@ impl<const N: usize> Tape<N> {
     /// [`Tape::expand`] compiled for AVX2 and FMA.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    fn expand_avx2_fma(&mut self, t: f64, y: &[f64; N], p: usize) {
+    fn expand_avx2_fma(&mut self, t: T, y: &[T; N], p: usize) {
+        self.expand_with::<true>(t, y, p);
+    }
+
+    /// [`Tape::expand`] compiled for AVX-512F (and AVX2, FMA).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2,fma")]
+    fn expand_avx512(&mut self, t: T, y: &[T; N], p: usize) {
         self.expand_with::<true>(t, y, p);
     }
 
     /// [`Tape::expand`], with fused multiply-adds in the dot products if `FMA`.
     #[inline(always)]
-    fn expand_with<const FMA: bool>(&mut self, t: f64, y: &[f64; N], p: usize) {
+    fn expand_with<const FMA: bool>(&mut self, t: T, y: &[T; N], p: usize) {
         assert!(
             p <= self.max_order,
             "order {p} above the tape's {}",
@@ -566,44 +685,65 @@ impl<const N: usize> Tape<N> {
         }
         // The orders above k of the forward runs meet zeros in the dot products: they must
         // stay finite for the next expansion. A non-finite intermediate shows in the series
-        // of the state (or, if it does not, in the next expansion's, as a NaN).
-        let finite = (0..N).all(|i| self.state_series(i, p).iter().all(|v| v.is_finite()));
-        if !finite {
-            self.coef.iter_mut().for_each(|v| *v = 0.0);
-            self.rev.iter_mut().for_each(|v| *v = 0.0);
+        // of the state (or, if it does not, in the next expansion's, as a NaN). `x * 0` is
+        // NaN for a non-finite `x` and zero otherwise: one vector sum finds the lanes.
+        let mut probe = T::from_f64(0.0);
+        for i in 0..N {
+            for &v in self.state_series(i, p) {
+                probe = probe + v * 0.0;
+            }
+        }
+        for l in (0..T::WIDTH).filter(|&l| !probe.lane(l).is_finite()) {
+            self.clear_lane(l);
             for i in 0..N {
-                self.set(i, 0, f64::NAN);
+                for k in 0..=p {
+                    self.coef[i * self.stride + k].set_lane(l, f64::NAN);
+                }
+            }
+        }
+    }
+
+    /// Sets every coefficient of lane `l` to zero but the constants': the lane is then as in
+    /// a new tape (for a new run in that lane; the results of an expansion depend on the
+    /// previous one's only through zeros, whose signs this makes those of a new tape).
+    pub fn clear_lane(&mut self, l: usize) {
+        let ops = self.first_op * self.stride;
+        let inputs = (N + 1) * self.stride;
+        for store in [&mut self.coef, &mut self.rev] {
+            let (inputs_and_constants, operations) = store.split_at_mut(ops);
+            for v in inputs_and_constants[..inputs].iter_mut().chain(operations) {
+                v.set_lane(l, 0.0);
             }
         }
     }
 
     /// `y_i^[k]` after [`Tape::expand`].
     #[inline(always)]
-    pub fn state_coefficient(&self, i: usize, k: usize) -> f64 {
+    pub fn state_coefficient(&self, i: usize, k: usize) -> T {
         self.coef[i * self.stride + k]
     }
 
     /// The coefficients `y_i^[0..=p]` after [`Tape::expand`].
     #[inline(always)]
-    pub fn state_series(&self, i: usize, p: usize) -> &[f64] {
+    pub fn state_series(&self, i: usize, p: usize) -> &[T] {
         &self.coef[i * self.stride..=i * self.stride + p]
     }
 
     /// Stores `x_slot^[k]` in both layouts.
     #[inline(always)]
-    fn set(&mut self, slot: usize, k: usize, value: f64) {
+    fn set(&mut self, slot: usize, k: usize, value: T) {
         self.coef[slot * self.stride + k] = value;
         self.rev[slot * self.stride + self.max_order - k] = value;
     }
 
     #[inline(always)]
-    fn seed(&mut self, t: f64, y: &[f64; N]) {
+    fn seed(&mut self, t: T, y: &[T; N]) {
         for (i, &v) in y.iter().enumerate() {
             self.set(i, 0, v);
         }
         self.set(self.time, 0, t);
         if self.max_order > 0 {
-            self.set(self.time, 1, 1.0);
+            self.set(self.time, 1, T::from_f64(1.0));
         }
     }
 
@@ -613,6 +753,7 @@ impl<const N: usize> Tape<N> {
         // Slices held in locals: the stores below cannot make the compiler reload them.
         let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
         let (stride, top) = (self.stride, self.max_order);
+        let lift = T::from_f64;
         for (j, instr) in code.iter().enumerate() {
             let value = match *instr {
                 Instr::Add(a, b) => c[a as usize] + c[b as usize],
@@ -623,10 +764,10 @@ impl<const N: usize> Tape<N> {
                 Instr::Sqrt(a) => c[a as usize].sqrt(),
                 Instr::MulAdd(a, b, d) => c[a as usize].mul_add(c[b as usize], c[d as usize]),
                 Instr::AddC(a, k) => c[a as usize] + k,
-                Instr::CSub(k, a) => k - c[a as usize],
+                Instr::CSub(k, a) => lift(k) - c[a as usize],
                 Instr::MulC(a, k) => c[a as usize] * k,
                 Instr::DivC(a, k) => c[a as usize] / k,
-                Instr::CDiv(k, a) => k / c[a as usize],
+                Instr::CDiv(k, a) => lift(k) / c[a as usize],
                 Instr::DotAdd(a, b, d, e) => {
                     c[a as usize] * c[b as usize] + c[d as usize] * c[e as usize]
                 }
@@ -666,39 +807,39 @@ impl<const N: usize> Tape<N> {
                 Instr::MulC(a, m) => c[a as usize + k] * m,
                 Instr::DivC(a, m) => c[a as usize + k] / m,
                 // sum_{j=0..k} a^[j] b^[k-j]
-                Instr::Mul(a, b) => dot::<L, FMA>(fwd(a as usize), rwd(b as usize)),
+                Instr::Mul(a, b) => dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)),
                 Instr::MulAdd(a, b, d) | Instr::MulPlus(a, b, d) => {
-                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
+                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
                 }
                 Instr::MulMinus(a, b, d) => {
-                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize)) - c[d as usize + k]
+                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)) - c[d as usize + k]
                 }
                 Instr::MinusMul(d, a, b) => {
-                    c[d as usize + k] - dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
+                    c[d as usize + k] - dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
                 }
                 Instr::DotAdd(a, b, d, e) => {
-                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
-                        + dot::<L, FMA>(fwd(d as usize), rwd(e as usize))
+                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
+                        + dot::<T, L, FMA>(fwd(d as usize), rwd(e as usize))
                 }
                 Instr::DotSub(a, b, d, e) => {
-                    dot::<L, FMA>(fwd(a as usize), rwd(b as usize))
-                        - dot::<L, FMA>(fwd(d as usize), rwd(e as usize))
+                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
+                        - dot::<T, L, FMA>(fwd(d as usize), rwd(e as usize))
                 }
                 // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
                 Instr::Div(a, b) => {
                     let b = b as usize;
-                    (c[a as usize + k] - dot::<L, FMA>(fwd(b + 1), rwd(dest + 1))) / c[b]
+                    (c[a as usize + k] - dot::<T, L, FMA>(fwd(b + 1), rwd(dest + 1))) / c[b]
                 }
                 Instr::CDiv(_, b) => {
                     let b = b as usize;
-                    -dot::<L, FMA>(fwd(b + 1), rwd(dest + 1)) / c[b]
+                    -dot::<T, L, FMA>(fwd(b + 1), rwd(dest + 1)) / c[b]
                 }
                 // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
                 // padded terms would meet w^[k] of the previous expansion).
                 Instr::Sqrt(a) => {
                     let w = &c[dest + 1..dest + k];
                     let w_rev = &r[dest + back + 1..dest + back + k];
-                    (c[a as usize + k] - dot::<0, FMA>(w, w_rev)) / (2.0 * c[dest])
+                    (c[a as usize + k] - dot::<T, 0, FMA>(w, w_rev)) / (c[dest] * 2.0)
                 }
             };
             c[dest + k] = value;
@@ -710,37 +851,26 @@ impl<const N: usize> Tape<N> {
 
 /// `sum_j a[j] b[j]` over `L` terms (unrolled), or over the length of `a` for `L = 0`, in four
 /// partial sums so that the additions do not wait on each other; fused multiply-adds if `FMA`.
+/// The same operations in each lane whatever the [`Coefficient`] type.
 #[inline(always)]
-fn dot<const L: usize, const FMA: bool>(a: &[f64], b: &[f64]) -> f64 {
+fn dot<T: Coefficient, const L: usize, const FMA: bool>(a: &[T], b: &[T]) -> T {
     let n = if L == 0 { a.len() } else { L };
     let (a, b) = (&a[..n], &b[..n]);
     let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
-    let mut s = [0.0; 4];
-    for (l, (x, y)) in a4.remainder().iter().zip(b4.remainder()).enumerate() {
+    let mut s = [T::from_f64(0.0); 4];
+    for (l, (&x, &y)) in a4.remainder().iter().zip(b4.remainder()).enumerate() {
         s[l] = x * y;
     }
     for (x, y) in a4.zip(b4) {
         for l in 0..4 {
             s[l] = if FMA {
-                x[l].mul_add(y[l], s[l])
+                x[l].fused_mul_add(y[l], s[l])
             } else {
                 s[l] + x[l] * y[l]
             };
         }
     }
     (s[0] + s[1]) + (s[2] + s[3])
-}
-
-/// Whether the CPU has AVX2 and FMA.
-fn avx2_fma() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
 }
 
 /// A sum or difference with the products it absorbs (see [`Tape::compile`]); node indices.
@@ -770,4 +900,60 @@ fn operands(node: &Node) -> impl Iterator<Item = u32> {
         Node::MulAdd(a, b, c) => [Some(a), Some(b), Some(c)],
     };
     list.into_iter().flatten()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Tape, Var};
+    use crate::batch::Lanes;
+    use crate::integrate::OdeSystem;
+    use crate::scalar::Scalar;
+
+    /// `y' = 1 / y`: not finite at `y = 0`.
+    struct Inverse;
+
+    impl OdeSystem<1> for Inverse {
+        fn rhs(&self, _t: f64, y: &[f64; 1]) -> [f64; 1] {
+            [1.0 / y[0]]
+        }
+
+        fn record(&self, _t: Var, y: &[Var; 1]) -> Option<[Var; 1]> {
+            Some([Scalar::recip(y[0])])
+        }
+    }
+
+    /// Four runs expanded at once, one of them through `y = 0` where the field is infinite:
+    /// that lane's state coefficients are all NaN up to the order (a step from them is NaN,
+    /// which the integrators refuse), and the other lanes are bitwise an `f64` tape's
+    /// (tolerance zero: the same operations). Cleared, the lane expands as a new tape does.
+    /// Negative control: a lane through another state differs from the `f64` tape's.
+    #[test]
+    fn a_non_finite_lane_is_nan_and_leaves_the_others_alone() {
+        let p = 6;
+        let tape = Tape::record(&Inverse, p).expect("records");
+        let mut lanes: Tape<1, Lanes<4>> = tape.with_coefficients();
+        let single = |y: f64| {
+            let mut one = tape.clone();
+            one.expand(0.0, &[y], p);
+            (0..=p)
+                .map(|k| one.state_coefficient(0, k).to_bits())
+                .collect::<Vec<_>>()
+        };
+        let lane = |lanes: &Tape<1, Lanes<4>>, l: usize| {
+            (0..=p)
+                .map(|k| lanes.state_coefficient(0, k).0[l].to_bits())
+                .collect::<Vec<_>>()
+        };
+        let y = [1.0, 0.0, 2.0, -3.0];
+        lanes.expand(Lanes::splat(0.0), &[Lanes(y)], p);
+        for l in [0, 2, 3] {
+            assert_eq!(lane(&lanes, l), single(y[l]), "lane {l}");
+            assert!(single(y[l]).iter().all(|&b| f64::from_bits(b).is_finite()));
+        }
+        assert!((0..=p).all(|k| lanes.state_coefficient(0, k).0[1].is_nan()));
+        assert_ne!(lane(&lanes, 0), single(1.5), "negative control");
+        lanes.clear_lane(1);
+        lanes.expand(Lanes::splat(0.0), &[Lanes([1.0, 0.5, 2.0, -3.0])], p);
+        assert_eq!(lane(&lanes, 1), single(0.5));
+    }
 }
