@@ -103,6 +103,9 @@ pub struct Nutation {
     /// `1 - u2` and `1 + u1`, accurate near the poles (see `Turning`).
     gap_top: f64,
     gap_bottom: f64,
+    /// `u2 - u1`, to the relative round-off of the turning points' distances from the pole
+    /// (see `Turnings`).
+    width: f64,
     /// Nutation period T.
     pub period: f64,
     /// Advance of the precession angle psi per period.
@@ -270,55 +273,105 @@ struct Turning {
     gap: f64,
 }
 
+/// The two turning points of a nutation and its width `u2 - u1`, all found in the distance
+/// `x = 1 - p u` from the pole p of the initial state's hemisphere ([`turning_points`]), so
+/// that the width of a nutation near that pole carries the relative round-off of x, not the
+/// absolute rounding `eps` of u (1e-4 relative for a nutation of width 1e-12 at the pole).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Turnings {
+    lower: Turning,
+    upper: Turning,
+    width: f64,
+    /// The first step of the search: a nutation through a turning point at `x0` whose other
+    /// turning point lies closer than this is not separated from it (see
+    /// `ExactSolution::unresolved_nutation`).
+    first_step: f64,
+}
+
 /// Below this distance from a pole a turning point is refined in the distance itself.
 const NEAR_POLE: f64 = 1.0 / 8.0;
 
-/// The turning point of Q met by going from `u0` in direction `dir` (+1 or -1): a geometric
-/// search for the first sign change, refined by Brent's method (near the pole `dir`, in the
-/// distance from it, in the frame of that pole, [`Reduction::q_in_frame`]).
-fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<Turning> {
-    let u = turning_point_u(red, u0, dir)?;
-    let gap = 1.0 - dir * u;
-    if !(gap < NEAR_POLE) {
-        return Ok(Turning { u, gap });
+/// The distance `x0 = 1 - p gamma3` of gamma from the pole p, from the horizontal part of
+/// gamma in p's own hemisphere (where `1 - p gamma3` would round x0 to `eps` absolute).
+fn distance_from_pole(gamma: &[f64; 3], pole: f64) -> f64 {
+    if pole * gamma[2] > 0.0 {
+        (gamma[0] * gamma[0] + gamma[1] * gamma[1]) / (1.0 + pole * gamma[2])
+    } else {
+        1.0 - pole * gamma[2]
     }
-    // Q > 0 toward u0 (larger gap), Q < 0 toward the pole: at the pole itself
-    // `Q = -c N(p)^2 < 0` unless the motion passes through the axis (`N(p) = 0`, the pole is
-    // the turning point). The root is bracketed in the gap, where u rounded it to `eps`.
-    let q = |v: f64| red.q_in_frame(dir, v);
-    let mut inner = gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON;
-    while !(q(inner) > 0.0) && inner < NEAR_POLE {
-        inner *= 2.0;
-    }
-    let outer = [gap * (1.0 - 1e-6), 0.0]
-        .into_iter()
-        .find(|&v| v < inner && q(v) < 0.0);
-    let gap = match outer {
-        Some(outer) if q(inner) > 0.0 => brent(q, outer, inner, 0.0, 200).unwrap_or(gap),
-        _ => gap,
-    };
-    Ok(Turning { u, gap })
 }
 
-/// The turning point as u (see [`turning_point`]).
-fn turning_point_u(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
-    let q = |u: f64| red.q(u);
-    let end = dir;
-    let (mut prev, mut step) = (u0, FIRST_SEARCH_STEP);
+/// The pole of the hemisphere of gamma (the top one at the equator).
+fn pole_of_hemisphere(gamma: &[f64; 3]) -> f64 {
+    if gamma[2] >= 0.0 {
+        1.0
+    } else {
+        -1.0
+    }
+}
+
+/// The turning points of Q met by going from `x0 = 1 - p u0` toward the pole p and away
+/// from it, in x ([`Reduction::q_from_pole`]): a geometric search for the first sign change
+/// from a first step `FIRST_SEARCH_STEP min(x0, 1)` (relative to x0, which carries a relative
+/// round-off: a nutation 1e-13 from the pole spans 1e-12 in x, 8,000 roundings of u, and a
+/// first step of 1e-8 in u, as before, stepped over it and took it for steady), refined by
+/// Brent's method; a far turning point within `NEAR_POLE` of the other pole is refined again
+/// in the distance from that pole.
+fn turning_points(red: &Reduction, pole: f64, x0: f64) -> Result<Turnings> {
+    let q = |x: f64| red.q_from_pole(pole, x);
+    let first_step = if x0 > 0.0 {
+        FIRST_SEARCH_STEP * x0.min(1.0)
+    } else {
+        FIRST_SEARCH_STEP * FIRST_SEARCH_STEP
+    };
+    let near = frame_root(&q, x0, -1.0, first_step)?;
+    let far = frame_root(&q, x0, 1.0, first_step)?;
+    let near_turning = Turning {
+        u: pole * (1.0 - near),
+        gap: near,
+    };
+    let far_gap = refine_gap(red, -pole, 2.0 - far);
+    let far_turning = Turning {
+        u: -pole * (1.0 - far_gap),
+        gap: far_gap,
+    };
+    let width = if far_gap < NEAR_POLE {
+        2.0 - near - far_gap
+    } else {
+        far - near
+    };
+    let (lower, upper) = if pole > 0.0 {
+        (far_turning, near_turning)
+    } else {
+        (near_turning, far_turning)
+    };
+    Ok(Turnings {
+        lower,
+        upper,
+        width,
+        first_step,
+    })
+}
+
+/// The root of `q` (Q in x) met by going from x0 in direction `dir` (-1 toward the pole,
+/// where x ends at 0; +1 away from it, to x = 2); x0 itself when Q is not positive there
+/// and at the first step.
+fn frame_root(q: &impl Fn(f64) -> f64, x0: f64, dir: f64, first_step: f64) -> Result<f64> {
+    let end = 1.0 + dir;
+    let (mut prev, mut step) = (x0, first_step);
     loop {
         let cur = if (end - prev).abs() <= step {
             end
         } else {
             prev + dir * step
         };
-        let qc = q(cur);
-        if qc < 0.0 {
-            if prev == u0 && q(u0) <= 0.0 {
-                return Ok(u0);
+        if q(cur) < 0.0 {
+            if prev == x0 && q(x0) <= 0.0 {
+                return Ok(x0);
             }
             return brent(q, prev, cur, 0.0, 200).ok_or_else(|| RouthError::Singular {
                 formula: "the reduced equation (du/dt)^2 = Q(u)",
-                reason: format!("no turning point refined in [{prev}, {cur}]"),
+                reason: format!("no turning point refined in x = 1 - p u in [{prev}, {cur}]"),
             });
         }
         if cur == end {
@@ -326,6 +379,28 @@ fn turning_point_u(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
         }
         prev = cur;
         step = (2.0 * step).min(MAX_SEARCH_STEP);
+    }
+}
+
+/// The distance `gap` of a turning point from the pole `pole`, refined in the frame of that
+/// pole when it is below `NEAR_POLE` ([`Reduction::q_in_frame`]): Q > 0 toward the nutation
+/// (larger gap), Q < 0 toward the pole (at the pole `Q = -c N(p)^2 < 0` unless the motion
+/// passes through the axis, `N(p) = 0`, and the pole is the turning point).
+fn refine_gap(red: &Reduction, pole: f64, gap: f64) -> f64 {
+    if !(gap < NEAR_POLE) {
+        return gap;
+    }
+    let q = |v: f64| red.q_in_frame(pole, v);
+    let mut inner = gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON;
+    while !(q(inner) > 0.0) && inner < NEAR_POLE {
+        inner *= 2.0;
+    }
+    let outer = [gap * (1.0 - 1e-6), 0.0]
+        .into_iter()
+        .find(|&v| v < inner && q(v) < 0.0);
+    match outer {
+        Some(outer) if q(inner) > 0.0 => brent(q, outer, inner, 0.0, 200).unwrap_or(gap),
+        _ => gap,
     }
 }
 
@@ -400,17 +475,29 @@ impl ExactSolution {
             };
             return Ok(steady(u0, omega_fit, accuracy));
         }
-        let lower = turning_point(&red, u0, -1.0)?;
-        let upper = turning_point(&red, u0, 1.0)?;
-        let (u1, u2) = (lower.u, upper.u);
+        let pole = pole_of_hemisphere(&initial.gamma);
+        let x0 = distance_from_pole(&initial.gamma, pole);
+        let turnings = turning_points(&red, pole, x0)?;
+        let (u1, u2, width) = (turnings.lower.u, turnings.upper.u, turnings.width);
         let mid = 0.5 * (u1 + u2);
+        // The middle in x: `x = 1 - p u` of the turning point on the pole's side plus half
+        // the width (u itself rounds it to eps).
+        let x_mid = if pole > 0.0 {
+            turnings.upper.gap
+        } else {
+            turnings.lower.gap
+        } + 0.5 * width;
         let noise_mid = red.q_noise(mid, errors).max(red.q_noise(u0, errors));
-        if red.q(mid).max(red.q(u0)) <= 4.0 * noise_mid {
-            return Self::unresolved_nutation(&red, u0, u2 - u1, noise_mid)
+        if red.q_from_pole(pole, x_mid).max(red.q_from_pole(pole, x0)) <= 4.0 * noise_mid {
+            // The search separates turning points only beyond its first step.
+            return Self::unresolved_nutation(&red, u0, width + turnings.first_step, noise_mid)
                 .map(|(rate, accuracy)| steady(u0, rate, accuracy));
         }
-        let (lower, upper) = (lower.snapped(-1.0), upper.snapped(1.0));
-        let (u1, u2) = (lower.u, upper.u);
+        let turnings = Turnings {
+            lower: turnings.lower.snapped(-1.0),
+            upper: turnings.upper.snapped(1.0),
+            ..turnings
+        };
         let mut root_error = 0.0;
         for u in [u1, u2] {
             let (_, dq, q2) = red.q_derivatives(u);
@@ -432,12 +519,12 @@ impl ExactSolution {
                     ),
                 });
             }
-            root_error += shift / (u2 - u1);
+            root_error += shift / width;
         }
         let omega = initial.omega(body);
         let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
-        let mut nutation = Nutation::new(red, lower, upper, initial, udot0)?;
-        match Self::sensitivity(&nutation, mid, errors, initial, udot0) {
+        let mut nutation = Nutation::new(red, &turnings, initial, udot0)?;
+        match Self::sensitivity(&nutation, (pole, x_mid), mid, errors, initial, udot0) {
             Some((period, advance)) => {
                 nutation.period_error += period;
                 nutation.advance_error += advance;
@@ -459,9 +546,7 @@ impl ExactSolution {
             .sqrt()
             .max(f64::MIN_POSITIVE);
         let size = |v: &[f64], scale: f64| v.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
-        let widest = (0.5 * (u1 + u2) / (0.5 * (u2 - u1)))
-            .clamp(-1.0, 1.0)
-            .acos();
+        let widest = (0.5 * (u1 + u2) / (0.5 * width)).clamp(-1.0, 1.0).acos();
         let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
         for sigma in [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0] {
             let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
@@ -499,6 +584,7 @@ impl ExactSolution {
     /// absolute change of the advance, or `None` if the moved level set cannot be solved.
     fn sensitivity(
         nutation: &Nutation,
+        (pole, x_mid): (f64, f64),
         mid: f64,
         errors: [f64; 5],
         initial: &State,
@@ -507,7 +593,7 @@ impl ExactSolution {
         let red = &nutation.reduction;
         let grad = red.q_integral_gradient(mid);
         let shift: f64 = grad.iter().zip(errors).map(|(g, e)| g.abs() * e).sum();
-        let k = (0.1 * red.q(mid) / shift).min(1e4);
+        let k = (0.1 * red.q_from_pole(pole, x_mid) / shift).min(1e4);
         if !(k > 0.0) {
             return None;
         }
@@ -520,9 +606,13 @@ impl ExactSolution {
                 .unwrap_or(1.0);
             parameters[i] + k * errors[i] * slope.signum()
         }));
-        let lo = turning_point(&other, mid, -1.0).ok()?.snapped(-1.0);
-        let hi = turning_point(&other, mid, 1.0).ok()?.snapped(1.0);
-        let alt = Nutation::new(other, lo, hi, initial, udot0).ok()?;
+        let turnings = turning_points(&other, pole, x_mid).ok()?;
+        let turnings = Turnings {
+            lower: turnings.lower.snapped(-1.0),
+            upper: turnings.upper.snapped(1.0),
+            ..turnings
+        };
+        let alt = Nutation::new(other, &turnings, initial, udot0).ok()?;
         Some((
             (alt.period - nutation.period).abs() / (k * nutation.period),
             (alt.advance - nutation.advance).abs() / k,
@@ -656,13 +746,8 @@ impl Phase {
 }
 
 impl Nutation {
-    fn new(
-        red: Reduction,
-        lower: Turning,
-        upper: Turning,
-        initial: &State,
-        udot0: f64,
-    ) -> Result<Self> {
+    fn new(red: Reduction, turnings: &Turnings, initial: &State, udot0: f64) -> Result<Self> {
+        let (lower, upper) = (turnings.lower, turnings.upper);
         let (u1, u2) = (lower.u, upper.u);
         let mut nut = Nutation {
             reduction: red,
@@ -670,6 +755,7 @@ impl Nutation {
             u2,
             gap_bottom: lower.gap,
             gap_top: upper.gap,
+            width: turnings.width,
             through_top: upper.gap == 0.0,
             through_bottom: lower.gap == 0.0,
             period: 0.0,
@@ -706,7 +792,7 @@ impl Nutation {
                 nut.poles.push((pole, strength));
             }
         }
-        let half = 0.5 * (u2 - u1);
+        let half = 0.5 * turnings.width;
         let built = Piecewise::build(SAMPLE_BUDGET, |sigma, rho| nut.sample(sigma, rho))?;
         let series = match built {
             Ok(series) => series,
@@ -744,19 +830,21 @@ impl Nutation {
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
         // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
         // only to the square root of its error, the rate du/dt fixes it well.
-        // The distances of u0 from the turning points, from those of u0 from the poles
-        // (taken from the horizontal part of gamma near a pole) and the gaps.
-        let g = initial.gamma;
-        let horizontal = g[0] * g[0] + g[1] * g[1];
-        let from_pole = |pole: f64| {
-            if pole * g[2] > 0.0 {
-                horizontal / (1.0 + pole * g[2])
-            } else {
-                1.0 - pole * g[2]
-            }
+        // The distances of u0 from the turning points, from that of u0 from the pole of its
+        // hemisphere (taken from the horizontal part of gamma) less the gap of the turning
+        // point on that side, and the width.
+        let pole = pole_of_hemisphere(&initial.gamma);
+        let gap = if pole > 0.0 {
+            nut.gap_top
+        } else {
+            nut.gap_bottom
         };
-        let below = (from_pole(-1.0) - nut.gap_bottom).max(0.0);
-        let above = (from_pole(1.0) - nut.gap_top).max(0.0);
+        let near = (distance_from_pole(&initial.gamma, pole) - gap).clamp(0.0, nut.width);
+        let (above, below) = if pole > 0.0 {
+            (near, nut.width - near)
+        } else {
+            (nut.width - near, near)
+        };
         let cos0 = (above - below) / (2.0 * half);
         let sigma0 = 2.0 * below.sqrt().atan2(above.sqrt());
         let mut sigma0 = if udot0 < 0.0 { TAU - sigma0 } else { sigma0 };
@@ -815,7 +903,7 @@ impl Nutation {
     fn cofactor_with_noise(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
         let (u1, u2) = (self.u1, self.u2);
-        let width = u2 - u1;
+        let width = self.width;
         if width > WIDE_NUTATION {
             // x: the distance of u from the pole on the phase's side; x_end that of the
             // turning point there; far: the distance of u from the other turning point.
@@ -921,14 +1009,17 @@ impl Nutation {
     }
 
     /// Jellett's quotient `N(u) / (1 - u^2)` and the sum of the magnitudes of its terms (its
-    /// round-off scale), with `N = n_p + C K x J(x)` in the frame of the pole on the phase's
-    /// side ([`Reduction::jellett_remainder_in_frame`]) and `1 - u^2` from the phase's
+    /// round-off scale), with `N = n_p + C K x J(x)` in the frame of the pole of u's
+    /// hemisphere ([`Reduction::jellett_remainder_in_frame`]; not that of the phase's half of
+    /// the nutation: on the far half of a nutation near the top pole the bottom frame made N,
+    /// 1e-13 there, a difference of O(1) numbers, and the advance carried an error of
+    /// `eps / gap`, 1e-3 rad at a gap of 1e-13) and `1 - u^2` from the phase's
     /// accurate `1 - u` and `1 + u` (near a pole, u itself rounds 1 - u to a relative error of
     /// `eps / (1 - u)`, which the pole amplifies). Through a pole `p`, where `N(p) = 0`, the
     /// factor x is divided out exactly: `N / (1 - u^2) = C K J(x) / (1 + p u)`.
     fn jellett_quotient(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
-        let (pole, x, other, through) = if phase.upper {
+        let (pole, x, other, through) = if phase.one_minus <= phase.one_plus {
             (1.0, phase.one_minus, phase.one_plus, self.through_top)
         } else {
             (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
@@ -956,9 +1047,9 @@ impl Nutation {
             .iter()
             .map(|&(pole, c)| {
                 let (minus, plus) = if pole > 0.0 {
-                    (self.gap_top, 2.0 - self.gap_bottom)
+                    (self.gap_top, self.gap_top + self.width)
                 } else {
-                    (2.0 - self.gap_top, self.gap_bottom)
+                    (self.gap_bottom + self.width, self.gap_bottom)
                 };
                 let root = (minus * plus).sqrt();
                 let turns = (sigma / TAU).floor();
@@ -982,7 +1073,7 @@ impl Nutation {
 
     /// The tilt at the phase whose half angle has sine `hs` and cosine `hc`.
     fn phase_of_half_angle(&self, hs: f64, hc: f64) -> Phase {
-        let half = 0.5 * (self.u2 - self.u1);
+        let half = 0.5 * self.width;
         let d1 = 2.0 * half * hs * hs;
         let d2 = 2.0 * half * hc * hc;
         let u = if d1 <= d2 { self.u1 + d1 } else { self.u2 - d2 };

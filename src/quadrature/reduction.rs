@@ -344,6 +344,16 @@ impl Reduction {
         sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
     }
 
+    /// `Q` at `x = 1 - p u` anywhere in `[0, 2]`: in the frame of the pole `p` on its
+    /// hemisphere (`x <= 1`), in that of the other pole at `2 - x` (exact) beyond.
+    pub fn q_from_pole(&self, pole: f64, x: f64) -> f64 {
+        if x <= 1.0 {
+            self.q_in_frame(pole, x)
+        } else {
+            self.q_in_frame(-pole, 2.0 - x)
+        }
+    }
+
     /// The terms whose sum is `Q(u)`; their magnitudes set the round-off scale of `Q`.
     pub fn q_terms<D: Real>(&self, u: D) -> [D; 5] {
         self.q_terms_at(u, self.parameters().map(lift))
