@@ -787,7 +787,7 @@ impl Nutation {
             let (p, _) = nut.cofactor_with_noise(&Phase::at_pole(pole));
             if !through && p > 0.0 && p.is_finite() {
                 let strength = pole * red.frame(pole).remainder
-                    / (2.0 * red.body.i1 * red.body.radius)
+                    / (2.0 * red.body().i1 * red.body().radius)
                     / p.sqrt();
                 nut.poles.push((pole, strength));
             }
@@ -857,7 +857,7 @@ impl Nutation {
         // the initial state, fitted on the horizontal parts of gamma and omega (so it is
         // defined on the axis too, where gamma has no horizontal part).
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
-        let omega = initial.omega(&red.body);
+        let omega = initial.omega(red.body());
         let w2 = omega
             .iter()
             .map(|w| w * w)
@@ -985,7 +985,7 @@ impl Nutation {
         let (quotient, quotient_scale) = self.jellett_quotient(&phase);
         let rate = red.precession_from_quotient(phase.u, quotient);
         // Round-off of the rate: its two terms, and the terms of Jellett's quotient.
-        let b = &red.body;
+        let b = red.body();
         let spin = red.spin(phase.u);
         let rate_noise = f64::EPSILON
             * ((phase.u * quotient).abs() / (b.i1 * b.radius)
@@ -1024,7 +1024,7 @@ impl Nutation {
         } else {
             (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
         };
-        let divided = red.jellett_divided(pole, x) * (red.body.i3 * red.k);
+        let divided = red.jellett_divided(pole, x) * (red.body().i3 * red.k());
         if through {
             (divided / other, (divided / other).abs())
         } else {

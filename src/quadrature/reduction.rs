@@ -68,14 +68,15 @@ fn sum<D: Scalar>(terms: [D; 5]) -> D {
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reduction {
-    /// The body (I1 = I2 checked).
-    pub body: Body,
+    /// The body (I1 = I2 checked). The fields are private: the frames of the poles are
+    /// derived from the others, and changing one alone would leave them stale.
+    body: Body,
     /// Energy H1 = (M, omega) + 2U.
-    pub h1: f64,
+    h1: f64,
     /// Jellett's integral H3 = (M, r).
-    pub h3: f64,
+    h3: f64,
     /// Routh's integral K = g omega3.
-    pub k: f64,
+    k: f64,
     /// The level set relative to the top (`gamma3 = 1`) and bottom (`gamma3 = -1`) poles: Q
     /// at `u >= 0` is written with the first, at `u < 0` with the second.
     frames: [PoleFrame; 2],
@@ -162,6 +163,26 @@ impl Reduction {
         let (frames, _) = red.frames_of_state(state);
         red.frames = frames;
         Ok(red)
+    }
+
+    /// The body.
+    pub fn body(&self) -> &Body {
+        &self.body
+    }
+
+    /// The energy H1 = (M, omega) + 2U (int-g).
+    pub fn h1(&self) -> f64 {
+        self.h1
+    }
+
+    /// Jellett's integral H3 = (M, r) (int).
+    pub fn h3(&self) -> f64 {
+        self.h3
+    }
+
+    /// Routh's integral K = g omega3 (raus-int).
+    pub fn k(&self) -> f64 {
+        self.k
     }
 
     /// The parameters of the level set relative to the pole `pole`.
