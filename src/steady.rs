@@ -292,6 +292,90 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
     })
 }
 
+/// The relative round-off, in machine epsilons of the largest sample, below which the
+/// coefficient of `x^2` of a sampled quadratic counts as zero (its samples are computed with a
+/// round-off of a few epsilons of their terms).
+const QUADRATIC_NOISE_EPSILONS: f64 = 64.0;
+
+/// The relative precision of the coefficient of `x^2` of a widened fit from which it fixes
+/// the far root well enough for Newton's steps.
+const RESOLVED_PRECISION: f64 = 1e-3;
+/// Newton steps on the function itself after the fit (each doubles the correct digits).
+const NEWTON_STEPS: usize = 3;
+
+/// The real roots of a function known to be a quadratic polynomial (the condition of steady
+/// precession: `Q'(cos theta)` in omega_t here, Routh's K in the diagram's Wronskian).
+#[derive(Debug, Clone, PartialEq)]
+pub struct QuadraticRoots {
+    /// The roots, ascending (none, one or two).
+    pub roots: Vec<f64>,
+    /// `Some(leading coefficient)` when the coefficient of `x^2` is not resolved by the
+    /// samples (to `RESOLVED_PRECISION`): a far root, if any, is not in `roots`.
+    pub unresolved: Option<f64>,
+}
+
+/// The roots of the quadratic `f` from its samples at `-w`, `0`, `w` (`f` returns each value
+/// with its round-off; coefficients scaled to at most 1, so that the discriminant cannot
+/// overflow; roots without cancellation, the larger from `-(a1 + sign(a1) sqrt(disc)) / 2`, the
+/// other from the product), each refined by Newton steps on `f` itself, which remove the
+/// round-off of the fitted coefficients. A far root that the samples fix to worse than
+/// `RESOLVED_PRECISION` (the coefficient of `x^2` within the round-off: the steady precession
+/// at theta = pi/2 needs omega_t ~ 13 / m, and for m = 1e-30 the fit printed 8.1e31 for
+/// 1.3e31, for m = 1e-300 2.7e31 for 1.3e301) is not listed (`unresolved`). The one solver of
+/// the steady-precession quadratic, for [`steady_precessions`] and the energy-momentum
+/// diagram (`diagram::precession_spins`).
+pub fn sampled_quadratic_roots(
+    f: impl Fn(f64) -> Result<(f64, f64)>,
+    w: f64,
+) -> Result<QuadraticRoots> {
+    let (f0, n0) = f(0.0)?;
+    // The coefficients of the quadratic in `x / scale`, relative to its largest sample, and
+    // the round-off of the coefficient of `x^2` (from that of the samples) in the same units.
+    let fit = |scale: f64| -> Result<([f64; 3], f64, f64)> {
+        let ((fm, nm), (fp, np)) = (f(-scale)?, f(scale)?);
+        let size = fm.abs().max(f0.abs()).max(fp.abs());
+        let size = if size > 0.0 { size } else { 1.0 };
+        let (fm, c0, fp) = (fm / size, f0 / size, fp / size);
+        let noise = QUADRATIC_NOISE_EPSILONS * f64::EPSILON + 2.0 * nm.max(np).max(n0) / size;
+        Ok(([0.5 * (fp + fm) - c0, 0.5 * (fp - fm), c0], size, noise))
+    };
+    // Newton's method on f from `x`, with the slope of the fit at `scale`.
+    let refine = |x: f64, [a2, a1, _]: [f64; 3], size: f64, scale: f64| -> Result<f64> {
+        let mut root = scale * x;
+        for _ in 0..NEWTON_STEPS {
+            let slope = (2.0 * a2 * root / scale + a1) * size / scale;
+            let step = f(root)?.0 / slope;
+            if slope != 0.0 && step.is_finite() {
+                root -= step;
+            }
+        }
+        Ok(root)
+    };
+    let (coefficients, size, noise) = fit(w)?;
+    let [a2, a1, a0] = coefficients;
+    let mut roots = vec![];
+    let mut unresolved = None;
+    if a2.abs() * RESOLVED_PRECISION < noise {
+        // The far root lies beyond |x| ~ |a1| / |a2|, fixed by the samples to worse than
+        // `RESOLVED_PRECISION`: not listed; the near one is that of the linear part.
+        unresolved = Some(a2 * size);
+        if a1.abs() > noise {
+            roots.push(refine(-a0 / a1, coefficients, size, w)?);
+        }
+    } else {
+        let disc = a1 * a1 - 4.0 * a2 * a0;
+        if disc >= 0.0 {
+            let big = -0.5 * (a1 + a1.signum() * disc.sqrt());
+            roots.push(refine(big / a2, coefficients, size, w)?);
+            if big != 0.0 {
+                roots.push(refine(a0 / big, coefficients, size, w)?);
+            }
+        }
+    }
+    roots.sort_by(f64::total_cmp);
+    Ok(QuadraticRoots { roots, unresolved })
+}
+
 /// The state at tilt theta (psi = 0) with `omega = (omega_t, 0, spin)`.
 fn tilted_state(body: &Body, theta: f64, omega_t: f64, spin: f64) -> Result<State> {
     let (s, u) = theta.sin_cos();
@@ -311,43 +395,32 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
         });
     }
     let u = theta.cos();
-    let slope = |omega_t: f64| -> Result<f64> {
+    let slope = |omega_t: f64| -> Result<(f64, f64)> {
         let state = tilted_state(body, theta, omega_t, spin)?;
-        Ok(Reduction::of_state(body, &state)?.q_derivatives(u).1)
-    };
-    let w = spin.abs().max((body.gravity / body.radius).sqrt()).max(1.0);
-    let (fm, f0, fp) = (slope(-w)?, slope(0.0)?, slope(w)?);
-    for f in [fm, f0, fp] {
-        if !f.is_finite() {
+        let red = Reduction::of_state(body, &state)?;
+        let value = red.q_derivatives(u).1;
+        if value.is_finite() {
+            Ok((value, f64::EPSILON * red.q_slope_scale(u)))
+        } else {
             representable(
                 body,
                 spin,
-                &tilted_state(body, theta, w, spin)?.to_array(),
+                &state.to_array(),
                 "the slope Q'(cos theta) of the condition of steady precession",
-                f,
-            )?;
+                value,
+            )
+            .map(|v| (v, 0.0))
         }
-    }
-    // The coefficients of the quadratic in omega_t / w, scaled to at most 1 so that the
-    // discriminant cannot overflow (they are of the size of w^2 (m R^2)^2 ...).
-    let scale = fm.abs().max(f0.abs()).max(fp.abs());
-    let scale = if scale > 0.0 { scale } else { 1.0 };
-    let (fm, f0, fp) = (fm / scale, f0 / scale, fp / scale);
-    let (a2, a1, a0) = (0.5 * (fp + fm) - f0, 0.5 * (fp - fm), f0);
-    let disc = a1 * a1 - 4.0 * a2 * a0;
-    if disc < 0.0 || a2 == 0.0 {
-        return Ok(vec![]);
-    }
-    let big = -0.5 * (a1 + a1.signum() * disc.sqrt());
-    let mut roots = vec![big / a2];
-    if big != 0.0 {
-        roots.push(a0 / big);
-    }
-    roots.sort_by(f64::total_cmp);
+    };
+    let w = spin.abs().max((body.gravity / body.radius).sqrt()).max(1.0);
+    // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 w
+    // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
+    // at theta = pi/2) there is none.
+    let roots = sampled_quadratic_roots(slope, w)?;
     roots
+        .roots
         .into_iter()
-        .map(|x| {
-            let omega_t = w * x;
+        .map(|omega_t| {
             let state = tilted_state(body, theta, omega_t, spin)?;
             let precession = u * omega_t / theta.sin() - spin;
             Ok(SteadyPrecession {

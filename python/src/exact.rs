@@ -152,9 +152,9 @@ impl PyExact {
     fn integrals<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let red = &self.inner.reduction;
         let dict = PyDict::new(py);
-        dict.set_item("H1", red.h1)?;
-        dict.set_item("H3", red.h3)?;
-        dict.set_item("K", red.k)?;
+        dict.set_item("H1", red.h1())?;
+        dict.set_item("H3", red.h3())?;
+        dict.set_item("K", red.k())?;
         Ok(dict)
     }
 

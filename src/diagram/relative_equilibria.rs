@@ -25,7 +25,7 @@ use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
-use crate::steady::vertical_spin_state;
+use crate::steady::{sampled_quadratic_roots, vertical_spin_state};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -155,33 +155,12 @@ fn discriminant(body: &Body, h3: f64, u: f64) -> Result<f64> {
 /// The values K of Routh's integral of the steady precessions at tilt `u` = cos theta in
 /// (-1, 1) with Jellett's `h3`: the real roots of `D(K)`, ascending (none, one or two).
 pub fn precession_spins(body: &Body, h3: f64, u: f64) -> Result<Vec<f64>> {
-    let ([c2, c1, c0], w) = wronskian_quadratic(body, h3, u)?;
-    let disc = c1 * c1 - 4.0 * c2 * c0;
-    if disc < 0.0 || c2 == 0.0 {
-        return Ok(vec![]);
-    }
-    let big = -0.5 * (c1 + c1.signum() * disc.sqrt());
-    let mut roots = vec![big / c2];
-    if big != 0.0 {
-        roots.push(c0 / big);
-    }
-    let mut spins = roots
-        .into_iter()
-        .map(|x| {
-            // Newton's method on D itself removes the round-off of the fitted coefficients.
-            let mut k = w * x;
-            for _ in 0..2 {
-                let slope = (2.0 * c2 * k / w + c1) / w;
-                let d = wronskian(body, h3, k, u)?;
-                if slope != 0.0 && (d / slope).is_finite() {
-                    k -= d / slope;
-                }
-            }
-            Ok(k)
-        })
-        .collect::<Result<Vec<f64>>>()?;
-    spins.sort_by(f64::total_cmp);
-    Ok(spins)
+    let g = Reduction::new(body, 0.0, h3, 0.0)?.routh_g(u);
+    // A root beyond the resolution of D's samples (`unresolved`) lies outside any window of
+    // the diagram: it is left out.
+    // The round-off of D: a few epsilons of its value (`sampled_quadratic_roots` adds them).
+    let d = |k: f64| wronskian(body, h3, k, u).map(|d| (d, 0.0));
+    Ok(sampled_quadratic_roots(d, g * spin_scale(body, h3))?.roots)
 }
 
 /// The steady precession at tilt `theta` in (0, pi) with integrals `h3` and `k` (a root of

@@ -23,7 +23,6 @@ use crate::quadrature::reduction::Reduction;
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
-use num_dual::first_derivative;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -32,8 +31,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// Bisection toward a near-singularity at distance epsilon costs about
 /// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
 const SAMPLE_BUDGET: usize = 6400;
-/// Turning points closer than this to a pole are snapped to it (a motion through the axis).
-const POLE_SNAP: f64 = 1e-12;
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation, about
@@ -62,11 +59,6 @@ const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
 /// of Q: the round-off is an estimate of its typical size, not a bound, and a double root
 /// within a few such sizes cannot be told from a separatrix.
 const SEPARATRIX_MARGIN: f64 = 16.0;
-/// Absolute round-off of the integrals H1, H3, K computed from a state, in machine epsilons of
-/// the sum of the magnitudes of their terms. Here and below the round-off is estimated, not
-/// bounded: a few epsilons per sum of terms, errors of independent samples adding in
-/// quadrature (docs/quadrature.md, section 5).
-const INTEGRAL_EPSILONS: f64 = 2.0;
 
 /// A count of Gauss-Legendre pieces that methods taking `&self` increase: atomic, so that a
 /// [`Nutation`] stays `Sync` (shared between threads, as Python's `ExactSolution` is).
@@ -111,6 +103,9 @@ pub struct Nutation {
     /// `1 - u2` and `1 + u1`, accurate near the poles (see `Turning`).
     gap_top: f64,
     gap_bottom: f64,
+    /// `u2 - u1`, to the relative round-off of the turning points' distances from the pole
+    /// (see `Turnings`).
+    width: f64,
     /// Nutation period T.
     pub period: f64,
     /// Advance of the precession angle psi per period.
@@ -127,8 +122,10 @@ pub struct Nutation {
     rule: GaussLegendre,
     /// The rule of the double integral of a narrow nutation's cofactor.
     narrow_rule: GaussLegendre,
-    /// Where Q is not analytic ([`Reduction::singularities`]).
+    /// Where Q is not analytic ([`Reduction::singularities`]), in u.
     singularities: Vec<(f64, f64)>,
+    /// The same in the distance `x = 1 - p u` from the top and the bottom pole.
+    frame_singularities: [Vec<(f64, f64)>; 2],
     /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
     work: Work,
     /// Phase sigma of the initial state.
@@ -276,48 +273,105 @@ struct Turning {
     gap: f64,
 }
 
+/// The two turning points of a nutation and its width `u2 - u1`, all found in the distance
+/// `x = 1 - p u` from the pole p of the initial state's hemisphere ([`turning_points`]), so
+/// that the width of a nutation near that pole carries the relative round-off of x, not the
+/// absolute rounding `eps` of u (1e-4 relative for a nutation of width 1e-12 at the pole).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Turnings {
+    lower: Turning,
+    upper: Turning,
+    width: f64,
+    /// The first step of the search: a nutation through a turning point at `x0` whose other
+    /// turning point lies closer than this is not separated from it (see
+    /// `ExactSolution::unresolved_nutation`).
+    first_step: f64,
+}
+
 /// Below this distance from a pole a turning point is refined in the distance itself.
 const NEAR_POLE: f64 = 1.0 / 8.0;
 
-/// The turning point of Q met by going from `u0` in direction `dir` (+1 or -1): a geometric
-/// search for the first sign change, refined by Brent's method (near the pole `dir`, in the
-/// distance from it, [`Reduction::q_near_pole`]).
-fn turning_point(red: &Reduction, u0: f64, dir: f64) -> Result<Turning> {
-    let u = turning_point_u(red, u0, dir)?;
-    let gap = 1.0 - dir * u;
-    if !(gap < NEAR_POLE) || gap == 0.0 {
-        return Ok(Turning { u, gap });
-    }
-    // Q > 0 toward u0 (larger gap), Q < 0 toward the pole.
-    let q = |v: f64| red.q_near_pole(dir, v);
-    let (inner, outer) = (gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON, gap * (1.0 - 1e-6));
-    let gap = if q(inner) > 0.0 && q(outer) < 0.0 {
-        brent(q, outer, inner, 0.0, 200).unwrap_or(gap)
+/// The distance `x0 = 1 - p gamma3` of gamma from the pole p, from the horizontal part of
+/// gamma in p's own hemisphere (where `1 - p gamma3` would round x0 to `eps` absolute).
+fn distance_from_pole(gamma: &[f64; 3], pole: f64) -> f64 {
+    if pole * gamma[2] > 0.0 {
+        (gamma[0] * gamma[0] + gamma[1] * gamma[1]) / (1.0 + pole * gamma[2])
     } else {
-        gap
-    };
-    Ok(Turning { u, gap })
+        1.0 - pole * gamma[2]
+    }
 }
 
-/// The turning point as u (see [`turning_point`]).
-fn turning_point_u(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
-    let q = |u: f64| red.q(u);
-    let end = dir;
-    let (mut prev, mut step) = (u0, FIRST_SEARCH_STEP);
+/// The pole of the hemisphere of gamma (the top one at the equator).
+fn pole_of_hemisphere(gamma: &[f64; 3]) -> f64 {
+    if gamma[2] >= 0.0 {
+        1.0
+    } else {
+        -1.0
+    }
+}
+
+/// The turning points of Q met by going from `x0 = 1 - p u0` toward the pole p and away
+/// from it, in x ([`Reduction::q_from_pole`]): a geometric search for the first sign change
+/// from a first step `FIRST_SEARCH_STEP min(x0, 1)` (relative to x0, which carries a relative
+/// round-off: a nutation 1e-13 from the pole spans 1e-12 in x, 8,000 roundings of u, and a
+/// first step of 1e-8 in u, as before, stepped over it and took it for steady), refined by
+/// Brent's method; a far turning point within `NEAR_POLE` of the other pole is refined again
+/// in the distance from that pole.
+fn turning_points(red: &Reduction, pole: f64, x0: f64) -> Result<Turnings> {
+    let q = |x: f64| red.q_from_pole(pole, x);
+    let first_step = if x0 > 0.0 {
+        FIRST_SEARCH_STEP * x0.min(1.0)
+    } else {
+        FIRST_SEARCH_STEP * FIRST_SEARCH_STEP
+    };
+    let near = frame_root(&q, x0, -1.0, first_step)?;
+    let far = frame_root(&q, x0, 1.0, first_step)?;
+    let near_turning = Turning {
+        u: pole * (1.0 - near),
+        gap: near,
+    };
+    let far_gap = refine_gap(red, -pole, 2.0 - far);
+    let far_turning = Turning {
+        u: -pole * (1.0 - far_gap),
+        gap: far_gap,
+    };
+    let width = if far_gap < NEAR_POLE {
+        2.0 - near - far_gap
+    } else {
+        far - near
+    };
+    let (lower, upper) = if pole > 0.0 {
+        (far_turning, near_turning)
+    } else {
+        (near_turning, far_turning)
+    };
+    Ok(Turnings {
+        lower,
+        upper,
+        width,
+        first_step,
+    })
+}
+
+/// The root of `q` (Q in x) met by going from x0 in direction `dir` (-1 toward the pole,
+/// where x ends at 0; +1 away from it, to x = 2); x0 itself when Q is not positive there
+/// and at the first step.
+fn frame_root(q: &impl Fn(f64) -> f64, x0: f64, dir: f64, first_step: f64) -> Result<f64> {
+    let end = 1.0 + dir;
+    let (mut prev, mut step) = (x0, first_step);
     loop {
         let cur = if (end - prev).abs() <= step {
             end
         } else {
             prev + dir * step
         };
-        let qc = q(cur);
-        if qc < 0.0 {
-            if prev == u0 && q(u0) <= 0.0 {
-                return Ok(u0);
+        if q(cur) < 0.0 {
+            if prev == x0 && q(x0) <= 0.0 {
+                return Ok(x0);
             }
             return brent(q, prev, cur, 0.0, 200).ok_or_else(|| RouthError::Singular {
                 formula: "the reduced equation (du/dt)^2 = Q(u)",
-                reason: format!("no turning point refined in [{prev}, {cur}]"),
+                reason: format!("no turning point refined in x = 1 - p u in [{prev}, {cur}]"),
             });
         }
         if cur == end {
@@ -325,6 +379,28 @@ fn turning_point_u(red: &Reduction, u0: f64, dir: f64) -> Result<f64> {
         }
         prev = cur;
         step = (2.0 * step).min(MAX_SEARCH_STEP);
+    }
+}
+
+/// The distance `gap` of a turning point from the pole `pole`, refined in the frame of that
+/// pole when it is below `NEAR_POLE` ([`Reduction::q_in_frame`]): Q > 0 toward the nutation
+/// (larger gap), Q < 0 toward the pole (at the pole `Q = -c N(p)^2 < 0` unless the motion
+/// passes through the axis, `N(p) = 0`, and the pole is the turning point).
+fn refine_gap(red: &Reduction, pole: f64, gap: f64) -> f64 {
+    if !(gap < NEAR_POLE) {
+        return gap;
+    }
+    let q = |v: f64| red.q_in_frame(pole, v);
+    let mut inner = gap * (1.0 + 1e-6) + 4.0 * f64::EPSILON;
+    while !(q(inner) > 0.0) && inner < NEAR_POLE {
+        inner *= 2.0;
+    }
+    let outer = [gap * (1.0 - 1e-6), 0.0]
+        .into_iter()
+        .find(|&v| v < inner && q(v) < 0.0);
+    match outer {
+        Some(outer) if q(inner) > 0.0 => brent(q, outer, inner, 0.0, 200).unwrap_or(gap),
+        _ => gap,
     }
 }
 
@@ -352,22 +428,6 @@ fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64, SMatr
     )
 }
 
-/// The absolute round-off of H1, H3, K computed from `state` (`INTEGRAL_EPSILONS` machine
-/// epsilons of the sum of the magnitudes of the terms of each).
-fn integral_errors(body: &Body, state: &State, red: &Reduction) -> [f64; 3] {
-    let norm = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
-    let omega = state.omega(body);
-    let r = body.contact_vector(&state.gamma);
-    let (mm, w) = (norm(state.m), norm(omega));
-    let potential = body.m * body.gravity * (body.radius + body.a.abs());
-    let e = INTEGRAL_EPSILONS * f64::EPSILON;
-    [
-        e * (mm * w + 2.0 * potential),
-        e * mm * norm(r),
-        e * (red.k.abs() + red.routh_g(state.gamma[2]) * omega[2].abs()),
-    ]
-}
-
 impl ExactSolution {
     /// Solve the motion through `initial` by quadrature (body with I1 = I2).
     ///
@@ -384,7 +444,7 @@ impl ExactSolution {
     pub fn new(body: &Body, initial: &State) -> Result<Self> {
         require_finite_inertia(body)?;
         let red = Reduction::of_state(body, initial)?;
-        let errors = integral_errors(body, initial, &red);
+        let (_, errors) = red.frames_of_state(initial);
         let u0 = initial.gamma[2];
         let steady = |u: f64, precession: f64, accuracy: Accuracy| ExactSolution {
             body: *body,
@@ -415,17 +475,29 @@ impl ExactSolution {
             };
             return Ok(steady(u0, omega_fit, accuracy));
         }
-        let lower = turning_point(&red, u0, -1.0)?;
-        let upper = turning_point(&red, u0, 1.0)?;
-        let (u1, u2) = (lower.u, upper.u);
+        let pole = pole_of_hemisphere(&initial.gamma);
+        let x0 = distance_from_pole(&initial.gamma, pole);
+        let turnings = turning_points(&red, pole, x0)?;
+        let (u1, u2, width) = (turnings.lower.u, turnings.upper.u, turnings.width);
         let mid = 0.5 * (u1 + u2);
+        // The middle in x: `x = 1 - p u` of the turning point on the pole's side plus half
+        // the width (u itself rounds it to eps).
+        let x_mid = if pole > 0.0 {
+            turnings.upper.gap
+        } else {
+            turnings.lower.gap
+        } + 0.5 * width;
         let noise_mid = red.q_noise(mid, errors).max(red.q_noise(u0, errors));
-        if red.q(mid).max(red.q(u0)) <= 4.0 * noise_mid {
-            return Self::unresolved_nutation(&red, u0, u2 - u1, noise_mid)
+        if red.q_from_pole(pole, x_mid).max(red.q_from_pole(pole, x0)) <= 4.0 * noise_mid {
+            // The search separates turning points only beyond its first step.
+            return Self::unresolved_nutation(&red, u0, width + turnings.first_step, noise_mid)
                 .map(|(rate, accuracy)| steady(u0, rate, accuracy));
         }
-        let (lower, upper) = (lower.snapped(-1.0), upper.snapped(1.0));
-        let (u1, u2) = (lower.u, upper.u);
+        let turnings = Turnings {
+            lower: turnings.lower.snapped(-1.0),
+            upper: turnings.upper.snapped(1.0),
+            ..turnings
+        };
         let mut root_error = 0.0;
         for u in [u1, u2] {
             let (_, dq, q2) = red.q_derivatives(u);
@@ -447,12 +519,12 @@ impl ExactSolution {
                     ),
                 });
             }
-            root_error += shift / (u2 - u1);
+            root_error += shift / width;
         }
         let omega = initial.omega(body);
         let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
-        let mut nutation = Nutation::new(red, lower, upper, initial, udot0)?;
-        match Self::sensitivity(&nutation, mid, errors, initial, udot0) {
+        let mut nutation = Nutation::new(red, &turnings, initial, udot0)?;
+        match Self::sensitivity(&nutation, (pole, x_mid), mid, errors, initial, udot0) {
             Some((period, advance)) => {
                 nutation.period_error += period;
                 nutation.advance_error += advance;
@@ -474,9 +546,7 @@ impl ExactSolution {
             .sqrt()
             .max(f64::MIN_POSITIVE);
         let size = |v: &[f64], scale: f64| v.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
-        let widest = (0.5 * (u1 + u2) / (0.5 * (u2 - u1)))
-            .clamp(-1.0, 1.0)
-            .acos();
+        let widest = (0.5 * (u1 + u2) / (0.5 * width)).clamp(-1.0, 1.0).acos();
         let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
         for sigma in [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0] {
             let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
@@ -505,36 +575,44 @@ impl ExactSolution {
     }
 
     /// How much the round-off of the integrals changes the period and the advance: the
-    /// nutation is solved again with H1, H3, K moved by `k` times their round-off, each in the
-    /// direction that raises Q at the middle of the nutation, and the changes divided by `k`
+    /// nutation is solved again with its parameters (K and those of both poles,
+    /// [`Reduction::frames_of_state`]) moved by `k` times their round-off, each in the
+    /// direction that raises Q at the middle of the nutation (or, for the frame of the other
+    /// hemisphere, at the turning point in it), and the changes divided by `k`
     /// (`k` up to 1e4, so that they stand above the round-off of the quadrature, and small
     /// enough that the move stays below a tenth of Q there). The relative change of T and the
     /// absolute change of the advance, or `None` if the moved level set cannot be solved.
     fn sensitivity(
         nutation: &Nutation,
+        (pole, x_mid): (f64, f64),
         mid: f64,
-        errors: [f64; 3],
+        errors: [f64; 5],
         initial: &State,
         udot0: f64,
     ) -> Option<(f64, f64)> {
         let red = &nutation.reduction;
         let grad = red.q_integral_gradient(mid);
         let shift: f64 = grad.iter().zip(errors).map(|(g, e)| g.abs() * e).sum();
-        let k = (0.1 * red.q(mid) / shift).min(1e4);
+        let k = (0.1 * red.q_from_pole(pole, x_mid) / shift).min(1e4);
         if !(k > 0.0) {
             return None;
         }
-        let moved = |i: usize, v: f64| v + k * errors[i] * grad[i].signum();
-        let other = Reduction::new(
-            &red.body,
-            moved(0, red.h1),
-            moved(1, red.h3),
-            moved(2, red.k),
-        )
-        .ok()?;
-        let lo = turning_point(&other, mid, -1.0).ok()?.snapped(-1.0);
-        let hi = turning_point(&other, mid, 1.0).ok()?.snapped(1.0);
-        let alt = Nutation::new(other, lo, hi, initial, udot0).ok()?;
+        let ends = [nutation.u2, nutation.u1].map(|u| red.q_integral_gradient(u));
+        let parameters = red.parameters();
+        let other = red.with_parameters(std::array::from_fn(|i| {
+            let slope = std::iter::once(grad[i])
+                .chain(ends.iter().map(|g| g[i]))
+                .find(|g| *g != 0.0)
+                .unwrap_or(1.0);
+            parameters[i] + k * errors[i] * slope.signum()
+        }));
+        let turnings = turning_points(&other, pole, x_mid).ok()?;
+        let turnings = Turnings {
+            lower: turnings.lower.snapped(-1.0),
+            upper: turnings.upper.snapped(1.0),
+            ..turnings
+        };
+        let alt = Nutation::new(other, &turnings, initial, udot0).ok()?;
         Some((
             (alt.period - nutation.period).abs() / (k * nutation.period),
             (alt.advance - nutation.advance).abs() / k,
@@ -616,20 +694,26 @@ impl ExactSolution {
 }
 
 /// Where a phase sigma puts the tilt: u, `1 - u` and `1 + u` (from the distances to the
-/// turning points, without the rounding of u), the signed sin theta, and `(du/dt) / s * f`.
+/// turning points, without the rounding of u), the signed sin theta, `(du/dt) / s * f`, and
+/// whether u is on the half of the nutation next to the upper turning point.
 struct Phase {
     u: f64,
     one_minus: f64,
     one_plus: f64,
     s: f64,
     udot_over_s_times_f: f64,
+    upper: bool,
 }
 
 impl Turning {
-    /// The pole itself when the turning point is within `POLE_SNAP` of it (a motion through
-    /// the axis).
+    /// The pole itself when the turning point is the pole (a motion through the axis,
+    /// `N(p) = 0`). The gap of a turning point near the pole is found in the frame of the pole,
+    /// to its relative round-off however small: a motion that passes at 1e-6 rad from the axis
+    /// near the unstable vertical spin (a gap of 5e-13) is not one through the axis, and
+    /// taking it for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an
+    /// error that the instability amplifies to O(1) at t = 20.
     fn snapped(self, pole: f64) -> Self {
-        if self.gap <= POLE_SNAP {
+        if self.gap == 0.0 {
             Turning { u: pole, gap: 0.0 }
         } else {
             self
@@ -638,6 +722,19 @@ impl Turning {
 }
 
 impl Phase {
+    /// The pole `p = +-1` itself (outside the nutation, where P is continued to find the
+    /// strengths of the poles of the rate), on the side of its turning point.
+    fn at_pole(pole: f64) -> Self {
+        Phase {
+            u: pole,
+            one_minus: 1.0 - pole,
+            one_plus: 1.0 + pole,
+            s: 0.0,
+            udot_over_s_times_f: 0.0,
+            upper: pole > 0.0,
+        }
+    }
+
     /// `1 - p u` for a pole `p = +-1`.
     fn one_minus_pole(&self, pole: f64) -> f64 {
         if pole > 0.0 {
@@ -649,13 +746,8 @@ impl Phase {
 }
 
 impl Nutation {
-    fn new(
-        red: Reduction,
-        lower: Turning,
-        upper: Turning,
-        initial: &State,
-        udot0: f64,
-    ) -> Result<Self> {
+    fn new(red: Reduction, turnings: &Turnings, initial: &State, udot0: f64) -> Result<Self> {
+        let (lower, upper) = (turnings.lower, turnings.upper);
         let (u1, u2) = (lower.u, upper.u);
         let mut nut = Nutation {
             reduction: red,
@@ -663,6 +755,7 @@ impl Nutation {
             u2,
             gap_bottom: lower.gap,
             gap_top: upper.gap,
+            width: turnings.width,
             through_top: upper.gap == 0.0,
             through_bottom: lower.gap == 0.0,
             period: 0.0,
@@ -674,6 +767,12 @@ impl Nutation {
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             narrow_rule: GaussLegendre::new(NARROW_NODES),
             singularities: red.singularities(),
+            frame_singularities: [1.0, -1.0].map(|pole| {
+                red.singularities()
+                    .iter()
+                    .map(|&(re, im)| (1.0 - pole * re, im))
+                    .collect()
+            }),
             work: Work::default(),
             sigma0: 0.0,
             psi_ref: 0.0,
@@ -685,15 +784,15 @@ impl Nutation {
         // `c_p / (1 - p u)` with `c_p = p N(p) f(p) / (2 A R)` are subtracted from the samples
         // and integrated in closed form (`pole_angle`); the remainder is smooth.
         for (pole, through) in [(1.0, nut.through_top), (-1.0, nut.through_bottom)] {
-            let (p, _) = nut.cofactor_with_noise(pole);
+            let (p, _) = nut.cofactor_with_noise(&Phase::at_pole(pole));
             if !through && p > 0.0 && p.is_finite() {
-                let strength = pole * red.jellett_remainder(pole)
-                    / (2.0 * red.body.i1 * red.body.radius)
+                let strength = pole * red.frame(pole).remainder
+                    / (2.0 * red.body().i1 * red.body().radius)
                     / p.sqrt();
                 nut.poles.push((pole, strength));
             }
         }
-        let half = 0.5 * (u2 - u1);
+        let half = 0.5 * turnings.width;
         let built = Piecewise::build(SAMPLE_BUDGET, |sigma, rho| nut.sample(sigma, rho))?;
         let series = match built {
             Ok(series) => series,
@@ -731,12 +830,24 @@ impl Nutation {
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
         // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
         // only to the square root of its error, the rate du/dt fixes it well.
-        let cos0 = (0.5 * (u1 + u2) - initial.gamma[2]) / half;
-        let mut sigma0 = if udot0 < 0.0 {
-            TAU - cos0.clamp(-1.0, 1.0).acos()
+        // The distances of u0 from the turning points, from that of u0 from the pole of its
+        // hemisphere (taken from the horizontal part of gamma) less the gap of the turning
+        // point on that side, and the width.
+        let pole = pole_of_hemisphere(&initial.gamma);
+        let gap = if pole > 0.0 {
+            nut.gap_top
         } else {
-            cos0.clamp(-1.0, 1.0).acos()
+            nut.gap_bottom
         };
+        let near = (distance_from_pole(&initial.gamma, pole) - gap).clamp(0.0, nut.width);
+        let (above, below) = if pole > 0.0 {
+            (near, nut.width - near)
+        } else {
+            (nut.width - near, near)
+        };
+        let cos0 = (above - below) / (2.0 * half);
+        let sigma0 = 2.0 * below.sqrt().atan2(above.sqrt());
+        let mut sigma0 = if udot0 < 0.0 { TAU - sigma0 } else { sigma0 };
         for _ in 0..3 {
             let (f, _) = nut.series.value_and_integral(0, sigma0);
             sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
@@ -746,7 +857,7 @@ impl Nutation {
         // the initial state, fitted on the horizontal parts of gamma and omega (so it is
         // defined on the axis too, where gamma has no horizontal part).
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
-        let omega = initial.omega(&red.body);
+        let omega = initial.omega(red.body());
         let w2 = omega
             .iter()
             .map(|w| w * w)
@@ -769,33 +880,65 @@ impl Nutation {
     /// only to its round-off, and dividing Q by `(u - u1)(u2 - u)` (or Q' from the nearer
     /// turning point, as before) would make P jump by that round-off over `(u2 - u1)^2`
     /// between the two halves of the nutation, a jump no series resolves. Computed without
-    /// dividing Q itself:
+    /// dividing Q by a small distance:
     ///
-    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)` with
-    ///   `Q[a, b] = int_0^1 Q'(a + tau (b - a)) d tau`;
+    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
+    ///   the half of the nutation next to `u2` the near difference `Q[u, u2]` is the mean of
+    ///   `dQ/dx` between the turning point and u in the frame of the top pole
+    ///   (`x = 1 - u` from the phase, [`Reduction::q_in_frame`]), and the far one is
+    ///   `Q(u) / (u - u1)`, which takes `Q(u1) = 0`: u1 is a root of Q, and `u - u1` is at
+    ///   least half the width. Near the pole of a motion passing close to the axis P is small
+    ///   (1e-10: a root of Q lies just beyond the turning point), and the mean of Q' over the
+    ///   whole nutation, which was used for `Q[u1, u]`, left a round-off of `eps` times its
+    ///   O(1) values there. The half next to `u1` is the mirror image in the frame of the
+    ///   bottom pole. The two formulas differ by the round-off of Q at the turning points,
+    ///   and they meet at `sigma = pi/2`, the boundary between the two sides of the panels.
     /// * a narrow one: by Hermite-Genocchi, `Q[u1, u, u2] =
     ///   int_0^1 int_0^1 s Q''(u1 + s (u - u1) + s t (u2 - u)) dt ds`, whose round-off does
     ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`).
     ///
     /// Q' and Q'' by automatic differentiation, the integrals by Gauss-Legendre. Also returns
-    /// the relative round-off of P: `eps` times the magnitudes of the slopes (curvatures) of
-    /// the terms of Q, against P.
-    fn cofactor_with_noise(&self, u: f64) -> (f64, f64) {
+    /// the relative round-off of P: `eps` times the magnitudes of the terms of Q and of their
+    /// slopes (curvatures), against P.
+    fn cofactor_with_noise(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
         let (u1, u2) = (self.u1, self.u2);
-        let width = u2 - u1;
+        let width = self.width;
         if width > WIDE_NUTATION {
-            let difference = |a: f64, b: f64| {
-                let (mean, pieces) = self
-                    .rule
-                    .mean_avoiding(a, b, &self.singularities, &|v| red.q_derivatives(v).1);
-                self.work.add(pieces);
-                mean
+            // x: the distance of u from the pole on the phase's side; x_end that of the
+            // turning point there; far: the distance of u from the other turning point.
+            let (pole, x, x_end, far) = if phase.upper {
+                (
+                    1.0,
+                    phase.one_minus,
+                    self.gap_top,
+                    phase.one_plus - self.gap_bottom,
+                )
+            } else {
+                (
+                    -1.0,
+                    phase.one_plus,
+                    self.gap_bottom,
+                    phase.one_minus - self.gap_top,
+                )
             };
-            let p = (difference(u1, u) - difference(u, u2)) / width;
-            let scale = red.q_slope_scale(u1) + red.q_slope_scale(u) + red.q_slope_scale(u2);
-            (p, f64::EPSILON * scale / (width * p.abs()))
+            let (near, pieces) = self.rule.mean_avoiding(
+                x_end,
+                x,
+                &self.frame_singularities[usize::from(pole < 0.0)],
+                &|v| red.q_slope_in_frame(pole, v),
+            );
+            self.work.add(pieces);
+            let q = red.q_in_frame(pole, x);
+            let p = (q / far + near) / width;
+            let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
+            let (_, end_slope_scale) = red.q_scales_in_frame(pole, x_end);
+            (
+                p,
+                f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),
+            )
         } else {
+            let u = phase.u;
             let p = -self.narrow_rule.integrate(|s| {
                 s * self
                     .narrow_rule
@@ -827,7 +970,7 @@ impl Nutation {
             let (hc, hs) = (0.5 * rho).sin_cos();
             self.phase_of_half_angle(hs, hc)
         };
-        let (p, p_noise) = self.cofactor_with_noise(phase.u);
+        let (p, p_noise) = self.cofactor_with_noise(&phase);
         if p.is_nan() || p <= 0.0 {
             return Err(RouthError::Singular {
                 formula: "the reduced equation (du/dt)^2 = Q(u)",
@@ -839,17 +982,15 @@ impl Nutation {
             });
         }
         let f = p.sqrt().recip();
-        let quotient = self.jellett_quotient(&phase);
+        let (quotient, quotient_scale) = self.jellett_quotient(&phase);
         let rate = red.precession_from_quotient(phase.u, quotient);
-        // Round-off of the rate: its two terms, and Jellett's remainder N, a difference of H3
-        // and C h omega3, divided by 1 - u^2.
-        let b = &red.body;
+        // Round-off of the rate: its two terms, and the terms of Jellett's quotient.
+        let b = red.body();
         let spin = red.spin(phase.u);
-        let remainder_noise = red.h3.abs() + (b.i3 * (b.radius * phase.u + b.a) * spin).abs();
         let rate_noise = f64::EPSILON
             * ((phase.u * quotient).abs() / (b.i1 * b.radius)
                 + spin.abs()
-                + remainder_noise / (phase.one_minus * phase.one_plus * b.i1 * b.radius));
+                + quotient_scale / (b.i1 * b.radius));
         let f_noise = 0.5 * f * p_noise;
         let singular: f64 = self
             .poles
@@ -867,26 +1008,33 @@ impl Nutation {
         })
     }
 
-    /// Jellett's quotient `N(u) / (1 - u^2)`; near a pole `p` that the motion passes through,
-    /// where `N(p) = 0`, with the factor `u - p` divided out exactly as in `cofactor`:
-    /// `N(u) / (1 - u^2) = -int_0^1 N'(p + tau (u - p)) d tau / (u + p)`; elsewhere with
-    /// `1 - u^2` from the phase's accurate `1 - u` and `1 + u` (near a pole, u itself rounds
-    /// 1 - u to a relative error of `eps / (1 - u)`, which the pole amplifies).
-    fn jellett_quotient(&self, phase: &Phase) -> f64 {
+    /// Jellett's quotient `N(u) / (1 - u^2)` and the sum of the magnitudes of its terms (its
+    /// round-off scale), with `N = n_p + C K x J(x)` in the frame of the pole of u's
+    /// hemisphere ([`Reduction::jellett_remainder_in_frame`]; not that of the phase's half of
+    /// the nutation: on the far half of a nutation near the top pole the bottom frame made N,
+    /// 1e-13 there, a difference of O(1) numbers, and the advance carried an error of
+    /// `eps / gap`, 1e-3 rad at a gap of 1e-13) and `1 - u^2` from the phase's
+    /// accurate `1 - u` and `1 + u` (near a pole, u itself rounds 1 - u to a relative error of
+    /// `eps / (1 - u)`, which the pole amplifies). Through a pole `p`, where `N(p) = 0`, the
+    /// factor x is divided out exactly: `N / (1 - u^2) = C K J(x) / (1 + p u)`.
+    fn jellett_quotient(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
-        let u = phase.u;
-        let pole = if self.through_top && u > 0.0 {
-            1.0
-        } else if self.through_bottom && u < 0.0 {
-            -1.0
+        let (pole, x, other, through) = if phase.one_minus <= phase.one_plus {
+            (1.0, phase.one_minus, phase.one_plus, self.through_top)
         } else {
-            return red.jellett_remainder(u) / (phase.one_minus * phase.one_plus);
+            (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
         };
-        let (slope, pieces) = self.rule.mean_avoiding(pole, u, &self.singularities, &|v| {
-            first_derivative(|w| red.jellett_remainder(w), v).1
-        });
-        self.work.add(pieces);
-        -slope / (u + pole)
+        let divided = red.jellett_divided(pole, x) * (red.body().i3 * red.k());
+        if through {
+            (divided / other, (divided / other).abs())
+        } else {
+            let remainder = red.frame(pole).remainder;
+            let sine2 = x * other;
+            (
+                (divided * x + remainder) / sine2,
+                ((divided * x).abs() + remainder.abs()) / sine2,
+            )
+        }
     }
 
     /// The part of psi from the poles subtracted from the series: `sum_p c_p J_p(sigma)` with
@@ -899,9 +1047,9 @@ impl Nutation {
             .iter()
             .map(|&(pole, c)| {
                 let (minus, plus) = if pole > 0.0 {
-                    (self.gap_top, 2.0 - self.gap_bottom)
+                    (self.gap_top, self.gap_top + self.width)
                 } else {
-                    (2.0 - self.gap_top, self.gap_bottom)
+                    (self.gap_bottom + self.width, self.gap_bottom)
                 };
                 let root = (minus * plus).sqrt();
                 let turns = (sigma / TAU).floor();
@@ -925,7 +1073,7 @@ impl Nutation {
 
     /// The tilt at the phase whose half angle has sine `hs` and cosine `hc`.
     fn phase_of_half_angle(&self, hs: f64, hc: f64) -> Phase {
-        let half = 0.5 * (self.u2 - self.u1);
+        let half = 0.5 * self.width;
         let d1 = 2.0 * half * hs * hs;
         let d2 = 2.0 * half * hc * hc;
         let u = if d1 <= d2 { self.u1 + d1 } else { self.u2 - d2 };
@@ -951,6 +1099,7 @@ impl Nutation {
             one_plus: self.gap_bottom + d1,
             s: c_top * c_bot,
             udot_over_s_times_f: 2.0 * half * r_top * r_bot,
+            upper: d1 > d2,
         }
     }
 
@@ -969,7 +1118,7 @@ impl Nutation {
             phase.s,
             psi,
             phase.udot_over_s_times_f / f,
-            self.jellett_quotient(&phase),
+            self.jellett_quotient(&phase).0,
         )
     }
 

@@ -23,31 +23,88 @@
 //!
 //! `Q` is smooth on `[-1, 1]` (g > 0 there) and `Q(+-1) <= 0`, so the tilt oscillates between
 //! two roots of `Q`. `thetadot^2 = Phi(theta) = Q(cos theta) / sin^2 theta`.
+//!
+//! **Relative to a pole.** Near a pole `p = +-1` the terms of Q vanish like `x = 1 - p u`,
+//! while H1 and H3 are O(1): written with them, Q near the pole is a difference of O(1)
+//! numbers, and a motion passing near the axis (a level set near that of the vertical spin)
+//! is fixed by the integrals only to their round-off over x. Q is therefore written in each
+//! hemisphere with the parameters of its pole ([`PoleFrame`]): Jellett's remainder at the
+//! pole `n_p = N(p)` and the energy above the vertical spin of the same K,
+//! `e_p = H1 - 2 m G (R + a p) - C (K / g(p))^2`, both computed from the state as sums of
+//! terms that vanish at the vertical spin (so with a round-off of eps times those small
+//! terms), and the differences `N(u) - n_p`, `g(u)^2 - g(p)^2` in closed form with the factor
+//! x taken out:
+//!
+//! ```text
+//! N(u) = n_p + C K x J(x),   J(x) = (h_p/g_p - h/g) / x
+//!      = [h_p^2 A m R^2 (2 - x) + A C p R (h_p + h)] / (g g_p (h_p g + h g_p)),
+//! H1 - 2 m G (R + a u) - C omega3^2 = e_p + 2 m G a p x + C K^2 (g^2 - g_p^2) / (g^2 g_p^2),
+//! g^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)],   h = h_p - p R x,   s^2 = x (2 - x).
+//! ```
 
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
-use crate::scalar::{lift, Scalar};
+use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
-use num_dual::{first_derivative, second_derivative, Dual64};
+use num_dual::{first_derivative, second_derivative};
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
 /// `g^2 >= A C`, `g''` stays below about `(m R^2)^2 / (A C)^(3/2)`, i.e. 1e180 (m R^2)^-1 at
 /// this ratio, far inside the range of f64.
 const MIN_MOMENT_RATIO: f64 = 1e-60;
+/// Absolute round-off of the parameters of Q computed from a state, in machine epsilons of
+/// the sum of the magnitudes of their terms. Here and in the quadrature the round-off is
+/// estimated, not bounded: a few epsilons per sum of terms, errors of independent samples
+/// adding in quadrature (docs/quadrature.md, section 5).
+pub const INTEGRAL_EPSILONS: f64 = 2.0;
+
+/// The sum of the terms.
+fn sum<D: Scalar>(terms: [D; 5]) -> D {
+    terms.iter().fold(lift::<D>(0.0), |acc, &t| acc + t)
+}
 
 /// The values of the three integrals that fix a nutation: energy H1 (int-g), Jellett's H3
 /// (int) and Routh's K (raus-int), for a dynamically symmetric body.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reduction {
-    /// The body (I1 = I2 checked).
-    pub body: Body,
+    /// The body (I1 = I2 checked). The fields are private: the frames of the poles are
+    /// derived from the others, and changing one alone would leave them stale.
+    body: Body,
     /// Energy H1 = (M, omega) + 2U.
-    pub h1: f64,
+    h1: f64,
     /// Jellett's integral H3 = (M, r).
-    pub h3: f64,
+    h3: f64,
     /// Routh's integral K = g omega3.
-    pub k: f64,
+    k: f64,
+    /// The level set relative to the top (`gamma3 = 1`) and bottom (`gamma3 = -1`) poles: Q
+    /// at `u >= 0` is written with the first, at `u < 0` with the second.
+    frames: [PoleFrame; 2],
+}
+
+/// The parameters of a level set relative to a pole `p = +-1` (module docs): with K they fix
+/// Q, and they are small for a motion near the vertical spin at that pole.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PoleFrame {
+    /// Jellett's remainder at the pole, `n_p = N(p) = H3 - C (R p + a) K / g(p)`.
+    pub remainder: f64,
+    /// The energy above the vertical spin at the pole with the same K,
+    /// `e_p = H1 - 2 m G (R + a p) - C (K / g(p))^2`.
+    pub excess: f64,
+}
+
+/// The index of the frame of pole `p` in `Reduction::frames` (top first).
+fn frame_index(pole: f64) -> usize {
+    usize::from(pole < 0.0)
+}
+
+/// The pole whose frame writes Q at `u` (the top one for `u >= 0`).
+fn pole_of(u: f64) -> f64 {
+    if u >= 0.0 {
+        1.0
+    } else {
+        -1.0
+    }
 }
 
 impl Reduction {
@@ -70,35 +127,213 @@ impl Reduction {
                 ),
             });
         }
-        Ok(Reduction {
+        let mut red = Reduction {
             body: *body,
             h1,
             h3,
             k,
-        })
+            frames: [PoleFrame {
+                remainder: 0.0,
+                excess: 0.0,
+            }; 2],
+        };
+        for pole in [1.0, -1.0] {
+            let (hp, gp) = red.at_pole(pole);
+            let spin = k / gp;
+            red.frames[frame_index(pole)] = PoleFrame {
+                remainder: h3 - body.i3 * hp * spin,
+                excess: h1
+                    - 2.0 * body.m * body.gravity * (body.radius + body.a * pole)
+                    - body.i3 * spin * spin,
+            };
+        }
+        Ok(red)
     }
 
-    /// The reduction through a state: its H1, H3, K.
+    /// The reduction through a state: its H1, H3, K, and the parameters of both poles
+    /// computed from the state without cancellation ([`Reduction::frames_of_state`]).
     pub fn of_state(body: &Body, state: &State) -> Result<Self> {
         let x = state.to_array();
-        Self::new(
+        let mut red = Self::new(
             body,
             energy(body, &x),
             jellett(body, &x),
             routh_integral(body, &x),
-        )
+        )?;
+        let (frames, _) = red.frames_of_state(state);
+        red.frames = frames;
+        Ok(red)
+    }
+
+    /// The body.
+    pub fn body(&self) -> &Body {
+        &self.body
+    }
+
+    /// The energy H1 = (M, omega) + 2U (int-g).
+    pub fn h1(&self) -> f64 {
+        self.h1
+    }
+
+    /// Jellett's integral H3 = (M, r) (int).
+    pub fn h3(&self) -> f64 {
+        self.h3
+    }
+
+    /// Routh's integral K = g omega3 (raus-int).
+    pub fn k(&self) -> f64 {
+        self.k
+    }
+
+    /// The parameters of the level set relative to the pole `pole`.
+    pub fn frame(&self, pole: f64) -> PoleFrame {
+        self.frames[frame_index(pole)]
+    }
+
+    /// The reduction with the parameters `[K, n_top, e_top, n_bottom, e_bottom]` (H1 and H3
+    /// from the top frame).
+    pub fn with_parameters(&self, parameters: [f64; 5]) -> Self {
+        let [k, n_top, e_top, n_bottom, e_bottom] = parameters;
+        let b = &self.body;
+        let (hp, gp) = self.at_pole(1.0);
+        let spin = k / gp;
+        Reduction {
+            body: self.body,
+            h1: e_top + 2.0 * b.m * b.gravity * (b.radius + b.a) + b.i3 * spin * spin,
+            h3: n_top + b.i3 * hp * spin,
+            k,
+            frames: [
+                PoleFrame {
+                    remainder: n_top,
+                    excess: e_top,
+                },
+                PoleFrame {
+                    remainder: n_bottom,
+                    excess: e_bottom,
+                },
+            ],
+        }
+    }
+
+    /// The parameters `[K, n_top, e_top, n_bottom, e_bottom]` that fix Q.
+    pub fn parameters(&self) -> [f64; 5] {
+        let [top, bottom] = self.frames;
+        [
+            self.k,
+            top.remainder,
+            top.excess,
+            bottom.remainder,
+            bottom.excess,
+        ]
+    }
+
+    /// `h_p = R p + a` and `g_p = g(p)` at a pole.
+    fn at_pole(&self, pole: f64) -> (f64, f64) {
+        let b = &self.body;
+        let hp = b.radius * pole + b.a;
+        (hp, (b.i1 * b.i3 + b.i3 * b.m * hp * hp).sqrt())
+    }
+
+    /// The frames of both poles from a state, each term vanishing at the vertical spin
+    /// (module docs), and the absolute round-off of `[K, n_top, e_top, n_bottom, e_bottom]`:
+    /// `INTEGRAL_EPSILONS` machine epsilons of the sum of the magnitudes of the terms of each.
+    /// With `omega` from the state, `N(u0) = A R (omega1 gamma1 + omega2 gamma2)` and
+    ///
+    /// ```text
+    /// n_p = A R (omega1 gamma1 + omega2 gamma2) - C g(u0) omega3 x0 J(x0),
+    /// e_p = A (omega1^2 + omega2^2) + m |omega x r|^2 - 2 m G a p x0
+    ///       - C omega3^2 (g(u0)^2 - g_p^2) / g_p^2,
+    /// ```
+    ///
+    /// with `x0 = 1 - p gamma3` taken from the horizontal part of gamma near the pole,
+    /// `(gamma1^2 + gamma2^2) / (1 + p gamma3)`.
+    pub fn frames_of_state(&self, state: &State) -> ([PoleFrame; 2], [f64; 5]) {
+        let b = &self.body;
+        let gamma = state.gamma;
+        let omega = state.omega(b);
+        let r = b.contact_vector(&gamma);
+        let norm = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let cross = [
+            omega[1] * r[2] - omega[2] * r[1],
+            omega[2] * r[0] - omega[0] * r[2],
+            omega[0] * r[1] - omega[1] * r[0],
+        ];
+        let rolling = cross.iter().map(|c| c * c).sum::<f64>() * b.m;
+        let rolling_noise = 2.0 * b.m * norm(cross) * norm(omega) * norm(r);
+        let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
+        let tangential = b.i1 * b.radius * (omega[0] * gamma[0] + omega[1] * gamma[1]);
+        let tangential_noise =
+            b.i1 * b.radius * ((omega[0] * gamma[0]).abs() + (omega[1] * gamma[1]).abs());
+        let kinetic = b.i1 * (omega[0] * omega[0] + omega[1] * omega[1]);
+        let e = INTEGRAL_EPSILONS * f64::EPSILON;
+        let mut frames = [PoleFrame {
+            remainder: 0.0,
+            excess: 0.0,
+        }; 2];
+        let mut errors = [
+            e * (self.k.abs() + self.routh_g(gamma[2]) * omega[2].abs()),
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        ];
+        for pole in [1.0, -1.0] {
+            let x0 = if pole * gamma[2] > 0.0 {
+                horizontal / (1.0 + pole * gamma[2])
+            } else {
+                1.0 - pole * gamma[2]
+            };
+            let (_, gp) = self.at_pole(pole);
+            let (g2_change, g) = self.g_change(pole, x0);
+            let shift = b.i3 * g * omega[2] * x0 * self.jellett_divided(pole, x0);
+            let lift = 2.0 * b.m * b.gravity * b.a * pole * x0;
+            let spin_change = b.i3 * omega[2] * omega[2] * g2_change / (gp * gp);
+            let i = frame_index(pole);
+            frames[i] = PoleFrame {
+                remainder: tangential - shift,
+                excess: kinetic + rolling - lift - spin_change,
+            };
+            errors[1 + 2 * i] = e * (tangential_noise + shift.abs());
+            errors[2 + 2 * i] =
+                e * (kinetic + rolling + lift.abs() + spin_change.abs()) + e * rolling_noise;
+        }
+        (frames, errors)
+    }
+
+    /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`.
+    fn g_change<D: Real>(&self, pole: f64, x: D) -> (D, D) {
+        let b = &self.body;
+        let (hp, gp) = self.at_pole(pole);
+        let h = -x * (pole * b.radius) + hp;
+        let change = x
+            * ((-x + 2.0) * (b.i1 * b.m * b.radius * b.radius)
+                - (h + hp) * (b.i3 * b.m * pole * b.radius));
+        (change, (change + gp * gp).sqrt())
+    }
+
+    /// `J(x) = (h_p / g_p - h / g) / x` at `x = 1 - p u` (module docs), without cancellation:
+    /// rationalised where h and h_p have the same sign, directly where they do not (then x is
+    /// not small).
+    pub fn jellett_divided<D: Real>(&self, pole: f64, x: D) -> D {
+        let b = &self.body;
+        let (hp, gp) = self.at_pole(pole);
+        let h = -x * (pole * b.radius) + hp;
+        let (_, g) = self.g_change(pole, x);
+        if h.re() * hp > 0.0 {
+            ((-x + 2.0) * (hp * hp * b.i1 * b.m * b.radius * b.radius)
+                + (h + hp) * (b.i1 * b.i3 * pole * b.radius))
+                / (g * gp * (g * hp + h * gp))
+        } else {
+            (g.recip() * (-h) + hp / gp) / x
+        }
     }
 
     /// Routh's g of (rho) as a function of `u = gamma3` on the unit sphere,
     /// `g(u) = sqrt(A C + A m R^2 (1 - u^2) + C m (R u + a)^2)` (the same function as
     /// [`Body::routh_g`], written in u so that it can be differentiated at the poles).
     pub fn routh_g<D: Scalar>(&self, u: D) -> D {
-        self.routh_g_with_sine(lift::<D>(1.0) - u * u, u * self.body.radius + self.body.a)
-    }
-
-    /// `g` from `s2 = sin^2 theta` and `h = R u + a`.
-    fn routh_g_with_sine<D: Scalar>(&self, s2: D, h: D) -> D {
         let b = &self.body;
+        let (s2, h) = (lift::<D>(1.0) - u * u, u * b.radius + b.a);
         (s2 * (b.i1 * b.m * b.radius * b.radius) + h * h * (b.i3 * b.m) + b.i1 * b.i3).sqrt()
     }
 
@@ -107,73 +342,96 @@ impl Reduction {
         self.routh_g(u).recip() * self.k
     }
 
-    /// Jellett's remainder `N(u) = H3 - C (R u + a) omega3 = A R s omega_t`.
-    pub fn jellett_remainder<D: Scalar>(&self, u: D) -> D {
-        self.remainder_at(u, lift(self.h3), lift(self.k))
+    /// Jellett's remainder `N(u) = H3 - C (R u + a) omega3 = A R s omega_t`, as
+    /// `n_p + C K x J(x)` in the frame of the pole of u's hemisphere.
+    pub fn jellett_remainder<D: Real>(&self, u: D) -> D {
+        let pole = pole_of(u.re());
+        self.jellett_remainder_in_frame(pole, -u * pole + 1.0)
     }
 
-    /// `N(u)` at given values of H3 and K (generic, so that its dependence on the integrals can
-    /// be differentiated).
-    fn remainder_at<D: Scalar>(&self, u: D, h3: D, k: D) -> D {
-        let b = &self.body;
-        h3 - k / self.routh_g(u) * (u * b.radius + b.a) * b.i3
+    /// `N` at `x = 1 - p u` from the pole `p`.
+    pub fn jellett_remainder_in_frame<D: Real>(&self, pole: f64, x: D) -> D {
+        x * self.jellett_divided(pole, x) * (self.body.i3 * self.k) + self.frame(pole).remainder
     }
 
     /// `Q(u) = (du/dt)^2`, the reduced equation of the tilt (module docs).
-    pub fn q<D: Scalar>(&self, u: D) -> D {
-        self.q_terms(u)
-            .iter()
-            .fold(crate::scalar::lift::<D>(0.0), |acc, &t| acc + t)
+    pub fn q<D: Real>(&self, u: D) -> D {
+        sum(self.q_terms(u))
+    }
+
+    /// `Q` at `x = 1 - p u` in the frame of the pole `p`: accurate near the pole, where u
+    /// itself rounds x to a relative error `eps / x`.
+    pub fn q_in_frame<D: Real>(&self, pole: f64, x: D) -> D {
+        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
+    }
+
+    /// `Q` at `x = 1 - p u` anywhere in `[0, 2]`: in the frame of the pole `p` on its
+    /// hemisphere (`x <= 1`), in that of the other pole at `2 - x` (exact) beyond.
+    pub fn q_from_pole(&self, pole: f64, x: f64) -> f64 {
+        if x <= 1.0 {
+            self.q_in_frame(pole, x)
+        } else {
+            self.q_in_frame(-pole, 2.0 - x)
+        }
     }
 
     /// The terms whose sum is `Q(u)`; their magnitudes set the round-off scale of `Q`.
-    pub fn q_terms<D: Scalar>(&self, u: D) -> [D; 4] {
-        self.q_terms_at(u, [lift(self.h1), lift(self.h3), lift(self.k)])
+    pub fn q_terms<D: Real>(&self, u: D) -> [D; 5] {
+        self.q_terms_at(u, self.parameters().map(lift))
     }
 
-    /// The terms of `Q(u)` at given values `[H1, H3, K]` of the integrals.
-    fn q_terms_at<D: Scalar>(&self, u: D, integrals: [D; 3]) -> [D; 4] {
-        self.q_terms_with_sine(u, lift::<D>(1.0) - u * u, integrals)
+    /// `[K, n_p, e_p]` of the frame of pole `p`.
+    fn frame_parameters<D: Real>(&self, pole: f64) -> [D; 3] {
+        let f = self.frame(pole);
+        [self.k, f.remainder, f.excess].map(lift)
     }
 
-    /// `Q` at `u = pole (1 - gap)` with `sin^2 theta = gap (2 - gap)` computed from the gap,
-    /// not from u: near a pole u rounds `1 - |u|` to a relative error `eps / gap`.
-    pub fn q_near_pole(&self, pole: f64, gap: f64) -> f64 {
-        let u = pole * (1.0 - gap);
-        self.q_terms_with_sine(u, gap * (2.0 - gap), [self.h1, self.h3, self.k])
-            .iter()
-            .sum()
+    /// The terms of `Q(u)` at the parameters `[K, n_top, e_top, n_bottom, e_bottom]`.
+    fn q_terms_at<D: Real>(&self, u: D, parameters: [D; 5]) -> [D; 5] {
+        let pole = pole_of(u.re());
+        let i = 1 + 2 * frame_index(pole);
+        self.q_terms_in_frame(
+            pole,
+            -u * pole + 1.0,
+            [parameters[0], parameters[i], parameters[i + 1]],
+        )
     }
 
-    /// The terms of `Q` at `u` with `s2 = 1 - u^2` given.
-    fn q_terms_with_sine<D: Scalar>(&self, u: D, s2: D, integrals: [D; 3]) -> [D; 4] {
+    /// The terms of `Q` at `x = 1 - p u` from the parameters `[K, n_p, e_p]` of the pole `p`
+    /// (module docs): each vanishes with x or with the parameters, so near the pole they are
+    /// small and Q carries no cancellation of O(1) numbers.
+    fn q_terms_in_frame<D: Real>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
         let b = &self.body;
-        let [h1, h3, k] = integrals;
+        let [k, remainder, excess] = parameters;
         let (ai, r) = (b.i1, b.radius);
-        let h = u * r + b.a;
-        let w3 = k / self.routh_g_with_sine(s2, h);
-        let n = h3 - w3 * h * b.i3;
+        let (hp, gp) = self.at_pole(pole);
+        let h = -x * (pole * r) + hp;
+        let s2 = x * (-x + 2.0);
+        let (g2_change, g) = self.g_change(pole, x);
+        let w3 = k / g;
+        let n = x * self.jellett_divided(pole, x) * k * b.i3 + remainder;
         let inertia = (s2 * (r * r) + h * h) * b.m + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
-            s2 * (h1 - (u * b.a + r) * (2.0 * b.m * b.gravity)) / inertia,
-            -(s2 * w3 * w3 * b.i3) / inertia,
+            s2 * excess / inertia,
+            s2 * x * (2.0 * b.m * b.gravity * b.a * pole) / inertia,
+            s2 * k * k * g2_change / (g * g * (gp * gp)) * b.i3 / inertia,
             -(n * n) / (ai * r * r) / inertia,
             -(rolling * rolling * b.m) / inertia,
         ]
     }
 
-    /// The partial derivatives `dQ/dH1, dQ/dH3, dQ/dK` at `u`, by automatic differentiation.
-    pub fn q_integral_gradient(&self, u: f64) -> [f64; 3] {
-        let values = [self.h1, self.h3, self.k];
+    /// The partial derivatives of Q at `u` with respect to the parameters
+    /// `[K, n_top, e_top, n_bottom, e_bottom]`, by automatic differentiation (those of the
+    /// other pole's frame are 0).
+    pub fn q_integral_gradient(&self, u: f64) -> [f64; 5] {
+        let values = self.parameters();
         std::array::from_fn(|i| {
             first_derivative(
                 |x| {
                     let mut at = values.map(lift);
                     at[i] = x;
-                    self.q_terms_at(lift(u), at)
-                        .iter()
-                        .fold(lift::<Dual64>(0.0), |acc, &t| acc + t)
+                    sum(self.q_terms_at(lift(u), at))
                 },
                 values[i],
             )
@@ -181,12 +439,11 @@ impl Reduction {
         })
     }
 
-    /// The round-off bound of `Q(u)` computed from integrals that carry the absolute errors
-    /// `integral_errors` (of H1, H3, K): the rounding of its own terms,
-    /// `eps sum |terms|`, plus `sum |dQ/dH_i| err_i`. Near a pole the terms of Q vanish like
-    /// `1 - u^2` while Jellett's remainder N is a difference of O(1) numbers: this second part
-    /// is what decides how well the integrals fix a motion that passes near the axis.
-    pub fn q_noise(&self, u: f64, integral_errors: [f64; 3]) -> f64 {
+    /// The round-off bound of `Q(u)` computed from parameters that carry the absolute errors
+    /// `integral_errors` (of `[K, n_top, e_top, n_bottom, e_bottom]`,
+    /// [`Reduction::frames_of_state`]): the rounding of its own terms, `eps sum |terms|`, plus
+    /// `sum |dQ/dp_i| err_i`.
+    pub fn q_noise(&self, u: f64, integral_errors: [f64; 5]) -> f64 {
         let grad = self.q_integral_gradient(u);
         f64::EPSILON * self.q_scale(u)
             + grad
@@ -210,9 +467,26 @@ impl Reduction {
     /// the terms of `Q`. At a pole all terms of `Q` vanish, while their slopes do not, so the
     /// test for a double root at `u` must compare `Q'` with this and not with [`Self::q_scale`].
     pub fn q_slope_scale(&self, u: f64) -> f64 {
-        (0..4)
+        (0..5)
             .map(|i| first_derivative(|v| self.q_terms(v)[i], u).1.abs())
             .sum()
+    }
+
+    /// The round-off scales of `Q` and of `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
+    pub fn q_scales_in_frame(&self, pole: f64, x: f64) -> (f64, f64) {
+        let parameters = self.frame_parameters(pole);
+        (0..5).fold((0.0, 0.0), |(value, slope), i| {
+            let (t, dt) = first_derivative(
+                |v| self.q_terms_in_frame(pole, v, parameters.map(|p: f64| lift(p)))[i],
+                x,
+            );
+            (value + t.abs(), slope + dt.abs())
+        })
+    }
+
+    /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
+    pub fn q_slope_in_frame(&self, pole: f64, x: f64) -> f64 {
+        first_derivative(|v| self.q_in_frame(pole, v), x).1
     }
 
     /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
@@ -257,14 +531,16 @@ impl Reduction {
     /// The round-off scale of `Q''` at `u`: the sum of the magnitudes of the second
     /// derivatives of the terms of `Q`.
     pub fn q_curvature_scale(&self, u: f64) -> f64 {
-        (0..4)
+        (0..5)
             .map(|i| second_derivative(|v| self.q_terms(v)[i], u).2.abs())
             .sum()
     }
 
     /// Jellett's quotient `N(u) / (1 - u^2) = omega_t / (A R s)`, for `|u| < 1`.
     pub fn jellett_quotient(&self, u: f64) -> f64 {
-        self.jellett_remainder(u) / (1.0 - u * u)
+        let pole = pole_of(u);
+        let x = 1.0 - pole * u;
+        self.jellett_remainder_in_frame(pole, x) / (x * (2.0 - x))
     }
 
     /// The precession rate `dpsi/dt = u N(u) / (A R (1 - u^2)) - omega3` (module docs),
