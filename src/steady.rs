@@ -309,8 +309,9 @@ const NEWTON_STEPS: usize = 3;
 pub struct QuadraticRoots {
     /// The roots, ascending (none, one or two).
     pub roots: Vec<f64>,
-    /// `Some(leading coefficient)` when the coefficient of `x^2` is not resolved by the
-    /// samples (to `RESOLVED_PRECISION`): a far root, if any, is not in `roots`.
+    /// `Some(bound)` when the coefficient of `x^2` is not resolved by the samples (to
+    /// `RESOLVED_PRECISION`): a far root, if any, is not in `roots`, and lies beyond about
+    /// `|x| = bound` (the sum of the roots is `-a1 / a2`, with `|a2|` below the resolution).
     pub unresolved: Option<f64>,
 }
 
@@ -358,7 +359,7 @@ pub fn sampled_quadratic_roots(
     if a2.abs() * RESOLVED_PRECISION < noise {
         // The far root lies beyond |x| ~ |a1| / |a2|, fixed by the samples to worse than
         // `RESOLVED_PRECISION`: not listed; the near one is that of the linear part.
-        unresolved = Some(a2 * size);
+        unresolved = Some(w * a1.abs() * RESOLVED_PRECISION / noise);
         if a1.abs() > noise {
             roots.push(refine(-a0 / a1, coefficients, size, w)?);
         }
@@ -382,9 +383,28 @@ fn tilted_state(body: &Body, theta: f64, omega_t: f64, spin: f64) -> Result<Stat
     State::from_omega(body, [s, 0.0, u], [omega_t, 0.0, spin], Normalise::Reject)
 }
 
+/// The steady precessions at one tilt that the samples resolve, and where an unlisted one
+/// would be.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TiltPrecessions {
+    /// The resolved steady precessions (zero, one or two), ascending in omega_t.
+    pub precessions: Vec<SteadyPrecession>,
+    /// `Some(bound)` when a far root of the quadratic is beyond the resolution of its samples
+    /// (omega_t of order 1 / m for a tiny mass m): a steady precession with `|omega_t|`
+    /// beyond about `bound`, if one exists, is not in `precessions`.
+    pub unlisted_beyond: Option<f64>,
+}
+
 /// The steady motions at tilt `theta` in (0, pi) with spin rate `spin`: the roots omega_t of
-/// the quadratic `Q'(cos theta) = 0` (zero, one or two), each with its stability.
+/// the quadratic `Q'(cos theta) = 0` (zero, one or two), each with its stability. A far root
+/// beyond the resolution of the samples is left out: [`precessions_at_tilt`] says where it
+/// would be.
 pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<SteadyPrecession>> {
+    Ok(precessions_at_tilt(body, theta, spin)?.precessions)
+}
+
+/// [`steady_precessions`] with the bound beyond which an unlisted far steady precession lies.
+pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPrecessions> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;
     if !(theta > 0.0 && theta < std::f64::consts::PI) {
@@ -417,7 +437,7 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
     // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
     // at theta = pi/2) there is none.
     let roots = sampled_quadratic_roots(slope, w)?;
-    roots
+    let precessions = roots
         .roots
         .into_iter()
         .map(|omega_t| {
@@ -432,5 +452,9 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
                 state,
             })
         })
-        .collect()
+        .collect::<Result<Vec<_>>>()?;
+    Ok(TiltPrecessions {
+        precessions,
+        unlisted_beyond: roots.unresolved,
+    })
 }

@@ -69,18 +69,37 @@ fn steady_names_the_overflowing_quantity_and_its_cause() {
             .unwrap();
         assert_eq!(out.status.code(), Some(0), "m = {m}");
         let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        json["precessions"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|p| (p["theta"].as_f64().unwrap(), p["omega_t"].as_f64().unwrap()))
-            .collect::<Vec<_>>()
+        let pairs = |key: &str, value: &str| {
+            json[key]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| (p["theta"].as_f64().unwrap(), p[value].as_f64().unwrap()))
+                .collect::<Vec<_>>()
+        };
+        (
+            pairs("precessions", "omega_t"),
+            pairs("unlisted_far_precessions", "beyond_omega_t"),
+        )
     };
-    let (tiny, small, light) = (
+    let ((tiny, tiny_unlisted), (small, small_unlisted), (light, light_unlisted)) = (
         precessions("1e-300"),
         precessions("1e-30"),
         precessions("1e-10"),
     );
+    // The far precession left out is said, at theta = pi/2 only, with a bound below its true
+    // omega_t ~ 13 / m (so the statement "beyond about" is not false); at m = 1e-10 it is
+    // listed and nothing is said.
+    for (unlisted, m) in [(&tiny_unlisted, 1e-300), (&small_unlisted, 1e-30)] {
+        assert_eq!(unlisted.len(), 1, "m = {m}: {unlisted:?}");
+        let (theta, beyond) = unlisted[0];
+        assert!(
+            (theta - std::f64::consts::FRAC_PI_2).abs() < 1e-12,
+            "{theta}"
+        );
+        assert!(beyond > 1e6 && beyond < 13.0 / m, "m = {m}: {beyond}");
+    }
+    assert!(light_unlisted.is_empty(), "{light_unlisted:?}");
     let fast = |list: &[(f64, f64)]| list.iter().filter(|p| p.1.abs() > 1e6).count();
     assert_eq!((fast(&tiny), fast(&small), fast(&light)), (0, 0, 1));
     assert_eq!(tiny.len(), small.len());

@@ -3,7 +3,7 @@
 
 use routh::case::Case;
 use routh::steady::{
-    routh_threshold, steady_precessions, vertical_spin, SteadyPrecession, VerticalSpin,
+    precessions_at_tilt, routh_threshold, vertical_spin, SteadyPrecession, VerticalSpin,
 };
 use routh::{AppResult as Result, Body};
 use serde::Serialize;
@@ -39,6 +39,17 @@ struct Report {
     top_heavy_gamma3: Option<f64>,
     vertical: Vec<VerticalSpin>,
     precessions: Vec<SteadyPrecession>,
+    /// The tilts at which a far steady precession, if one exists, is beyond the resolution of
+    /// the samples and not listed (omega_t of order 1 / m for a tiny mass m).
+    unlisted_far_precessions: Vec<Unlisted>,
+}
+
+/// A tilt with an unlisted far steady precession.
+#[derive(Serialize)]
+struct Unlisted {
+    theta: f64,
+    /// A steady precession at this tilt, if any is unlisted, has |omega_t| beyond about this.
+    beyond_omega_t: f64,
 }
 
 fn stable(b: bool) -> &'static str {
@@ -79,6 +90,13 @@ fn print_text(r: &Report) -> Result<()> {
             stable(p.stability.stable_by_jacobian)
         )?;
     }
+    for u in &r.unlisted_far_precessions {
+        outln!(
+            "  at theta = {:.6}: a steady precession with |omega_t| beyond about {:.3e}, if one exists, is not resolved and not listed",
+            u.theta,
+            u.beyond_omega_t
+        )?;
+    }
     Ok(())
 }
 
@@ -93,8 +111,17 @@ pub fn run(args: Args) -> Result<()> {
         .collect::<routh::Result<Vec<_>>>()?;
     let top_heavy_gamma3 = (body.a != 0.0).then(|| body.a.signum());
     let mut precessions = vec![];
+    let mut unlisted_far_precessions = vec![];
     for degrees in TILTS_DEGREES {
-        precessions.extend(steady_precessions(&body, degrees.to_radians(), spin)?);
+        let theta = degrees.to_radians();
+        let found = precessions_at_tilt(&body, theta, spin)?;
+        precessions.extend(found.precessions);
+        if let Some(beyond_omega_t) = found.unlisted_beyond {
+            unlisted_far_precessions.push(Unlisted {
+                theta,
+                beyond_omega_t,
+            });
+        }
     }
     let report = Report {
         case: case.source.clone(),
@@ -104,6 +131,7 @@ pub fn run(args: Args) -> Result<()> {
         top_heavy_gamma3,
         vertical,
         precessions,
+        unlisted_far_precessions,
     };
     if args.json {
         super::print_json(&report)?;
