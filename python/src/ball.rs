@@ -166,8 +166,8 @@ impl Rolling {
     /// The Python object: a `Body` or a `Ball`.
     pub fn to_object<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         Ok(match self {
-            Rolling::Body(b) => Bound::new(py, PyBody { inner: *b })?.into_any(),
-            Rolling::Ball(b) => Bound::new(py, PyBall { inner: *b })?.into_any(),
+            Rolling::Body(b) => Bound::new(py, PyBody { inner: b })?.into_any(),
+            Rolling::Ball(b) => Bound::new(py, PyBall { inner: b })?.into_any(),
         })
     }
 
