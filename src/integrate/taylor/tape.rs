@@ -17,8 +17,10 @@
 //! `[inputs y_1..y_N, time, constants, operations]` and the operations become a flat array of
 //! `Instr` (a `match` on a small enum per operation and order: no dynamic dispatch, no
 //! allocation). Every slot owns `stride` contiguous Taylor coefficients
-//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`), so the convolutions below read
-//! two contiguous runs.
+//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`) between zeros, so the
+//! convolutions below read two contiguous runs, one forward and one backward, in a single
+//! array (no reversed copy: half the memory and the stores of an earlier layout, the same
+//! arithmetic bit for bit).
 //!
 //! Recurrences for `w^[k]` (order `k`, given all orders below `k`; R. E. Moore, *Interval
 //! Analysis* (1966), ch. 11; A. Jorba, M. Zou, Experimental Math. 14 (2005) 99–117, sect. 2):
@@ -397,22 +399,20 @@ pub struct Tape<const N: usize, T = f64> {
     outputs: [usize; N],
     /// The values of the constants, in slot order.
     constants: Vec<f64>,
-    /// Coefficients per slot: `coef[s * stride + k] = x_s^[k]`, `k <= max_order`.
+    /// Coefficients per slot: `coef[s * stride + PAD + k] = x_s^[k]`, `k <= max_order`,
+    /// after `PAD` zeros that are never written and before `PAD` more places. The
+    /// convolutions `sum_j a^[j] b^[k-j]` read `a` forward from order 0 and `b` backward from
+    /// order `k`, so a dot product of order `k` can run over `k + 1` rounded up to a multiple
+    /// of 4: the extra terms pair an order above `k` of `a` (finite) with a zero before `b`.
     coef: Vec<T>,
-    /// The same, reversed within each slot: `rev[s * stride + max_order - k] = x_s^[k]`, so
-    /// that the convolutions `sum_j a^[j] b^[k-j]` read both runs forward (a dot product),
-    /// followed by `PAD` zeros that are never written: a dot product of order `k` can then run
-    /// over `k + 1` rounded up to a multiple of 4 (the extra terms pair an order above `k`
-    /// of the forward run, finite, with a zero).
-    rev: Vec<T>,
     max_order: usize,
-    /// `max_order + 1 + PAD`.
+    /// `PAD + max_order + 1 + PAD`.
     stride: usize,
     /// The instruction set of the orders `k >= 1` (and whether their dot products fuse).
     isa: Isa,
 }
 
-/// Zeros after each reversed run (see [`Tape`]).
+/// Zeros before each slot's coefficients, and places after them (see [`Tape`]).
 const PAD: usize = 4;
 
 impl<const N: usize> Tape<N> {
@@ -501,8 +501,8 @@ impl<const N: usize> Tape<N> {
         for (j, &i) in ops.iter().enumerate() {
             slot[i] = first_op + j;
         }
-        let stride = max_order + 1 + PAD;
-        let s = |a: u32| (slot[a as usize] * stride) as u32;
+        let stride = PAD + max_order + 1 + PAD;
+        let s = |a: u32| (slot[a as usize] * stride + PAD) as u32;
         let code = ops
             .iter()
             .map(|&i| match (fused[i], nodes[i]) {
@@ -537,7 +537,6 @@ impl<const N: usize> Tape<N> {
             outputs: outputs.map(|o| slot[o as usize]),
             constants: constants.iter().map(|&(_, c)| c).collect(),
             coef: vec![],
-            rev: vec![],
             max_order,
             stride,
             isa: Isa::detect(),
@@ -559,7 +558,6 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             outputs: self.outputs,
             constants: self.constants.clone(),
             coef: vec![zero; size],
-            rev: vec![zero; size],
             max_order: self.max_order,
             stride: self.stride,
             isa: self.isa,
@@ -617,7 +615,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     pub fn evaluate(&mut self, t: T, y: &[T; N]) -> [T; N] {
         self.seed(t, y);
         self.order_zero();
-        self.outputs.map(|o| self.coef[o * self.stride])
+        self.outputs.map(|o| self.coef[self.base(o)])
     }
 
     /// Taylor coefficients `y^[0..=p]` of the solution through `(t, y)` (in each lane): on
@@ -679,7 +677,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..N {
-                let f = self.coef[self.outputs[i] * self.stride + k];
+                let f = self.coef[self.base(self.outputs[i]) + k];
                 self.set(i, k + 1, f * inv);
             }
         }
@@ -697,7 +695,8 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             self.clear_lane(l);
             for i in 0..N {
                 for k in 0..=p {
-                    self.coef[i * self.stride + k].set_lane(l, f64::NAN);
+                    let at = self.base(i) + k;
+                    self.coef[at].set_lane(l, f64::NAN);
                 }
             }
         }
@@ -709,31 +708,35 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     pub fn clear_lane(&mut self, l: usize) {
         let ops = self.first_op * self.stride;
         let inputs = (N + 1) * self.stride;
-        for store in [&mut self.coef, &mut self.rev] {
-            let (inputs_and_constants, operations) = store.split_at_mut(ops);
-            for v in inputs_and_constants[..inputs].iter_mut().chain(operations) {
-                v.set_lane(l, 0.0);
-            }
+        let (inputs_and_constants, operations) = self.coef.split_at_mut(ops);
+        for v in inputs_and_constants[..inputs].iter_mut().chain(operations) {
+            v.set_lane(l, 0.0);
         }
     }
 
     /// `y_i^[k]` after [`Tape::expand`].
     #[inline(always)]
     pub fn state_coefficient(&self, i: usize, k: usize) -> T {
-        self.coef[i * self.stride + k]
+        self.coef[self.base(i) + k]
     }
 
     /// The coefficients `y_i^[0..=p]` after [`Tape::expand`].
     #[inline(always)]
     pub fn state_series(&self, i: usize, p: usize) -> &[T] {
-        &self.coef[i * self.stride..=i * self.stride + p]
+        &self.coef[self.base(i)..=self.base(i) + p]
     }
 
-    /// Stores `x_slot^[k]` in both layouts.
+    /// Where `x_slot^[0]` is in `coef`.
+    #[inline(always)]
+    fn base(&self, slot: usize) -> usize {
+        slot * self.stride + PAD
+    }
+
+    /// Stores `x_slot^[k]`.
     #[inline(always)]
     fn set(&mut self, slot: usize, k: usize, value: T) {
-        self.coef[slot * self.stride + k] = value;
-        self.rev[slot * self.stride + self.max_order - k] = value;
+        let at = self.base(slot) + k;
+        self.coef[at] = value;
     }
 
     #[inline(always)]
@@ -751,8 +754,8 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     #[inline(always)]
     fn order_zero(&mut self) {
         // Slices held in locals: the stores below cannot make the compiler reload them.
-        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
-        let (stride, top) = (self.stride, self.max_order);
+        let (code, c) = (&self.code[..], &mut self.coef[..]);
+        let stride = self.stride;
         let lift = T::from_f64;
         for (j, instr) in code.iter().enumerate() {
             let value = match *instr {
@@ -778,9 +781,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
                 Instr::MulMinus(a, b, d) => c[a as usize] * c[b as usize] - c[d as usize],
                 Instr::MinusMul(d, a, b) => c[d as usize] - c[a as usize] * c[b as usize],
             };
-            let dest = (self.first_op + j) * stride;
-            c[dest] = value;
-            r[dest + top] = value;
+            c[(self.first_op + j) * stride + PAD] = value;
         }
     }
 
@@ -791,14 +792,14 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     fn order<const L: usize, const FMA: bool>(&mut self, k: usize) {
         let stride = self.stride;
         let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
-        // Start of the reversed run of orders k, k-1, ..., 0 within a slot.
-        let back = self.max_order - k;
         // Slices held in locals: the stores below cannot make the compiler reload them.
-        let (code, c, r) = (&self.code[..], &mut self.coef[..], &mut self.rev[..]);
-        let mut dest = self.first_op * stride;
+        let (code, c) = (&self.code[..], &mut self.coef[..]);
+        let mut dest = self.first_op * stride + PAD;
         for instr in code {
+            // Orders 0, 1, ... of `a` (forward), and the `len` orders of `b` up to `top`
+            // (read backward by `dot`; below order 0, the zeros before the slot).
             let fwd = |a: usize| &c[a..a + len];
-            let rwd = |a: usize| &r[a + back..a + back + len];
+            let upto = |b: usize, top: usize| &c[b + top + 1 - len..b + top + 1];
             let value = match *instr {
                 Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
                 Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
@@ -807,70 +808,77 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
                 Instr::MulC(a, m) => c[a as usize + k] * m,
                 Instr::DivC(a, m) => c[a as usize + k] / m,
                 // sum_{j=0..k} a^[j] b^[k-j]
-                Instr::Mul(a, b) => dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)),
+                Instr::Mul(a, b) => dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)),
                 Instr::MulAdd(a, b, d) | Instr::MulPlus(a, b, d) => {
-                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)) + c[d as usize + k]
+                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)) + c[d as usize + k]
                 }
                 Instr::MulMinus(a, b, d) => {
-                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize)) - c[d as usize + k]
+                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)) - c[d as usize + k]
                 }
                 Instr::MinusMul(d, a, b) => {
-                    c[d as usize + k] - dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
+                    c[d as usize + k] - dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
                 }
                 Instr::DotAdd(a, b, d, e) => {
-                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
-                        + dot::<T, L, FMA>(fwd(d as usize), rwd(e as usize))
+                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
+                        + dot::<T, L, FMA>(fwd(d as usize), upto(e as usize, k))
                 }
                 Instr::DotSub(a, b, d, e) => {
-                    dot::<T, L, FMA>(fwd(a as usize), rwd(b as usize))
-                        - dot::<T, L, FMA>(fwd(d as usize), rwd(e as usize))
+                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
+                        - dot::<T, L, FMA>(fwd(d as usize), upto(e as usize, k))
                 }
                 // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
                 Instr::Div(a, b) => {
                     let b = b as usize;
-                    (c[a as usize + k] - dot::<T, L, FMA>(fwd(b + 1), rwd(dest + 1))) / c[b]
+                    (c[a as usize + k] - dot::<T, L, FMA>(fwd(b + 1), upto(dest, k - 1))) / c[b]
                 }
                 Instr::CDiv(_, b) => {
                     let b = b as usize;
-                    -dot::<T, L, FMA>(fwd(b + 1), rwd(dest + 1)) / c[b]
+                    -dot::<T, L, FMA>(fwd(b + 1), upto(dest, k - 1)) / c[b]
                 }
                 // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
                 // padded terms would meet w^[k] of the previous expansion).
                 Instr::Sqrt(a) => {
                     let w = &c[dest + 1..dest + k];
-                    let w_rev = &r[dest + back + 1..dest + back + k];
-                    (c[a as usize + k] - dot::<T, 0, FMA>(w, w_rev)) / (c[dest] * 2.0)
+                    (c[a as usize + k] - dot::<T, 0, FMA>(w, w)) / (c[dest] * 2.0)
                 }
             };
             c[dest + k] = value;
-            r[dest + back] = value;
             dest += stride;
         }
     }
 }
 
-/// `sum_j a[j] b[j]` over `L` terms (unrolled), or over the length of `a` for `L = 0`, in four
-/// partial sums so that the additions do not wait on each other; fused multiply-adds if `FMA`.
-/// The same operations in each lane whatever the [`Coefficient`] type.
+/// `sum_j a[j] b[n-1-j]` (`b` read backward) over `n = L` terms (unrolled), or `n = a.len()`
+/// for `L = 0`, in four partial sums so that the additions do not wait on each other: the
+/// terms beyond the last multiple of 4 first (a product each, in sums `0, 1, ...`), then term
+/// `j` of each group of four into sum `j mod 4`; `(s_0 + s_1) + (s_2 + s_3)`. Fused
+/// multiply-adds if `FMA`. The same operations in each lane whatever the [`Coefficient`]
+/// type.
 #[inline(always)]
 fn dot<T: Coefficient, const L: usize, const FMA: bool>(a: &[T], b: &[T]) -> T {
     let n = if L == 0 { a.len() } else { L };
     let (a, b) = (&a[..n], &b[..n]);
-    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let m = n - n % 4;
     let mut s = [T::from_f64(0.0); 4];
-    for (l, (&x, &y)) in a4.remainder().iter().zip(b4.remainder()).enumerate() {
-        s[l] = x * y;
+    for (l, &x) in a[m..].iter().enumerate() {
+        s[l] = x * b[n - 1 - m - l];
     }
-    for (x, y) in a4.zip(b4) {
+    for (x, y) in a[..m].chunks_exact(4).zip(b[n - m..].rchunks_exact(4)) {
         for l in 0..4 {
-            s[l] = if FMA {
-                x[l].fused_mul_add(y[l], s[l])
-            } else {
-                s[l] + x[l] * y[l]
-            };
+            s[l] = mul_add::<T, FMA>(x[l], y[3 - l], s[l]);
         }
     }
     (s[0] + s[1]) + (s[2] + s[3])
+}
+
+/// `x y + z`: one rounding (fused) if `FMA`, else two.
+#[inline(always)]
+fn mul_add<T: Coefficient, const FMA: bool>(x: T, y: T, z: T) -> T {
+    if FMA {
+        x.fused_mul_add(y, z)
+    } else {
+        x * y + z
+    }
 }
 
 /// A sum or difference with the products it absorbs (see [`Tape::compile`]); node indices.
