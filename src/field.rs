@@ -32,8 +32,9 @@
 //! the divergence and the Poisson checks that automatic differentiation takes of this code
 //! are those of (mg-eq) as the paper writes it. In floating point the two forms differ by
 //! round-off only (`tests/field_identities.rs` compares them, values and dual-number
-//! Jacobians). The short form has fewer operations (on the Taylor method's tape, and in the
-//! `f64` code: BENCHMARKS.md, "The field by exact identities").
+//! Jacobians). The short form has fewer operations: the Taylor method's tape of the default
+//! case has 42 instead of 56, 32 instead of 40 of them products (its steps 16 % cheaper); in
+//! the `f64` code the latency is unchanged (BENCHMARKS.md, "The field by exact identities").
 
 use crate::ball::{AsBall, Ball};
 use crate::scalar::{cross, lift, split, Scalar};
