@@ -46,9 +46,12 @@ pub fn vector_field<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
 }
 
 /// (mg-eq) in the form of the module's documentation. The constants `-m R com` and
-/// `-m G com` are products of parameters, made once in `f64`, so that every scalar type
+/// `-m G com` are products of parameters, made in `f64` arithmetic, so that every scalar type
 /// (and the Taylor tape, which folds the zero components of an axial `com`) sees the same
-/// numbers; the products by them are by constants, not of variables.
+/// numbers; the products by them are by constants, not of variables, and are written as plain
+/// products (a fused multiply-add by a constant would be a product of two series on the
+/// tape, and would not fold a zero). The one product of variables per component, `s omega_i`,
+/// is fused with the sum it enters.
 #[inline(always)]
 fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6]) -> [D; 6] {
     let (gamma, m_vec) = split(x);
