@@ -4,11 +4,22 @@ The peers (heyoka, SciPy, Hairer's Fortran dop853) need the right-hand side in t
 language. It is written here once, generic over the arithmetic: `field(p, x)` uses only + - * /
 so the same function runs on floats (SciPy), on heyoka expressions (heyoka compiles it), on
 mpmath numbers and on SymPy symbols (from which the Fortran right-hand side is generated).
-`check_against_routh` compares it with routh's own field at random points before any timing.
+run.py's `check_fields` compares it with routh's own field at random points before any timing.
 
 omega = I_Q^{-1} M with I_Q = I + m r^2 E - m r r^T (om-m) by Sherman-Morrison;
 r = R gamma + a e3; U = m G (r, gamma); dgamma/dt = gamma x omega;
-dM/dt = M x omega + m dr/dt x (omega x r) + gamma x dU/dgamma.
+dM/dt = M x omega + m dr/dt x (omega x r) + gamma x dU/dgamma (mg-eq): `field_literal`.
+
+`field` is the same function of x (on all of R^6, not only on |gamma| = 1) written shorter by
+two exact identities, as routh's src/field.rs writes it (a fair comparison needs the same
+formula): a x (b x c) = b (a, c) - c (a, b) with (dgamma/dt, omega) = (dgamma/dt, gamma) = 0
+gives m dr/dt x (omega x r) = -m R (dgamma/dt, com) omega = m R a (dgamma/dt)_3 omega
+(com = -a e3); dU/dgamma = m G (2 R gamma + a e3) and gamma x gamma = 0 give
+gamma x dU/dgamma = m G a (gamma_2, -gamma_1, 0). So
+
+dM/dt = M x omega + m R a (dgamma/dt)_3 omega + m G a (gamma_2, -gamma_1, 0).
+
+check_model.py shows that both forms agree with routh's field.
 """
 import pathlib
 import tomllib
@@ -50,7 +61,24 @@ def omega_of(p, x):
 
 
 def field(p, x):
-    """(mg-eq) at x = (gamma, M)."""
+    """(mg-eq) at x = (gamma, M), by the identities of the module's documentation."""
+    g1, g2, g3, M1, M2, M3 = x
+    (w1, w2, w3), _ = omega_of(p, x)
+    gd1, gd2, gd3 = g2 * w3 - g3 * w2, g3 * w1 - g1 * w3, g1 * w2 - g2 * w1
+    s = p["m"] * p["R"] * p["a"] * gd3
+    ka = p["m"] * p["G"] * p["a"]
+    return [
+        gd1,
+        gd2,
+        gd3,
+        M2 * w3 - M3 * w2 + s * w1 + ka * g2,
+        M3 * w1 - M1 * w3 + s * w2 - ka * g1,
+        M1 * w2 - M2 * w1 + s * w3,
+    ]
+
+
+def field_literal(p, x):
+    """(mg-eq) at x = (gamma, M), term by term as the paper prints it."""
     g1, g2, g3, M1, M2, M3 = x
     m, R, a, G = p["m"], p["R"], p["a"], p["G"]
     (w1, w2, w3), (r1, r2, r3) = omega_of(p, x)

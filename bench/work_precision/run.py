@@ -10,7 +10,8 @@ from the repository root (nice it on a shared machine). Steps:
    whose right-hand side is generated (SymPy `fcode`) from model.field; routh's benchmark
    binary is built with `cargo bench --bench work_precision --no-run`.
 2. checks: the right-hand sides of the peers (Python for SciPy and heyoka, the generated
-   Fortran) against routh's field at 200 random points per case (relative 1e-13).
+   Fortran, and model.field_literal, the form that model.field shortens) against routh's
+   field at 200 random points per case (relative 1e-13).
 3. the runs, interleaved (and, for tolerances 1e-12 .. 1e-15, our methods once more without
    compensated summation, to measure what it changes): for each case, each tolerance 1e-4 .. 1e-15, each method in turn,
    the minimum wall time of `--repeat` integrations to t = 1000 and the final-state error
@@ -150,7 +151,7 @@ def build_fortran(case):
 
 
 def check_fields(bench, case, fortran):
-    """The peers' right-hand sides against routh's at 200 random points (relative 1e-13)."""
+    """The peers' right-hand sides (and model.field_literal) against routh's at 200 random points (relative 1e-13)."""
     rng = random.Random(1)
     _, x0 = model.load(case)
     pts = []
@@ -164,9 +165,9 @@ def check_fields(bench, case, fortran):
     p, _ = model.load(case)
     worst = 0.0
     for x, a, b in zip(pts, ours, theirs):
-        c = model.field(p, x)
         scale = max(abs(v) for v in a)
-        worst = max(worst, max(abs(u - v) for u, v in zip(a, b)) / scale, max(abs(u - v) for u, v in zip(a, c)) / scale)
+        for c in (b, model.field(p, x), model.field_literal(p, x)):
+            worst = max(worst, max(abs(u - v) for u, v in zip(a, c)) / scale)
     assert len(ours) == len(theirs) == len(pts)
     assert worst < 1e-13, (case, worst)
     return worst
