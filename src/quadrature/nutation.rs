@@ -126,6 +126,10 @@ pub struct Nutation {
     singularities: Vec<(f64, f64)>,
     /// The same in the distance `x = 1 - p u` from the top and the bottom pole.
     frame_singularities: [Vec<(f64, f64)>; 2],
+    /// The round-off scale of `dQ/dx` at the upper and at the lower turning point, in the
+    /// frame of the top and of the bottom pole ([`Reduction::q_scales_in_frame`]): part of the
+    /// round-off of every sample of a wide nutation's cofactor, computed once.
+    end_slope_scales: [f64; 2],
     /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
     work: Work,
     /// Phase sigma of the initial state.
@@ -773,6 +777,8 @@ impl Nutation {
                     .map(|&(re, im)| (1.0 - pole * re, im))
                     .collect()
             }),
+            end_slope_scales: [(1.0, upper.gap), (-1.0, lower.gap)]
+                .map(|(pole, gap)| red.q_scales_in_frame(pole, gap).1),
             work: Work::default(),
             sigma0: 0.0,
             psi_ref: 0.0,
@@ -932,7 +938,7 @@ impl Nutation {
             let q = red.q_in_frame(pole, x);
             let p = (q / far + near) / width;
             let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
-            let (_, end_slope_scale) = red.q_scales_in_frame(pole, x_end);
+            let end_slope_scale = self.end_slope_scales[usize::from(pole < 0.0)];
             (
                 p,
                 f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),

@@ -10,6 +10,7 @@
 //! number of terms each.
 
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 /// Chebyshev nodes per panel.
 pub const PANEL_NODES: usize = 32;
@@ -46,25 +47,41 @@ fn clenshaw(coef: &[f64], x: f64) -> f64 {
     0.5 * coef[0] + x * b1 - b2
 }
 
-/// The cosines `cos(m pi / (2n))`, `m < 4n`, of the DCT of n samples: indexed by
-/// `k (2j + 1) mod 4n`, exact integer arithmetic, so that no large argument is rounded.
-fn cosine_table(n: usize) -> Vec<f64> {
-    (0..4 * n)
+/// The matrix of the DCT of n samples, row k and column j holding `cos(k (2j + 1) pi / (2n))`
+/// taken from the cosines `cos(m pi / (2n))`, `m < 4n`, at `m = k (2j + 1) mod 4n` (exact
+/// integer arithmetic, so that no large argument is rounded).
+fn dct_matrix(n: usize) -> Vec<f64> {
+    let cosines: Vec<f64> = (0..4 * n)
         .map(|m| (m as f64 * PI / (2 * n) as f64).cos())
+        .collect();
+    (0..n * n)
+        .map(|i| cosines[((i / n) * (2 * (i % n) + 1)) % (4 * n)])
         .collect()
+}
+
+/// The DCT matrix of `PANEL_NODES` samples and the Chebyshev nodes `cos((j + 1/2) pi / n)`
+/// of a panel, computed once per process.
+fn panel_tables() -> &'static (Vec<f64>, Vec<f64>) {
+    static TABLES: OnceLock<(Vec<f64>, Vec<f64>)> = OnceLock::new();
+    TABLES.get_or_init(|| {
+        (
+            dct_matrix(PANEL_NODES),
+            (0..PANEL_NODES)
+                .map(|j| ((j as f64 + 0.5) * PI / PANEL_NODES as f64).cos())
+                .collect(),
+        )
+    })
 }
 
 impl Chebyshev {
     /// The series interpolating `samples` at `x_j = cos((j + 1/2) pi / n)` (a DCT-II).
-    fn from_samples(samples: &[f64], table: &[f64]) -> Self {
+    /// `matrix` is [`dct_matrix`] of `samples.len()`.
+    fn from_samples(samples: &[f64], matrix: &[f64]) -> Self {
         let n = samples.len();
-        let coef: Vec<f64> = (0..n)
-            .map(|k| {
-                let sum: f64 = samples
-                    .iter()
-                    .enumerate()
-                    .map(|(j, v)| v * table[(k * (2 * j + 1)) % (4 * n)])
-                    .sum();
+        let coef: Vec<f64> = matrix
+            .chunks_exact(n)
+            .map(|row| {
+                let sum: f64 = samples.iter().zip(row).map(|(v, c)| v * c).sum();
                 2.0 * sum / n as f64
             })
             .collect();
@@ -215,8 +232,9 @@ struct Build {
     truncation: [f64; 2],
     noise2: [f64; 2],
     scale: Option<[f64; 2]>,
-    table: Vec<f64>,
-    nodes: Vec<f64>,
+    /// The DCT matrix and the Chebyshev nodes ([`panel_tables`]).
+    matrix: &'static [f64],
+    nodes: &'static [f64],
 }
 
 impl Build {
@@ -254,7 +272,7 @@ impl Build {
                 }
             }
             self.spent += PANEL_NODES;
-            let series = [0, 1].map(|i| Chebyshev::from_samples(&values[i], &self.table));
+            let series = [0, 1].map(|i| Chebyshev::from_samples(&values[i], self.matrix));
             let global = *self
                 .scale
                 .get_or_insert([series[0].largest(), series[1].largest()]);
@@ -323,10 +341,8 @@ impl Piecewise {
             truncation: [0.0; 2],
             noise2: [0.0; 2],
             scale: None,
-            table: cosine_table(PANEL_NODES),
-            nodes: (0..PANEL_NODES)
-                .map(|j| ((j as f64 + 0.5) * PI / PANEL_NODES as f64).cos())
-                .collect(),
+            matrix: &panel_tables().0,
+            nodes: &panel_tables().1,
         };
         let left = match build.side(|sigma| sample(sigma, PI - sigma))? {
             Ok(side) => side,

@@ -80,6 +80,46 @@ pub struct Reduction {
     /// The level set relative to the top (`gamma3 = 1`) and bottom (`gamma3 = -1`) poles: Q
     /// at `u >= 0` is written with the first, at `u < 0` with the second.
     frames: [PoleFrame; 2],
+    /// The constants of the body at each pole, in the same order.
+    geometry: [PoleGeometry; 2],
+}
+
+/// The constants of the body at a pole `p = +-1` that every evaluation of Q in its frame
+/// uses (the terms of `g(u)^2 - g_p^2`, `J(x)` and Q of the module docs), computed once per
+/// reduction with the same operations, in the same order, as where they are used.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct PoleGeometry {
+    /// `h_p = R p + a`.
+    hp: f64,
+    /// `g_p = g(p)`.
+    gp: f64,
+    /// `g_p^2` (as `g_p * g_p`).
+    gp2: f64,
+    /// `A m R^2` and `C m p R`, the coefficients of `g^2 - g_p^2`.
+    amr2: f64,
+    cmpr: f64,
+    /// `h_p^2 A m R^2` and `A C p R`, the coefficients of the numerator of `J(x)`.
+    jellett_even: f64,
+    jellett_odd: f64,
+    /// `2 m G a p`, the coefficient of the potential's term of Q.
+    lift: f64,
+}
+
+impl PoleGeometry {
+    fn new(b: &Body, pole: f64) -> Self {
+        let hp = b.radius * pole + b.a;
+        let gp = (b.i1 * b.i3 + b.i3 * b.m * hp * hp).sqrt();
+        PoleGeometry {
+            hp,
+            gp,
+            gp2: gp * gp,
+            amr2: b.i1 * b.m * b.radius * b.radius,
+            cmpr: b.i3 * b.m * pole * b.radius,
+            jellett_even: hp * hp * b.i1 * b.m * b.radius * b.radius,
+            jellett_odd: b.i1 * b.i3 * pole * b.radius,
+            lift: 2.0 * b.m * b.gravity * b.a * pole,
+        }
+    }
 }
 
 /// The parameters of a level set relative to a pole `p = +-1` (module docs): with K they fix
@@ -136,6 +176,7 @@ impl Reduction {
                 remainder: 0.0,
                 excess: 0.0,
             }; 2],
+            geometry: [1.0, -1.0].map(|pole| PoleGeometry::new(body, pole)),
         };
         for pole in [1.0, -1.0] {
             let (hp, gp) = red.at_pole(pole);
@@ -212,6 +253,7 @@ impl Reduction {
                     excess: e_bottom,
                 },
             ],
+            geometry: self.geometry,
         }
     }
 
@@ -229,9 +271,13 @@ impl Reduction {
 
     /// `h_p = R p + a` and `g_p = g(p)` at a pole.
     fn at_pole(&self, pole: f64) -> (f64, f64) {
-        let b = &self.body;
-        let hp = b.radius * pole + b.a;
-        (hp, (b.i1 * b.i3 + b.i3 * b.m * hp * hp).sqrt())
+        let geo = self.geometry(pole);
+        (geo.hp, geo.gp)
+    }
+
+    /// The constants of the body at the pole `pole`.
+    fn geometry(&self, pole: f64) -> &PoleGeometry {
+        &self.geometry[frame_index(pole)]
     }
 
     /// The frames of both poles from a state, each term vanishing at the vertical spin
@@ -302,30 +348,18 @@ impl Reduction {
 
     /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`.
     fn g_change<D: Real>(&self, pole: f64, x: D) -> (D, D) {
-        let b = &self.body;
-        let (hp, gp) = self.at_pole(pole);
-        let h = -x * (pole * b.radius) + hp;
-        let change = x
-            * ((-x + 2.0) * (b.i1 * b.m * b.radius * b.radius)
-                - (h + hp) * (b.i3 * b.m * pole * b.radius));
-        (change, (change + gp * gp).sqrt())
+        let h = -x * (pole * self.body.radius) + self.geometry(pole).hp;
+        g_change_at(self.geometry(pole), x, h)
     }
 
     /// `J(x) = (h_p / g_p - h / g) / x` at `x = 1 - p u` (module docs), without cancellation:
     /// rationalised where h and h_p have the same sign, directly where they do not (then x is
     /// not small).
     pub fn jellett_divided<D: Real>(&self, pole: f64, x: D) -> D {
-        let b = &self.body;
-        let (hp, gp) = self.at_pole(pole);
-        let h = -x * (pole * b.radius) + hp;
-        let (_, g) = self.g_change(pole, x);
-        if h.re() * hp > 0.0 {
-            ((-x + 2.0) * (hp * hp * b.i1 * b.m * b.radius * b.radius)
-                + (h + hp) * (b.i1 * b.i3 * pole * b.radius))
-                / (g * gp * (g * hp + h * gp))
-        } else {
-            (g.recip() * (-h) + hp / gp) / x
-        }
+        let geo = self.geometry(pole);
+        let h = -x * (pole * self.body.radius) + geo.hp;
+        let (_, g) = g_change_at(geo, x, h);
+        jellett_divided_at(geo, x, h, g)
     }
 
     /// Routh's g of (rho) as a function of `u = gamma3` on the unit sphere,
@@ -402,20 +436,20 @@ impl Reduction {
     /// small and Q carries no cancellation of O(1) numbers.
     fn q_terms_in_frame<D: Real>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
         let b = &self.body;
+        let geo = self.geometry(pole);
         let [k, remainder, excess] = parameters;
         let (ai, r) = (b.i1, b.radius);
-        let (hp, gp) = self.at_pole(pole);
-        let h = -x * (pole * r) + hp;
+        let h = -x * (pole * r) + geo.hp;
         let s2 = x * (-x + 2.0);
-        let (g2_change, g) = self.g_change(pole, x);
+        let (g2_change, g) = g_change_at(geo, x, h);
         let w3 = k / g;
-        let n = x * self.jellett_divided(pole, x) * k * b.i3 + remainder;
+        let n = x * jellett_divided_at(geo, x, h, g) * k * b.i3 + remainder;
         let inertia = (s2 * (r * r) + h * h) * b.m + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
             s2 * excess / inertia,
-            s2 * x * (2.0 * b.m * b.gravity * b.a * pole) / inertia,
-            s2 * k * k * g2_change / (g * g * (gp * gp)) * b.i3 / inertia,
+            s2 * x * geo.lift / inertia,
+            s2 * k * k * g2_change / (g * g * geo.gp2) * b.i3 / inertia,
             -(n * n) / (ai * r * r) / inertia,
             -(rolling * rolling * b.m) / inertia,
         ]
@@ -467,19 +501,21 @@ impl Reduction {
     /// the terms of `Q`. At a pole all terms of `Q` vanish, while their slopes do not, so the
     /// test for a double root at `u` must compare `Q'` with this and not with [`Self::q_scale`].
     pub fn q_slope_scale(&self, u: f64) -> f64 {
-        (0..5)
-            .map(|i| first_derivative(|v| self.q_terms(v)[i], u).1.abs())
+        first_derivative(|v| self.q_terms(v), u)
+            .iter()
+            .map(|(_, slope)| slope.abs())
             .sum()
     }
 
     /// The round-off scales of `Q` and of `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
     pub fn q_scales_in_frame(&self, pole: f64, x: f64) -> (f64, f64) {
         let parameters = self.frame_parameters(pole);
-        (0..5).fold((0.0, 0.0), |(value, slope), i| {
-            let (t, dt) = first_derivative(
-                |v| self.q_terms_in_frame(pole, v, parameters.map(|p: f64| lift(p)))[i],
-                x,
-            );
+        first_derivative(
+            |v| self.q_terms_in_frame(pole, v, parameters.map(|p: f64| lift(p))),
+            x,
+        )
+        .iter()
+        .fold((0.0, 0.0), |(value, slope), (t, dt)| {
             (value + t.abs(), slope + dt.abs())
         })
     }
@@ -531,8 +567,9 @@ impl Reduction {
     /// The round-off scale of `Q''` at `u`: the sum of the magnitudes of the second
     /// derivatives of the terms of `Q`.
     pub fn q_curvature_scale(&self, u: f64) -> f64 {
-        (0..5)
-            .map(|i| second_derivative(|v| self.q_terms(v)[i], u).2.abs())
+        second_derivative(|v| self.q_terms(v), u)
+            .iter()
+            .map(|(_, _, curvature)| curvature.abs())
             .sum()
     }
 
@@ -576,5 +613,22 @@ impl Reduction {
             self.spin(u),
         ];
         (gamma, omega)
+    }
+}
+
+/// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`,
+/// `h = h_p - p R x`, with the constants of the pole.
+fn g_change_at<D: Real>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
+    let change = x * ((-x + 2.0) * geo.amr2 - (h + geo.hp) * geo.cmpr);
+    (change, (change + geo.gp2).sqrt())
+}
+
+/// `J(x)` of [`Reduction::jellett_divided`] at `x = 1 - p u` with `h` and `g = g(u)` there.
+fn jellett_divided_at<D: Real>(geo: &PoleGeometry, x: D, h: D, g: D) -> D {
+    let (hp, gp) = (geo.hp, geo.gp);
+    if h.re() * hp > 0.0 {
+        ((-x + 2.0) * geo.jellett_even + (h + hp) * geo.jellett_odd) / (g * gp * (g * hp + h * gp))
+    } else {
+        (g.recip() * (-h) + hp / gp) / x
     }
 }
