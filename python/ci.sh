@@ -12,6 +12,16 @@ command -v python3 >/dev/null || { echo "python3 not found: CPython >= 3.9 is re
 command -v cargo >/dev/null || { echo "cargo not found: the machine's Rust toolchain is required" >&2; exit 1; }
 python3 --version
 cargo --version
+# The bindings' Rust code is a crate of its own, outside the main crate's `cargo clippy`: linted
+# here, warnings as errors, and its formatting checked (where the toolchain has the two
+# components; a toolchain without them is said, not failed).
+if cargo fmt --version >/dev/null 2>&1 && cargo clippy --version >/dev/null 2>&1; then
+    cargo fmt --manifest-path "$root/python/Cargo.toml" --check
+    CARGO_TARGET_DIR="$root/target/python-clippy" \
+        cargo clippy --manifest-path "$root/python/Cargo.toml" --release --all-targets -- -D warnings
+else
+    echo "rustfmt or clippy not installed: the bindings' lint is skipped" >&2
+fi
 rm -rf "$venv"
 python3 -m venv "$venv"
 pip() { "$venv/bin/pip" --disable-pip-version-check "$@"; }
