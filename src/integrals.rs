@@ -64,8 +64,9 @@ pub fn quadratic_integral_free<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
 
 /// Chaplygin's integral `(M, M)` of the ball with its centre of mass at the geometric centre
 /// ([`Model::Chaplygin`]): with `r = R gamma`, the rolling term `m dr/dt x (omega x r)` of
-/// (m-eq) is orthogonal to M there (Chaplygin 1903; Borisov, Mamaev, Regul. Chaotic Dyn. 7
-/// (2002), section 3.1).
+/// (m-eq) is `-m R (dgamma/dt, com) omega` (the identity of [`crate::field`]), zero for
+/// `com = 0`, and so is the torque of gravity: `dM/dt = M x omega`, orthogonal to M
+/// (Chaplygin 1903; Borisov, Mamaev, Regul. Chaotic Dyn. 7 (2002), section 3.1).
 #[inline]
 pub fn momentum_squared<D: Scalar>(x: &[D; 6]) -> D {
     let (_, m_vec) = split(x);
