@@ -91,6 +91,8 @@ pub struct Reduction {
 struct PoleGeometry {
     /// `h_p = R p + a`.
     hp: f64,
+    /// `p R`, the rate at which `h` falls with `x`.
+    pr: f64,
     /// `g_p = g(p)`.
     gp: f64,
     /// `g_p^2` (as `g_p * g_p`).
@@ -106,11 +108,17 @@ struct PoleGeometry {
 }
 
 impl PoleGeometry {
+    /// `h = h_p - p R x`, the height `R u + a` at `x = 1 - p u`.
+    fn height<D: Real>(&self, x: D) -> D {
+        -x * self.pr + self.hp
+    }
+
     fn new(b: &Body, pole: f64) -> Self {
         let hp = b.radius * pole + b.a;
         let gp = (b.i1 * b.i3 + b.i3 * b.m * hp * hp).sqrt();
         PoleGeometry {
             hp,
+            pr: pole * b.radius,
             gp,
             gp2: gp * gp,
             amr2: b.i1 * b.m * b.radius * b.radius,
@@ -348,8 +356,8 @@ impl Reduction {
 
     /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`.
     fn g_change<D: Real>(&self, pole: f64, x: D) -> (D, D) {
-        let h = -x * (pole * self.body.radius) + self.geometry(pole).hp;
-        g_change_at(self.geometry(pole), x, h)
+        let geo = self.geometry(pole);
+        g_change_at(geo, x, geo.height(x))
     }
 
     /// `J(x) = (h_p / g_p - h / g) / x` at `x = 1 - p u` (module docs), without cancellation:
@@ -357,7 +365,7 @@ impl Reduction {
     /// not small).
     pub fn jellett_divided<D: Real>(&self, pole: f64, x: D) -> D {
         let geo = self.geometry(pole);
-        let h = -x * (pole * self.body.radius) + geo.hp;
+        let h = geo.height(x);
         let (_, g) = g_change_at(geo, x, h);
         jellett_divided_at(geo, x, h, g)
     }
@@ -439,7 +447,7 @@ impl Reduction {
         let geo = self.geometry(pole);
         let [k, remainder, excess] = parameters;
         let (ai, r) = (b.i1, b.radius);
-        let h = -x * (pole * r) + geo.hp;
+        let h = geo.height(x);
         let s2 = x * (-x + 2.0);
         let (g2_change, g) = g_change_at(geo, x, h);
         let w3 = k / g;

@@ -17,7 +17,7 @@
 //! `[inputs y_1..y_N, time, constants, operations]` and the operations become a flat array of
 //! `Instr` (a `match` on a small enum per operation and order: no dynamic dispatch, no
 //! allocation). Every slot owns `stride` contiguous Taylor coefficients
-//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`) between zeros, so the
+//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`) after a few zeros, so the
 //! convolutions below read two contiguous runs, one forward and one backward, in a single
 //! array (no reversed copy: half the memory and the stores of an earlier layout, the same
 //! arithmetic bit for bit).
