@@ -22,6 +22,7 @@ const TRAJECTORY: Settings = Settings {
     rtol: 1e-12,
     atol: 1e-12,
     project: false,
+    project_every: 1,
     samples: 0,
     max_steps: routh::case::DEFAULT_MAX_STEPS,
 };

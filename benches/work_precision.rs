@@ -2,7 +2,9 @@
 //!
 //! * `work_precision run CASE METHOD TOL REPEAT`: integrates the case file to t = 1000 with
 //!   METHOD (a name of `Method`: `dop853`, `vern9`, `taylor`, `auto`; with `-plain`, without
-//!   compensated summation of the update) at rtol = atol = TOL, REPEAT times (the Taylor
+//!   compensated summation of the update; with `+project<N>`, projected onto the level set
+//!   of the integrals after every N-th step, `+project` every step) at rtol = atol = TOL,
+//!   REPEAT times (the Taylor
 //!   method's recording of the field is part of each), and prints one JSON
 //!   object: the minimum wall time of the integration (constructor and steps; no samples, no
 //!   projection), the final state, the step and field-evaluation counts and the relative
@@ -20,8 +22,9 @@
 use routh::case::Case;
 use routh::field::vector_field;
 use routh::integrals::Integrals;
-use routh::integrate::{stepper, IntegrateError, Method, Options, Stats};
-use routh::simulate::ReducedSystem;
+use routh::integrate::{drive, stepper, Control, Drive, IntegrateError, Method, Options, Stats};
+use routh::projection::LevelSet;
+use routh::simulate::{project_every, ReducedSystem};
 use std::io::BufRead;
 use std::path::Path;
 use std::time::Instant;
@@ -35,6 +38,11 @@ fn energy(case: &Case, x: &[f64; 6]) -> f64 {
 fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), IntegrateError> {
     let sys = ReducedSystem(&case.ball);
     let x0 = case.initial.to_array();
+    // "+project<N>": projected onto the level set of the integrals after every N-th step.
+    let (method, every) = match method.split_once("+project") {
+        Some((name, n)) => (name, Some(n.parse().unwrap_or(1))),
+        None => (method, None),
+    };
     // "-plain": the update summed without compensation, to measure what compensation gains.
     let (name, compensated) = match method.strip_suffix("-plain") {
         Some(name) => (name, false),
@@ -48,7 +56,25 @@ fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), Integra
         ..Options::default()
     };
     let mut s = stepper(method, &sys, 0.0, x0, T_END, &opts)?;
-    while !s.step()? {}
+    match every {
+        None => while !s.step()? {},
+        Some(every) => {
+            // The library's step loop with its projection, as `routh simulate --project
+            // --project-every N` runs it (without its tracking of the integrals).
+            let level = LevelSet::through(&case.ball, &x0);
+            let project = project_every(Some(&level), every);
+            let plan = Drive {
+                project: Some(&project),
+                ..Drive::default()
+            };
+            drive::<_, IntegrateError, 6>(
+                s.as_mut(),
+                &plan,
+                &mut |_, _| Ok(()),
+                &mut |_, _, _| Ok(Control::Continue),
+            )?;
+        }
+    }
     Ok((*s.y(), s.stats()))
 }
 
@@ -145,6 +171,8 @@ where
     let cases = results["cases"].as_object().expect("cases");
     let panels = root.split_evenly((1, cases.len()));
     let colours = [RED, BLUE, BLACK, MAGENTA, RGBColor(0, 150, 0), CYAN];
+    // A method with projection (" +proj/10") is drawn dashed in its method's colour.
+    let base = |name: &str| name.split(" +proj").next().unwrap_or(name).to_string();
     for (area, (case, data)) in panels.iter().zip(cases) {
         let all = series(data["rows"].as_array().expect("rows"));
         let pts = || all.iter().flat_map(|(_, p)| p.iter());
@@ -171,17 +199,27 @@ where
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .label_style(("sans-serif", 14))
             .draw()?;
-        for (k, (name, points)) in all.iter().enumerate() {
+        let mut bases: Vec<String> = vec![];
+        for (name, _) in &all {
+            if !bases.contains(&base(name)) {
+                bases.push(base(name));
+            }
+        }
+        for (name, points) in &all {
+            let k = bases.iter().position(|b| *b == base(name)).unwrap_or(0);
             let colour = colours[k % colours.len()];
-            chart
-                .draw_series(LineSeries::new(
-                    points.iter().copied(),
-                    colour.stroke_width(2),
-                ))?
-                .label(name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2))
-                });
+            let style = colour.stroke_width(2);
+            if base(name) == *name {
+                chart
+                    .draw_series(LineSeries::new(points.iter().copied(), style))?
+                    .label(name.as_str())
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], style));
+            } else {
+                chart
+                    .draw_series(DashedLineSeries::new(points.iter().copied(), 6, 4, style))?
+                    .label(name.as_str())
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 8, y)], style));
+            }
             chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
         }
         chart

@@ -22,6 +22,7 @@ fn main() -> routh::Result<()> {
         rtol: 1e-12,
         atol: 1e-12,
         project: false,
+        project_every: 1,
         samples: 0,
         max_steps: routh::simulate::DEFAULT_MAX_STEPS,
     };

@@ -7,77 +7,122 @@
 //! functions of [`crate::integrals`]): `x <- x - J^T (J J^T)^{-1} (C(x) - c0)`.
 
 use crate::ball::{AsBall, Ball, Model};
-use crate::differential::{partials, seeded, Dual6};
+use crate::body::Body;
+use crate::differential::{partials, seeded};
 use crate::integrals::{
     area_integral, energy, geometric, jellett, momentum_squared, routh_integral,
 };
-use nalgebra::{DMatrix, DVector};
+use crate::scalar::Scalar;
+use nalgebra::{SMatrix, SVector};
 
-/// Iterations of the simplified Newton method: the residual after one integration step is
-/// ~1e-14 relative, and each iteration squares it, so two reach round-off.
+/// Iterations of the simplified Newton method at most: the residual after one integration
+/// step is ~1e-14 relative, and each iteration squares it, so two reach round-off.
 const NEWTON_ITERATIONS: usize = 2;
+
+/// A correction below this (relative to the state) leaves a residual of the size of its
+/// square, below round-off: no further iteration.
+const CONVERGED: f64 = 1.0 / (1u64 << 26) as f64;
+
+/// The most constraints of a level set: H4, two integrals of the model, H1.
+const MAX: usize = 4;
+
+/// The integrals whose level set a state is projected onto, by model.
+#[derive(Debug, Clone)]
+enum Integrals {
+    /// H4, Jellett's H3, Routh's K, H1.
+    Routh(Body),
+    /// H4, (M, M), (M, gamma), H1.
+    Chaplygin,
+    /// H4, H1.
+    Energy,
+}
 
 /// The level set `{C_i(x) = c_i}` of the integrals through a starting state.
 #[derive(Debug, Clone)]
 pub struct LevelSet {
     ball: Ball,
-    targets: Vec<f64>,
+    integrals: Integrals,
+    targets: [f64; MAX],
 }
 
 impl LevelSet {
     /// The level set through `x0`: H4, the integrals of the ball's model and H1 at their
     /// values there.
     pub fn through(body: &impl AsBall, x0: &[f64; 6]) -> Self {
-        let mut level = LevelSet {
-            ball: body.ball(),
-            targets: Vec::new(),
+        let ball = body.ball();
+        let integrals = match ball.model() {
+            Model::RouthSphere => match ball.axial_body("Routh's integrals") {
+                Ok(body) => Integrals::Routh(body),
+                Err(_) => Integrals::Energy,
+            },
+            Model::Chaplygin => Integrals::Chaplygin,
+            Model::General => Integrals::Energy,
         };
-        level.targets = level
-            .constraints(&x0.map(Dual6::from))
-            .iter()
-            .map(|c| c.re)
-            .collect();
+        let mut level = LevelSet {
+            ball,
+            integrals,
+            targets: [0.0; MAX],
+        };
+        level.targets = level.constraints(x0).0;
         level
     }
 
-    fn constraints(&self, x: &[Dual6; 6]) -> Vec<Dual6> {
-        let ball = &self.ball;
-        let mut c = vec![geometric(x)];
-        match ball.model() {
-            Model::RouthSphere => {
-                if let Ok(body) = ball.axial_body("Routh's integrals") {
-                    c.push(jellett(&body, x));
-                    c.push(routh_integral(&body, x));
-                }
-            }
-            Model::Chaplygin => {
-                c.push(momentum_squared(x));
-                c.push(area_integral(x));
-            }
-            Model::General => {}
+    /// The constraint functions at `x` (the unused places zero) and how many there are.
+    fn constraints<D: Scalar>(&self, x: &[D; 6]) -> ([D; MAX], usize) {
+        let zero = D::from_f64(0.0);
+        let h4 = geometric(x);
+        let h1 = energy(&self.ball, x);
+        match &self.integrals {
+            Integrals::Routh(body) => ([h4, jellett(body, x), routh_integral(body, x), h1], 4),
+            Integrals::Chaplygin => ([h4, momentum_squared(x), area_integral(x), h1], 4),
+            Integrals::Energy => ([h4, h1, zero, zero], 2),
         }
-        c.push(energy(ball, x));
-        c
     }
 
-    /// Move `x` onto the level set (in place).
+    /// Move `x` onto the level set (in place): simplified Newton steps
+    /// `x <- x - J^T (J J^T)^{-1} (C(x) - c0)` with the Jacobian `J` of the constraints at
+    /// the start (automatic differentiation), until the correction is below
+    /// [`CONVERGED`] relative to `x` (its square is then below round-off) or after
+    /// [`NEWTON_ITERATIONS`]; the values after the first step in `f64`. Fixed-size
+    /// arithmetic (no allocation): the constraints a model lacks are rows of zeros, with ones
+    /// on the diagonal of `J J^T`.
     pub fn project(&self, x: &mut [f64; 6]) {
-        let n = self.targets.len();
-        let at_start = self.constraints(&seeded(x));
-        let jac = DMatrix::from_fn(n, 6, |i, j| partials(&at_start[i])[j]);
-        let Some(gram) = (&jac * jac.transpose()).cholesky() else {
+        let (at_start, n) = self.constraints(&seeded(x));
+        let jac = SMatrix::<f64, MAX, 6>::from_fn(|i, j| {
+            if i < n {
+                partials(&at_start[i])[j]
+            } else {
+                0.0
+            }
+        });
+        let mut gram = jac * jac.transpose();
+        for i in n..MAX {
+            gram[(i, i)] = 1.0;
+        }
+        let Some(gram) = gram.cholesky() else {
             return;
         };
+        let mut values: [f64; MAX] = at_start.map(|c| c.re);
         for iteration in 0..NEWTON_ITERATIONS {
-            let values = if iteration == 0 {
-                at_start.clone()
-            } else {
-                self.constraints(&x.map(Dual6::from))
-            };
-            let residual = DVector::from_fn(n, |i, _| values[i].re - self.targets[i]);
+            if iteration > 0 {
+                values = self.constraints(x).0;
+            }
+            let residual = SVector::<f64, MAX>::from_fn(|i, _| {
+                if i < n {
+                    values[i] - self.targets[i]
+                } else {
+                    0.0
+                }
+            });
             let step = jac.transpose() * gram.solve(&residual);
+            let size = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let mut largest = 0.0f64;
             for (xi, si) in x.iter_mut().zip(step.iter()) {
                 *xi -= si;
+                largest = largest.max(si.abs());
+            }
+            if !(largest > CONVERGED * size) {
+                break;
             }
         }
     }

@@ -29,6 +29,12 @@ pub struct Settings {
     pub atol: f64,
     /// Project onto the level set of the integrals after each step.
     pub project: bool,
+    /// With `project`, project after every `project_every`-th accepted step only (at least
+    /// 1: every step). The drift of the integrals between two projections is that of as many
+    /// steps, so every 10th step keeps nearly all of the accuracy that projection gains, at a
+    /// tenth of its cost (BENCHMARKS.md, "Projection onto the integrals"). Samples are
+    /// projected whatever the step.
+    pub project_every: usize,
     /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),
     /// at most [`MAX_SAMPLES`].
     pub samples: usize,
@@ -72,6 +78,8 @@ pub struct Summary {
     pub rhs_evals: usize,
     /// Whether states were projected onto the level set of the integrals.
     pub projected: bool,
+    /// Projected after every how many steps ([`Settings::project_every`]).
+    pub project_every: usize,
     /// The initial state.
     pub initial_state: State,
     /// The state at t_end.
@@ -146,6 +154,22 @@ pub fn project_onto<const N: usize>(level: Option<&LevelSet>, y: &mut [f64; N]) 
     }
 }
 
+/// The projection of the step ends of a run: [`project_onto`] `level` after every
+/// `every`-th call (the calls counted from 1; every call for `every = 1`, none without a
+/// level). [`Settings::project_every`].
+pub fn project_every<const N: usize>(
+    level: Option<&LevelSet>,
+    every: usize,
+) -> impl Fn(&mut [f64; N]) + '_ {
+    let calls = std::cell::Cell::new(0usize);
+    move |y: &mut [f64; N]| {
+        calls.set(calls.get() + 1);
+        if calls.get() % every.max(1) == 0 {
+            project_onto(level, y);
+        }
+    }
+}
+
 impl Default for Settings {
     /// The one set of defaults of the library, the CLI and Python: DOP853 at
     /// rtol = atol = 1e-12 over [0, 100], no projection, no samples.
@@ -156,6 +180,7 @@ impl Default for Settings {
             rtol: 1e-12,
             atol: 1e-12,
             project: false,
+            project_every: 1,
             samples: 0,
             max_steps: DEFAULT_MAX_STEPS,
         }
@@ -193,6 +218,13 @@ pub fn validate(settings: &Settings) -> Result<()> {
             name: "samples",
             value: settings.samples.to_string(),
             rule: "must be at most 10000000 (MAX_SAMPLES)",
+        });
+    }
+    if settings.project_every == 0 {
+        return Err(RouthError::Option {
+            name: "project_every",
+            value: "0".into(),
+            rule: "must be at least 1 (project after every step)",
         });
     }
     if let Method::Rk4 { steps } = settings.method {
@@ -390,6 +422,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     let x0 = reduced(&y0);
     let level = settings.project.then(|| LevelSet::through(body, &x0));
     let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
+    let project_step = project_every(level.as_ref(), settings.project_every);
     let opts = Options {
         rtol: settings.rtol,
         atol: settings.atol,
@@ -399,7 +432,9 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
     let plan = Drive {
         samples,
-        project: level.is_some().then_some(&project as Projection<'_, N>),
+        project: level
+            .is_some()
+            .then_some(&project_step as Projection<'_, N>),
         event,
     };
     let drift = RefCell::new(DriftTracker::new(body, &x0));
@@ -468,6 +503,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
             rejected: stats.rejected,
             rhs_evals: stats.rhs_evals,
             projected: settings.project,
+            project_every: settings.project_every,
             initial_state: State::from_array(&x0),
             final_state: State::from_array(&reduced(&y_end)),
             integrals: drift.into_inner().report(),

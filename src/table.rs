@@ -206,6 +206,7 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
         rtol: case.integration.rtol,
         atol: case.integration.atol,
         project: false,
+        project_every: 1,
         samples,
         max_steps: case.integration.max_steps,
     };

@@ -263,6 +263,7 @@ fn chaplygin_drift(t_end: f64, tol: f64, project: bool) -> (f64, routh::simulate
         rtol: tol,
         atol: tol,
         project,
+        project_every: 1,
         samples: 0,
         max_steps: routh::simulate::DEFAULT_MAX_STEPS,
     };

@@ -18,6 +18,7 @@ fn default_problem(t_end: f64, samples: usize) -> Problem {
             rtol: 1e-12,
             atol: 1e-12,
             project: false,
+            project_every: 1,
             samples,
             ..Settings::default()
         },

@@ -13,7 +13,10 @@ from the repository root (nice it on a shared machine). Steps:
    Fortran, and model.field_literal, the form that model.field shortens) against routh's
    field at 200 random points per case (relative 1e-13).
 3. the runs, interleaved (and, for tolerances 1e-12 .. 1e-15, our methods once more without
-   compensated summation, to measure what it changes): for each case, each tolerance 1e-4 .. 1e-15, each method in turn,
+   compensated summation, to measure what it changes; and our methods with projection onto
+   the level set of the integrals after every 10th step, "+proj/10", as
+   `routh simulate --project --project-every 10` runs them): for each case, each tolerance
+   1e-4 .. 1e-15, each method in turn,
    the minimum wall time of `--repeat` integrations to t = 1000 and the final-state error
    (max norm, relative to the max norm of the reference state of reference.json). heyoka's
    compile time (the construction of its integrator) is recorded apart.
@@ -245,6 +248,9 @@ def main():
 
         methods = {"routh dop853": routh_run("dop853"), "routh vern9": routh_run("vern9"),
                    "routh taylor": routh_run("taylor"),
+                   "routh dop853 +proj/10": routh_run("dop853+project10"),
+                   "routh vern9 +proj/10": routh_run("vern9+project10"),
+                   "routh taylor +proj/10": routh_run("taylor+project10"),
                    "heyoka": heyoka_run, "dop853.f": fortran_run, "scipy DOP853": scipy_run,
                    "routh dop853 plain sum": routh_run("dop853-plain"),
                    "routh vern9 plain sum": routh_run("vern9-plain"),

@@ -15,7 +15,9 @@ import pathlib
 
 HERE = pathlib.Path(__file__).resolve().parent
 LEVELS = [10.0 ** -k for k in range(5, 12)]
-OURS = ["routh dop853", "routh vern9", "routh taylor"]
+PLAIN = ["routh dop853", "routh vern9", "routh taylor"]
+PROJECTED = [n + " +proj/10" for n in PLAIN]
+OURS = PLAIN + PROJECTED
 PEERS = ["heyoka", "dop853.f", "scipy DOP853"]
 
 
@@ -44,15 +46,20 @@ def main():
         pts = {n: [(r["time_s"], r["error"]) for r in sorted((r for r in rows if r["method"] == n), key=lambda r: -r["tol"])]
                for n in methods}
         print(f"#### {case} (field check: peers' right-hand sides within {data['field_check_max_rel']:.1e} of ours)\n")
-        print("| error | " + " | ".join(f"{n} [ms]" for n in methods) + " | best of ours / heyoka | best of ours / dop853.f |")
-        print("|---" * (len(methods) + 3) + "|")
+        print("| error | " + " | ".join(f"{n} [ms]" for n in methods)
+              + " | best of ours / heyoka | best of ours / dop853.f | best without projection / heyoka |")
+        print("|---" * (len(methods) + 4) + "|")
         for level in LEVELS:
             t = {n: time_at(pts[n], level) for n in methods}
-            ours = [t[n] for n in OURS if t.get(n) is not None]
-            best = min(ours) if ours else None
-            ratio = lambda peer: f"{best / t[peer]:.2f}" if best and t.get(peer) else "-"
+            def best_of(names):
+                times = [t[n] for n in names if t.get(n) is not None]
+                return min(times) if times else None
+            def ratio(names, peer):
+                best = best_of(names)
+                return f"{best / t[peer]:.2f}" if best and t.get(peer) else "-"
             cells = [f"{t[n] * 1e3:.1f}" if t[n] is not None else "-" for n in methods]
-            print(f"| {level:.0e} | " + " | ".join(cells) + f" | {ratio('heyoka')} | {ratio('dop853.f')} |")
+            print(f"| {level:.0e} | " + " | ".join(cells) + f" | {ratio(OURS, 'heyoka')} | "
+                  f"{ratio(OURS, 'dop853.f')} | {ratio(PLAIN, 'heyoka')} |")
         floors = {n: min(e for _, e in pts[n]) for n in methods}
         drift = {r["method"]: r["energy_drift"] for r in rows if r["tol"] == 1e-12}
         print("\n| | " + " | ".join(methods) + " |")
@@ -62,11 +69,11 @@ def main():
         plain = [(r["method"], r["tol"], r["error"]) for r in rows if r["method"].endswith("plain sum")]
         if plain:
             comp = {(r["method"], r["tol"]): r["error"] for r in rows}
-            print("\n| tol | " + " | ".join(f"{n}: compensated / plain sum" for n in OURS) + " |")
-            print("|---" * (len(OURS) + 1) + "|")
+            print("\n| tol | " + " | ".join(f"{n}: compensated / plain sum" for n in PLAIN) + " |")
+            print("|---" * (len(PLAIN) + 1) + "|")
             for tol in sorted({t for _, t, _ in plain}, reverse=True):
                 cells = [f"{comp[(n, tol)]:.2e} / {comp[(n + ' plain sum', tol)]:.2e}"
-                         if (n + ' plain sum', tol) in comp else "-" for n in OURS]
+                         if (n + ' plain sum', tol) in comp else "-" for n in PLAIN]
                 print(f"| {tol:.0e} | " + " | ".join(cells) + " |")
         print()
 

@@ -512,7 +512,12 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
         if let Some(p) = run.project {
             let mut y = *stepper.y();
             p(&mut y);
-            stepper.set_state(y);
+            // A projection that leaves the state as it is (bit for bit; e.g. one that
+            // projects every n-th step only) keeps the stepper's carried state (the field at
+            // the step end, the compensation of the update).
+            if y.map(f64::to_bits) != stepper.y().map(f64::to_bits) {
+                stepper.set_state(y);
+            }
         }
         if let Some(g) = run.event {
             g_prev = Some(g(t, stepper.y()));

@@ -117,6 +117,7 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                     rejected: end.stats.rejected,
                     rhs_evals: end.stats.rhs_evals,
                     projected: false,
+                    project_every: 1,
                     initial_state: State::from_array(&run.x0),
                     final_state: State::from_array(&end.y),
                     integrals: done.drift.report(),
@@ -218,6 +219,7 @@ impl Sweep {
             rtol: overrides.rtol.unwrap_or(case.integration.rtol),
             atol: overrides.atol.unwrap_or(case.integration.atol),
             project: false,
+            project_every: 1,
             samples: 0,
             max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
         };
