@@ -23,21 +23,24 @@ use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
 /// Stage derivatives `k_0 .. k_25`.
 type Stages<const N: usize> = [[f64; N]; STAGES];
 
-/// `y + h * sum_j a_sj k_j` over the nonzero entries of row `s` of [`A`].
+/// `y + h * sum_j a_sj k_j` over the nonzero entries of row `s` of [`A`], as
+/// `(y + h * sum_{j < l} a_sj k_j) + (h a_sl) k_l` with `l` the last stage of the row (the
+/// rows are in increasing `j`): the stages are a chain (each stage's field waits for the
+/// stage before), and this way only one product and one sum wait for the last stage instead
+/// of two of each (5 % less time per step, BENCHMARKS.md; the same sum, rounded differently).
 #[inline(always)]
 fn stage_state<const N: usize>(y: &[f64; N], h: f64, k: &Stages<N>, s: usize) -> [f64; N] {
-    let row = A[s];
+    let Some((&(last, a_last), earlier)) = A[s].split_last() else {
+        return *y;
+    };
     let mut acc = [0.0; N];
-    for &(j, a) in row {
+    for &(j, a) in earlier {
         for i in 0..N {
             acc[i] += a * k[j][i];
         }
     }
-    let mut out = [0.0; N];
-    for i in 0..N {
-        out[i] = y[i] + h * acc[i];
-    }
-    out
+    let ha = h * a_last;
+    std::array::from_fn(|i| (y[i] + h * acc[i]) + ha * k[last][i])
 }
 
 /// `sum_j w_j k_j` over the stages of the step.
