@@ -180,7 +180,7 @@ class Problem:
     def __new__(
         cls, body: Union[Body, Ball], x0: _ArrayLike, t_span: Union[float, Sequence[float]],
         rtol: float = 1e-12, atol: float = 1e-12, method: str = "dop853",
-        project: bool = False, full: bool = False,
+        project: bool = False, full: bool = False, project_every: int = 1,
     ) -> "Problem": ...
     @staticmethod
     def from_case(
@@ -202,6 +202,8 @@ class Problem:
     def project(self) -> bool: ...
     @property
     def full(self) -> bool: ...
+    @property
+    def project_every(self) -> int: ...
     def solve(
         self, t_eval: Optional[_ArrayLike] = None, samples: int = 0,
         events: Union[_EventLike, Sequence[_EventLike], None] = None,
@@ -214,7 +216,7 @@ def simulate(
     project: bool = False, samples: int = 0, *, t_eval: Optional[_ArrayLike] = None,
     events: Union[_EventLike, Sequence[_EventLike], None] = None,
     dense_output: bool = False, full: bool = False,
-    t_end: Union[float, Sequence[float], None] = None,
+    t_end: Union[float, Sequence[float], None] = None, project_every: int = 1,
 ) -> Solution:
     """Integrate (mg-eq) from x0 over t_span (see the module README)."""
 

@@ -35,6 +35,9 @@ pub struct Settings {
     /// Project the reduced state onto the level set of the integrals through `x0` after every
     /// step and at every reported state.
     pub project: bool,
+    /// With `project`, the step ends are projected after every `project_every`-th step only
+    /// (the reported states always).
+    pub project_every: usize,
 }
 
 /// How an event is counted: SciPy's `terminal` (0: never stops, n: stops at the n-th
@@ -303,6 +306,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             rtol: settings.rtol,
             atol: settings.atol,
             project: settings.project,
+            project_every: settings.project_every,
             ..LibrarySettings::default()
         },
         None,

@@ -213,7 +213,8 @@ fn read_events(py: Python<'_>, events: Option<&Bound<'_, PyAny>>) -> PyResult<Ve
 /// or a pair `(t0, t1)`; `t1 < t0` integrates backward in time), the integrator `method`
 /// (`"dop853"`: adaptive, order 8, with `rtol`/`atol`; `"rk4"` or `"rk4:<steps>"`: classical
 /// RK4 with that many equal steps), `project` (project onto the level set of the integrals
-/// after each step and at every reported state) and `full` (also integrate the orientation
+/// after each step and at every reported state; `project_every = N`: after every N-th step
+/// only, as `routh simulate --project-every N`) and `full` (also integrate the orientation
 /// quaternion and the position of the centre of mass: the motion in space). Picklable.
 #[pyclass(name = "Problem", module = "routh", frozen)]
 pub struct PyProblem {
@@ -224,6 +225,8 @@ pub struct PyProblem {
     atol: f64,
     method: Method,
     project: bool,
+    /// With `project`, the step ends are projected after every `project_every`-th step.
+    project_every: usize,
     full: bool,
 }
 
@@ -256,6 +259,7 @@ impl PyProblem {
             rtol: self.rtol,
             atol: self.atol,
             project: self.project,
+            project_every: self.project_every,
         };
         let rules: Vec<EventRule> = events.iter().map(|e| e.get().rule).collect();
         let kinds: Vec<&What> = events.iter().map(|e| &e.get().what).collect();
@@ -378,7 +382,7 @@ impl PyProblem {
 #[pymethods]
 impl PyProblem {
     #[new]
-    #[pyo3(signature = (body, x0, t_span, rtol = 1e-12, atol = 1e-12, method = "dop853", project = false, full = false))]
+    #[pyo3(signature = (body, x0, t_span, rtol = 1e-12, atol = 1e-12, method = "dop853", project = false, full = false, project_every = 1))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         body: &Bound<'_, PyAny>,
@@ -389,7 +393,13 @@ impl PyProblem {
         method: &str,
         project: bool,
         full: bool,
+        project_every: i64,
     ) -> PyResult<Self> {
+        if project_every < 1 {
+            return Err(PyValueError::new_err(format!(
+                "project_every = {project_every}: must be at least 1 (project after every step)"
+            )));
+        }
         let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?;
         let t_span = read_span(t_span)?;
         let method: Method =
@@ -413,6 +423,7 @@ impl PyProblem {
             atol,
             method,
             project,
+            project_every: project_every as usize,
             full,
         })
     }
@@ -431,6 +442,7 @@ impl PyProblem {
             atol: case.integration.atol,
             method: Method::Dop853,
             project: false,
+            project_every: 1,
             full,
         })
     }
@@ -483,6 +495,13 @@ impl PyProblem {
         self.full
     }
 
+    /// With `project`: the step ends are projected after every `project_every`-th step
+    /// (reported states always).
+    #[getter]
+    fn project_every(&self) -> usize {
+        self.project_every
+    }
+
     /// Pickling: the constructor and its arguments.
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
@@ -498,13 +517,14 @@ impl PyProblem {
             p.method.to_string(),
             p.project,
             p.full,
+            p.project_every,
         );
         Ok((slf.get_type().into_any(), args.into_pyobject(py)?))
     }
 
     fn __repr__(&self) -> String {
         format!(
-            "Problem(body={}, x0={:?}, t_span={:?}, rtol={:?}, atol={:?}, method={:?}, project={}, full={})",
+            "Problem(body={}, x0={:?}, t_span={:?}, rtol={:?}, atol={:?}, method={:?}, project={}, full={}, project_every={})",
             self.body.repr(),
             self.x0,
             self.t_span,
@@ -512,7 +532,8 @@ impl PyProblem {
             self.atol,
             self.method.to_string(),
             if self.project { "True" } else { "False" },
-            if self.full { "True" } else { "False" }
+            if self.full { "True" } else { "False" },
+            self.project_every
         )
     }
 
@@ -573,7 +594,7 @@ impl PyProblem {
 /// psi = 0) and the centre of mass above the origin. Bad arguments raise `ValueError` naming
 /// them; a failed integration gives `status = -1` with the message, as in SciPy.
 #[pyfunction]
-#[pyo3(signature = (body, x0, t_span = None, rtol = 1e-12, atol = 1e-12, method = "dop853", project = false, samples = 0, *, t_eval = None, events = None, dense_output = false, full = false, t_end = None))]
+#[pyo3(signature = (body, x0, t_span = None, rtol = 1e-12, atol = 1e-12, method = "dop853", project = false, samples = 0, *, t_eval = None, events = None, dense_output = false, full = false, t_end = None, project_every = 1))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate(
     py: Python<'_>,
@@ -590,6 +611,7 @@ pub fn simulate(
     dense_output: bool,
     full: bool,
     t_end: Option<&Bound<'_, PyAny>>,
+    project_every: i64,
 ) -> PyResult<Solution> {
     let t_span = match (t_span, t_end) {
         (Some(span), None) | (None, Some(span)) => span,
@@ -599,13 +621,18 @@ pub fn simulate(
             ))
         }
     };
-    PyProblem::new(body, x0, t_span, rtol, atol, method, project, full)?.solve(
-        py,
-        t_eval,
-        samples,
-        events,
-        dense_output,
-    )
+    PyProblem::new(
+        body,
+        x0,
+        t_span,
+        rtol,
+        atol,
+        method,
+        project,
+        full,
+        project_every,
+    )?
+    .solve(py, t_eval, samples, events, dense_output)
 }
 
 /// A case as the tuple `(body, x0, t_end, rtol, atol)`, the body a `Body` (centre of mass on
