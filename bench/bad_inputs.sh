@@ -74,7 +74,9 @@ for cmd in simulate exact steady; do try optional ok $cmd --case "$DIR/bare.toml
 for args in "--t-end nan" "--t-end -1" "--t-end inf" "--rtol 0" "--rtol 1" "--rtol 1e-20" "--atol -1" \
             "--samples 0" "--samples 1" "--samples 18446744073709551615" "--samples 100000000000" \
             "--samples -5" "--samples 1e11" "--method euler" "--method rk4:0" "--method rk4:99999999999" \
-            "--max-steps 0" "--max-steps 10 --t-end 100" "--t-end 1e6 --max-steps 1000"; do
+            "--max-steps 0" "--max-steps 10 --t-end 100" "--t-end 1e6 --max-steps 1000" \
+            "--project --project-every 0" "--project-every 10" "--project --project-every -1" \
+            "--project --project-every nan"; do
   # shellcheck disable=SC2086
   try options refused simulate $args --out "$DIR/x.csv"
 done
