@@ -205,3 +205,37 @@ fn steady_names_an_overflowing_mass_and_labels_poles_by_the_sign_of_a() {
         .collect();
     assert_eq!(labels, vec![(1.0, "below".into()), (-1.0, "above".into())]);
 }
+
+#[test]
+fn steady_prints_a_tiny_threshold_in_scientific_notation() {
+    // A body of mass 1e-300 is valid; its Routh threshold is ~4e-150, which `{}` printed as
+    // 150 zeros and digits. The text output keeps it readable; the JSON keeps the number.
+    let tiny = case_file(
+        "tiny",
+        ("m = 1.0", "m = 1e-300"),
+        "[0.0, 0.6, 0.8]",
+        "[0.1, 0.2, 3.0]",
+    );
+    let out = routh(&["steady", "--case", tiny.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.contains("centre of mass above"))
+        .expect("the top-heavy vertical spin");
+    assert!(line.contains("threshold |omega3| = 4.3"), "{line}");
+    assert!(line.contains("e-150"), "{line}");
+    assert!(!line.contains("0.0000000"), "{line}");
+    let v = json(&routh(&[
+        "steady",
+        "--case",
+        tiny.to_str().unwrap(),
+        "--json",
+    ]));
+    let threshold = v["vertical"][0]["threshold_spin"].as_f64().unwrap();
+    assert!(threshold > 1e-151 && threshold < 1e-149, "{threshold}");
+}
