@@ -69,6 +69,22 @@ enum Command {
     Sweep(sweep::Args),
 }
 
+/// A number in a text summary: as `{}` prints it between 1e-4 and 1e6 (and zero, and the
+/// non-finite values), else in scientific notation, the shortest digits that read back to it
+/// (a mass of 1e-300 is `1e-300`, not 300 digits).
+pub struct Readable(pub f64);
+
+impl std::fmt::Display for Readable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x == 0.0 || !x.is_finite() || (1e-4..1e6).contains(&x.abs()) {
+            write!(f, "{x}")
+        } else {
+            write!(f, "{x:e}")
+        }
+    }
+}
+
 /// `value` as pretty JSON, ending with a newline. Serialising the output structs (plain
 /// numbers, strings, maps with string keys) cannot fail; a NaN or an infinity, which JSON
 /// cannot hold, is written as `null`.

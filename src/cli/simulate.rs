@@ -1,6 +1,7 @@
 //! `routh simulate`: integrate a case and report the integrals' drift; optionally write
 //! dense-output samples to CSV.
 
+use super::Readable;
 use routh::case::Case;
 use routh::integrals::{Integrals, INTEGRAL_NAMES};
 use routh::integrate::{Method, OdeSystem};
@@ -226,13 +227,25 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     let _ = match case.body("") {
         Ok(body) => writeln!(
             text,
-            "  body     m = {}, R = {}, a = {}, I = ({i1}, {i2}, {i3}), G = {}",
-            b.m, b.radius, body.a, b.gravity
+            "  body     m = {}, R = {}, a = {}, I = ({}, {}, {}), G = {}",
+            Readable(b.m),
+            Readable(b.radius),
+            Readable(body.a),
+            Readable(i1),
+            Readable(i2),
+            Readable(i3),
+            Readable(b.gravity)
         ),
         Err(_) => writeln!(
             text,
-            "  body     m = {}, R = {}, com = {:?}, I = ({i1}, {i2}, {i3}), G = {}",
-            b.m, b.radius, b.com, b.gravity
+            "  body     m = {}, R = {}, com = {:?}, I = ({}, {}, {}), G = {}",
+            Readable(b.m),
+            Readable(b.radius),
+            b.com,
+            Readable(i1),
+            Readable(i2),
+            Readable(i3),
+            Readable(b.gravity)
         ),
     };
     let _ = writeln!(text, "  method   {}{projected}", s.method);

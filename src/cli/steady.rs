@@ -1,6 +1,7 @@
 //! `routh steady`: the stationary motions for the body of a case and their linear stability
 //! (from the double root of Q and from the Jacobian's eigenvalues), with Routh's threshold.
 
+use super::Readable;
 use routh::case::Case;
 use routh::steady::{
     precessions_at_tilt, routh_threshold, vertical_spin, SteadyPrecession, VerticalSpin,
@@ -60,16 +61,6 @@ fn stable(b: bool) -> &'static str {
     }
 }
 
-/// A number as `{}` prints it between 1e-4 and 1e6 (and zero), else in scientific notation
-/// (a threshold of a body of mass 1e-300 is 4.3e-151, not 151 zeros).
-fn readable(x: f64) -> String {
-    if x == 0.0 || (1e-4..1e6).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:.6e}")
-    }
-}
-
 fn print_text(r: &Report) -> Result<()> {
     outln!("case: {}", r.case)?;
     outln!("spin omega3 = {}", r.spin)?;
@@ -80,7 +71,7 @@ fn print_text(r: &Report) -> Result<()> {
              {} by the Jacobian (max Re lambda = {:.3e})",
             v.gamma3,
             v.centre_of_mass,
-            readable(v.threshold_spin),
+            Readable(v.threshold_spin),
             stable(v.stability.stable_by_q),
             v.stability.q_second_derivative,
             stable(v.stability.stable_by_jacobian),
