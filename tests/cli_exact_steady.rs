@@ -207,7 +207,7 @@ fn steady_names_an_overflowing_mass_and_labels_poles_by_the_sign_of_a() {
 }
 
 #[test]
-fn steady_prints_a_tiny_threshold_in_scientific_notation() {
+fn tiny_numbers_are_printed_in_scientific_notation() {
     // A body of mass 1e-300 is valid; its Routh threshold is ~4e-150, which `{}` printed as
     // 150 zeros and digits. The text output keeps it readable; the JSON keeps the number.
     let tiny = case_file(
@@ -238,4 +238,13 @@ fn steady_prints_a_tiny_threshold_in_scientific_notation() {
     ]));
     let threshold = v["vertical"][0]["threshold_spin"].as_f64().unwrap();
     assert!(threshold > 1e-151 && threshold < 1e-149, "{threshold}");
+    // The same rule in the summary of `routh simulate` (the body line printed 300 digits).
+    let out = routh(&["simulate", "--case", tiny.to_str().unwrap(), "--t-end", "1"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("m = 1e-300, R = 1, a = 0.3"), "{text}");
 }
