@@ -323,9 +323,9 @@ fn projection_every_tenth_step_keeps_the_accuracy_that_projection_gains() {
     // integrals drift and with them the frequencies of the motion: the phase error grows
     // with time, 4.7e-6 here. Projection after every step holds the integrals and the error
     // falls to ~1e-8; after every 10th step, the drift of 10 steps stays and the error is
-    // about the same (1.1e-8 and 1.3e-8 measured). Bounds: 1e-7 for both projected runs
+    // about the same (1.1e-8 and 5.5e-9 measured). Bounds: 1e-7 for both projected runs
     // (8x above the measurements: round-off moves them by factors of ~2 between builds) and
-    // a gain of at least 30 (measured ~400). Negative control: projecting "after every
+    // a gain of at least 30 (measured 400 and 850). Negative control: projecting "after every
     // 10^9-th step" (never, in 16,814 steps; only the final state, which is reported as a
     // sample, is projected) has no such gain: it is the drift along the way that projection
     // removes, not the distance of the end state from the level set.
