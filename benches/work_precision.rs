@@ -6,8 +6,8 @@
 //!   of the integrals after every N-th step, `+project` every step) at rtol = atol = TOL,
 //!   REPEAT times (the Taylor
 //!   method's recording of the field is part of each), and prints one JSON
-//!   object: the minimum wall time of the integration (constructor and steps; no samples, no
-//!   projection), the final state, the step and field-evaluation counts and the relative
+//!   object: the minimum wall time of the integration (constructor and steps, and the
+//!   projections if asked; no samples), the final state, the step and field-evaluation counts and the relative
 //!   drift of the energy H1 at the end.
 //! * `work_precision eval CASE`: reads states (six numbers a line) from stdin and prints, a
 //!   line each, the field (mg-eq) and the energy H1 there: the peers' right-hand sides are
@@ -40,7 +40,8 @@ fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), Integra
     let x0 = case.initial.to_array();
     // "+project<N>": projected onto the level set of the integrals after every N-th step.
     let (method, every) = match method.split_once("+project") {
-        Some((name, n)) => (name, Some(n.parse().unwrap_or(1))),
+        Some((name, "")) => (name, Some(1)),
+        Some((name, n)) => (name, Some(n.parse().expect("+project<N>: N is a count"))),
         None => (method, None),
     };
     // "-plain": the update summed without compensation, to measure what compensation gains.

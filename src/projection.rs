@@ -28,7 +28,7 @@ const MAX: usize = 4;
 
 /// The integrals whose level set a state is projected onto, by model.
 #[derive(Debug, Clone)]
-enum Integrals {
+enum Constraints {
     /// H4, Jellett's H3, Routh's K, H1.
     Routh(Body),
     /// H4, (M, M), (M, gamma), H1.
@@ -41,7 +41,7 @@ enum Integrals {
 #[derive(Debug, Clone)]
 pub struct LevelSet {
     ball: Ball,
-    integrals: Integrals,
+    constraints: Constraints,
     targets: [f64; MAX],
 }
 
@@ -50,32 +50,33 @@ impl LevelSet {
     /// values there.
     pub fn through(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let ball = body.ball();
-        let integrals = match ball.model() {
+        let constraints = match ball.model() {
             Model::RouthSphere => match ball.axial_body("Routh's integrals") {
-                Ok(body) => Integrals::Routh(body),
-                Err(_) => Integrals::Energy,
+                Ok(body) => Constraints::Routh(body),
+                Err(_) => Constraints::Energy,
             },
-            Model::Chaplygin => Integrals::Chaplygin,
-            Model::General => Integrals::Energy,
+            Model::Chaplygin => Constraints::Chaplygin,
+            Model::General => Constraints::Energy,
         };
         let mut level = LevelSet {
             ball,
-            integrals,
+            constraints,
             targets: [0.0; MAX],
         };
         level.targets = level.constraints(x0).0;
         level
     }
 
-    /// The constraint functions at `x` (the unused places zero) and how many there are.
+    /// The constraint functions at `x` and how many there are; the unused places are the
+    /// constant zero (no derivatives), and so are their targets.
     fn constraints<D: Scalar>(&self, x: &[D; 6]) -> ([D; MAX], usize) {
         let zero = D::from_f64(0.0);
         let h4 = geometric(x);
         let h1 = energy(&self.ball, x);
-        match &self.integrals {
-            Integrals::Routh(body) => ([h4, jellett(body, x), routh_integral(body, x), h1], 4),
-            Integrals::Chaplygin => ([h4, momentum_squared(x), area_integral(x), h1], 4),
-            Integrals::Energy => ([h4, h1, zero, zero], 2),
+        match &self.constraints {
+            Constraints::Routh(body) => ([h4, jellett(body, x), routh_integral(body, x), h1], 4),
+            Constraints::Chaplygin => ([h4, momentum_squared(x), area_integral(x), h1], 4),
+            Constraints::Energy => ([h4, h1, zero, zero], 2),
         }
     }
 
@@ -88,13 +89,7 @@ impl LevelSet {
     /// on the diagonal of `J J^T`.
     pub fn project(&self, x: &mut [f64; 6]) {
         let (at_start, n) = self.constraints(&seeded(x));
-        let jac = SMatrix::<f64, MAX, 6>::from_fn(|i, j| {
-            if i < n {
-                partials(&at_start[i])[j]
-            } else {
-                0.0
-            }
-        });
+        let jac = SMatrix::<f64, MAX, 6>::from_fn(|i, j| partials(&at_start[i])[j]);
         let mut gram = jac * jac.transpose();
         for i in n..MAX {
             gram[(i, i)] = 1.0;
@@ -107,13 +102,7 @@ impl LevelSet {
             if iteration > 0 {
                 values = self.constraints(x).0;
             }
-            let residual = SVector::<f64, MAX>::from_fn(|i, _| {
-                if i < n {
-                    values[i] - self.targets[i]
-                } else {
-                    0.0
-                }
-            });
+            let residual = SVector::<f64, MAX>::from_fn(|i, _| values[i] - self.targets[i]);
             let step = jac.transpose() * gram.solve(&residual);
             let size = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             let mut largest = 0.0f64;

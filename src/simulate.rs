@@ -32,7 +32,7 @@ pub struct Settings {
     /// With `project`, project after every `project_every`-th accepted step only (at least
     /// 1: every step). The drift of the integrals between two projections is that of as many
     /// steps, so every 10th step keeps nearly all of the accuracy that projection gains, at a
-    /// tenth of its cost (BENCHMARKS.md, "Projection onto the integrals"). Samples are
+    /// tenth of its cost (BENCHMARKS.md, "Work-precision"). Samples are
     /// projected whatever the step.
     pub project_every: usize,
     /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),

@@ -224,30 +224,21 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
         (true, n) => format!(" with projection onto the integrals every {n} steps"),
     };
     let _ = writeln!(text, "routh simulate: {}", case.source);
-    let _ = match case.body("") {
-        Ok(body) => writeln!(
-            text,
-            "  body     m = {}, R = {}, a = {}, I = ({}, {}, {}), G = {}",
-            Readable(b.m),
-            Readable(b.radius),
-            Readable(body.a),
-            Readable(i1),
-            Readable(i2),
-            Readable(i3),
-            Readable(b.gravity)
-        ),
-        Err(_) => writeln!(
-            text,
-            "  body     m = {}, R = {}, com = {:?}, I = ({}, {}, {}), G = {}",
-            Readable(b.m),
-            Readable(b.radius),
-            b.com,
-            Readable(i1),
-            Readable(i2),
-            Readable(i3),
-            Readable(b.gravity)
-        ),
+    // The offset a of a Routh sphere, else the centre of mass.
+    let centre = match case.body("") {
+        Ok(body) => format!("a = {}", Readable(body.a)),
+        Err(_) => format!("com = {:?}", b.com),
     };
+    let _ = writeln!(
+        text,
+        "  body     m = {}, R = {}, {centre}, I = ({}, {}, {}), G = {}",
+        Readable(b.m),
+        Readable(b.radius),
+        Readable(i1),
+        Readable(i2),
+        Readable(i3),
+        Readable(b.gravity)
+    );
     let _ = writeln!(text, "  method   {}{projected}", s.method);
     let _ = writeln!(text, "  t_end    {}", s.t_end);
     let _ = writeln!(

@@ -19,7 +19,7 @@ use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::gauss::GaussLegendre;
 use crate::quadrature::panels::{Piecewise, Sample};
-use crate::quadrature::reduction::Reduction;
+use crate::quadrature::reduction::{frame_index, Reduction};
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use nalgebra::SMatrix;
@@ -931,14 +931,14 @@ impl Nutation {
             let (near, pieces) = self.rule.mean_avoiding(
                 x_end,
                 x,
-                &self.frame_singularities[usize::from(pole < 0.0)],
+                &self.frame_singularities[frame_index(pole)],
                 &|v| red.q_slope_in_frame(pole, v),
             );
             self.work.add(pieces);
             let q = red.q_in_frame(pole, x);
             let p = (q / far + near) / width;
             let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
-            let end_slope_scale = self.end_slope_scales[usize::from(pole < 0.0)];
+            let end_slope_scale = self.end_slope_scales[frame_index(pole)];
             (
                 p,
                 f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),

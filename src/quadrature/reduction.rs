@@ -142,7 +142,7 @@ pub struct PoleFrame {
 }
 
 /// The index of the frame of pole `p` in `Reduction::frames` (top first).
-fn frame_index(pole: f64) -> usize {
+pub(super) fn frame_index(pole: f64) -> usize {
     usize::from(pole < 0.0)
 }
 
