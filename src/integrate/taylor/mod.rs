@@ -31,6 +31,11 @@
 //! counts `p` right-hand-side evaluations in [`Stats::rhs_evals`] (one pass of the tape per
 //! order).
 
+mod codegen;
+mod convolution;
+#[rustfmt::skip]
+mod kernels;
+mod recurrence;
 pub mod tape;
 
 pub use tape::{Tape, Var};

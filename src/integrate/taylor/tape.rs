@@ -39,6 +39,9 @@ use std::collections::HashMap;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+use super::convolution::{self, History};
+use super::recurrence;
+use super::{codegen, kernels};
 use crate::integrate::OdeSystem;
 use crate::scalar::Scalar;
 
@@ -283,7 +286,7 @@ impl Scalar for Var {
 /// One operation of the compiled tape; its result goes to slot `first_op + position`.
 /// Operands are the offsets `slot * stride` of their coefficients; constants inline.
 #[derive(Debug, Clone, Copy)]
-enum Instr {
+pub(super) enum Instr {
     Add(u32, u32),
     Sub(u32, u32),
     Mul(u32, u32),
@@ -323,6 +326,27 @@ pub trait Coefficient: Scalar + fmt::Debug + Send + Sync {
     fn lane(&self, l: usize) -> f64;
     /// Sets lane `l` to `v`.
     fn set_lane(&mut self, l: usize, v: f64);
+
+    /// The histories of `list` at order `k >= 1` into `out` ([`convolution::histories`]), in
+    /// the instruction set `isa`.
+    ///
+    /// # Safety
+    /// The caller is compiled for `isa`, which the CPU has; `c` is the coefficient storage of
+    /// a tape, `list` its histories, `k <= max_order` and `out.len() >= list.len()` (an
+    /// implementation may read the places around the slots without bounds checks).
+    #[inline(always)]
+    unsafe fn histories<const FMA: bool>(
+        c: &[Self],
+        list: &[History],
+        k: usize,
+        out: &mut [Self],
+        isa: Isa,
+    ) where
+        Self: Sized,
+    {
+        let _ = isa;
+        convolution::histories::<Self, FMA>(c, list, k, out);
+    }
 }
 
 impl Coefficient for f64 {
@@ -341,6 +365,25 @@ impl Coefficient for f64 {
     #[inline(always)]
     fn set_lane(&mut self, _l: usize, v: f64) {
         *self = v;
+    }
+
+    /// Four partial sums in one AVX2 register, four histories reduced together, when the pass
+    /// fuses and the CPU has AVX2 ([`convolution::histories_avx2`], bitwise the generic sums).
+    #[inline(always)]
+    unsafe fn histories<const FMA: bool>(
+        c: &[f64],
+        list: &[History],
+        k: usize,
+        out: &mut [f64],
+        isa: Isa,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if FMA && isa != Isa::Baseline {
+            // SAFETY: the caller's (the tape's layout gives each slot `PAD` places before
+            // order 0 and `PAD + max_order + 1 - k >= PAD` after order `k - 1`).
+            return unsafe { convolution::histories_avx2(c, list, k, out) };
+        }
+        convolution::histories::<f64, FMA>(c, list, k, out);
     }
 }
 
@@ -410,10 +453,19 @@ pub struct Tape<const N: usize, T = f64> {
     stride: usize,
     /// The instruction set of the orders `k >= 1` (and whether their dot products fuse).
     isa: Isa,
+    /// The history of each instruction with a product, quotient or square root, in the order
+    /// of `code` ([`convolution`]).
+    hist: Vec<History>,
+    /// Their values at the order of the pass under way.
+    hval: Vec<T>,
+    /// The generated kernel of the tape's shape, if there is one ([`super::codegen`]).
+    kernel: Option<usize>,
+    /// The factors and divisors the kernel takes ([`super::codegen::factors`]).
+    factors: Vec<f64>,
 }
 
 /// Zeros before each slot's coefficients, and places after them (see [`Tape`]).
-const PAD: usize = 4;
+pub(super) const PAD: usize = 4;
 
 impl<const N: usize> Tape<N> {
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
@@ -540,8 +592,22 @@ impl<const N: usize> Tape<N> {
             max_order,
             stride,
             isa: Isa::detect(),
+            hist: vec![],
+            hval: vec![],
+            kernel: None,
+            factors: vec![],
         };
-        tape.with_coefficients()
+        let hist = histories(&tape.code, (first_op * stride + PAD) as u32, stride);
+        let shape = codegen::shape(&tape);
+        let kernel = kernels::SHAPES.iter().position(|(_, s)| *s == shape);
+        let factors = codegen::factors(&tape.code);
+        Tape {
+            hist,
+            kernel,
+            factors,
+            ..tape
+        }
+        .with_coefficients()
     }
 }
 
@@ -561,11 +627,50 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             max_order: self.max_order,
             stride: self.stride,
             isa: self.isa,
+            hist: self.hist.clone(),
+            hval: vec![zero; self.hist.len()],
+            kernel: self.kernel,
+            factors: self.factors.clone(),
         };
         for j in 0..tape.constants.len() {
             tape.set(N + 1 + j, 0, U::from_f64(tape.constants[j]));
         }
         tape
+    }
+
+    /// The compiled instructions.
+    pub(super) fn code(&self) -> &[Instr] {
+        &self.code
+    }
+
+    /// The slot of the first operation.
+    pub(super) fn first_op(&self) -> usize {
+        self.first_op
+    }
+
+    /// The histories of the instructions ([`convolution`]).
+    pub(super) fn histories(&self) -> &[History] {
+        &self.hist
+    }
+
+    /// The number of places of a slot.
+    pub(super) fn stride(&self) -> usize {
+        self.stride
+    }
+
+    /// The name of the generated kernel that runs this tape's passes ([`super::codegen`]),
+    /// `None` if the interpreter runs them.
+    pub fn kernel(&self) -> Option<&'static str> {
+        self.kernel.map(|i| kernels::SHAPES[i].0)
+    }
+
+    /// The same tape run by the interpreter (to compare a kernel with it).
+    #[cfg(test)]
+    pub(super) fn interpreted(&self) -> Self {
+        Tape {
+            kernel: None,
+            ..self.clone()
+        }
     }
 
     /// The instruction set the expansion runs in (detected when the tape was recorded).
@@ -661,19 +766,10 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         );
         self.seed(t, y);
         for k in 0..p {
-            // Dot products of fixed length (unrolled) for the usual orders.
-            match (k + 1).div_ceil(4) * 4 {
-                0 => self.order_zero(),
-                _ if k == 0 => self.order_zero(),
-                4 => self.order::<4, FMA>(k),
-                8 => self.order::<8, FMA>(k),
-                12 => self.order::<12, FMA>(k),
-                16 => self.order::<16, FMA>(k),
-                20 => self.order::<20, FMA>(k),
-                24 => self.order::<24, FMA>(k),
-                28 => self.order::<28, FMA>(k),
-                32 => self.order::<32, FMA>(k),
-                _ => self.order::<0, FMA>(k),
+            if k == 0 {
+                self.order_zero();
+            } else {
+                self.order::<FMA>(k);
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..N {
@@ -786,20 +882,28 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     }
 
     /// Order `k >= 1` of every operation, from the orders below `k` and order `k` of the
-    /// inputs. The dot products run over `L` terms (`k + 1 <= L <= k + 4`; `L = 0`: over
-    /// `k + 1` rounded up to a multiple of 4, not unrolled).
+    /// inputs: the histories of the convolutions first ([`convolution`]: the terms of orders
+    /// `1 .. k-1`, for all operations at once), then one pass through the tape that adds to
+    /// each history the terms with order `k` or 0 of an operand, as in [`ends`].
     #[inline(always)]
-    fn order<const L: usize, const FMA: bool>(&mut self, k: usize) {
+    fn order<const FMA: bool>(&mut self, k: usize) {
+        assert!(k >= 1 && k <= self.max_order);
+        // SAFETY: `expand` compiles this for `self.isa`, which `Isa::detect` found; `hist`
+        // holds the histories of this tape's `code` and `hval` one value each.
+        unsafe { T::histories::<FMA>(&self.coef, &self.hist, k, &mut self.hval, self.isa) };
         let stride = self.stride;
-        let len = if L == 0 { (k + 1).div_ceil(4) * 4 } else { L };
+        if let Some(kernel) = self.kernel {
+            let (c, h, q) = (&mut self.coef[..], &self.hval[..], &self.factors[..]);
+            return kernels::pass::<T, FMA>(kernel, c, stride, k, h, q);
+        }
         // Slices held in locals: the stores below cannot make the compiler reload them.
-        let (code, c) = (&self.code[..], &mut self.coef[..]);
+        let (code, c, hval) = (&self.code[..], &mut self.coef[..], &self.hval[..]);
+        let mut histories = hval.iter().copied();
         let mut dest = self.first_op * stride + PAD;
         for instr in code {
-            // Orders 0, 1, ... of `a` (forward), and the `len` orders of `b` up to `top`
-            // (read backward by `dot`; below order 0, the zeros before the slot).
-            let fwd = |a: usize| &c[a..a + len];
-            let upto = |b: usize, top: usize| &c[b + top + 1 - len..b + top + 1];
+            let mut history = || histories.next().expect("a history per nonlinear operation");
+            // Orders 0 and k of a slot.
+            let at = |x: u32| (c[x as usize], c[x as usize + k]);
             let value = match *instr {
                 Instr::Add(a, b) => c[a as usize + k] + c[b as usize + k],
                 Instr::Sub(a, b) => c[a as usize + k] - c[b as usize + k],
@@ -807,40 +911,42 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
                 Instr::AddC(a, _) => c[a as usize + k],
                 Instr::MulC(a, m) => c[a as usize + k] * m,
                 Instr::DivC(a, m) => c[a as usize + k] / m,
-                // sum_{j=0..k} a^[j] b^[k-j]
-                Instr::Mul(a, b) => dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)),
+                Instr::Mul(a, b) => {
+                    let ((a0, ak), (b0, bk)) = (at(a), at(b));
+                    recurrence::product::<T, FMA>(a0, ak, b0, bk, history())
+                }
                 Instr::MulAdd(a, b, d) | Instr::MulPlus(a, b, d) => {
-                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)) + c[d as usize + k]
+                    let ((a0, ak), (b0, bk)) = (at(a), at(b));
+                    let dk = c[d as usize + k];
+                    recurrence::mul_plus::<T, FMA>(a0, ak, b0, bk, dk, history())
                 }
                 Instr::MulMinus(a, b, d) => {
-                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k)) - c[d as usize + k]
+                    let ((a0, ak), (b0, bk)) = (at(a), at(b));
+                    let dk = c[d as usize + k];
+                    recurrence::mul_minus::<T, FMA>(a0, ak, b0, bk, dk, history())
                 }
                 Instr::MinusMul(d, a, b) => {
-                    c[d as usize + k] - dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
+                    let ((a0, ak), (b0, bk)) = (at(a), at(b));
+                    let dk = c[d as usize + k];
+                    recurrence::minus_mul::<T, FMA>(dk, a0, ak, b0, bk, history())
                 }
                 Instr::DotAdd(a, b, d, e) => {
-                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
-                        + dot::<T, L, FMA>(fwd(d as usize), upto(e as usize, k))
+                    let [(a0, ak), (b0, bk), (d0, dk), (e0, ek)] = [a, b, d, e].map(at);
+                    recurrence::dot_add::<T, FMA>([a0, ak, b0, bk], [d0, dk, e0, ek], history())
                 }
                 Instr::DotSub(a, b, d, e) => {
-                    dot::<T, L, FMA>(fwd(a as usize), upto(b as usize, k))
-                        - dot::<T, L, FMA>(fwd(d as usize), upto(e as usize, k))
+                    let [(a0, ak), (b0, bk), (d0, dk), (e0, ek)] = [a, b, d, e].map(at);
+                    recurrence::dot_sub::<T, FMA>([a0, ak, b0, bk], [d0, dk, e0, ek], history())
                 }
-                // (a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]
                 Instr::Div(a, b) => {
-                    let b = b as usize;
-                    (c[a as usize + k] - dot::<T, L, FMA>(fwd(b + 1), upto(dest, k - 1))) / c[b]
+                    let (b0, bk) = at(b);
+                    recurrence::quotient::<T, FMA>(c[a as usize + k], b0, bk, c[dest], history())
                 }
                 Instr::CDiv(_, b) => {
-                    let b = b as usize;
-                    -dot::<T, L, FMA>(fwd(b + 1), upto(dest, k - 1)) / c[b]
+                    let (b0, bk) = at(b);
+                    recurrence::reciprocal::<T, FMA>(b0, bk, c[dest], history())
                 }
-                // (a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0]), exact length (the
-                // padded terms would meet w^[k] of the previous expansion).
-                Instr::Sqrt(a) => {
-                    let w = &c[dest + 1..dest + k];
-                    (c[a as usize + k] - dot::<T, 0, FMA>(w, w)) / (c[dest] * 2.0)
-                }
+                Instr::Sqrt(a) => recurrence::square_root(c[a as usize + k], c[dest], history()),
             };
             c[dest + k] = value;
             dest += stride;
@@ -848,37 +954,40 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     }
 }
 
-/// `sum_j a[j] b[n-1-j]` (`b` read backward) over `n = L` terms (unrolled), or `n = a.len()`
-/// for `L = 0`, in four partial sums so that the additions do not wait on each other: the
-/// terms beyond the last multiple of 4 first (a product each, in sums `0, 1, ...`), then term
-/// `j` of each group of four into sum `j mod 4`; `(s_0 + s_1) + (s_2 + s_3)`. Fused
-/// multiply-adds if `FMA`. The same operations in each lane whatever the [`Coefficient`]
-/// type.
-#[inline(always)]
-fn dot<T: Coefficient, const L: usize, const FMA: bool>(a: &[T], b: &[T]) -> T {
-    let n = if L == 0 { a.len() } else { L };
-    let (a, b) = (&a[..n], &b[..n]);
-    let m = n - n % 4;
-    let mut s = [T::from_f64(0.0); 4];
-    for (l, &x) in a[m..].iter().enumerate() {
-        s[l] = x * b[n - 1 - m - l];
+/// The histories ([`convolution`]) of the instructions of `code` with a product, quotient or
+/// square root, in their order; `dest` is where the first instruction's coefficients start,
+/// each next one `stride` further.
+fn histories(code: &[Instr], mut dest: u32, stride: usize) -> Vec<History> {
+    let mut list = vec![];
+    for instr in code {
+        let one = |a, b| Some(History { a, b, second: None });
+        let history = match *instr {
+            Instr::Mul(a, b)
+            | Instr::MulAdd(a, b, _)
+            | Instr::MulPlus(a, b, _)
+            | Instr::MulMinus(a, b, _)
+            | Instr::MinusMul(_, a, b) => one(a, b),
+            Instr::DotAdd(a, b, d, e) | Instr::DotSub(a, b, d, e) => Some(History {
+                a,
+                b,
+                second: Some((d, e, matches!(instr, Instr::DotSub(..)))),
+            }),
+            // sum_{j=1..k-1} b^[j] w^[k-j]
+            Instr::Div(_, b) | Instr::CDiv(_, b) => one(b, dest),
+            // sum_{j=1..k-1} w^[j] w^[k-j]
+            Instr::Sqrt(_) => one(dest, dest),
+            Instr::Add(..)
+            | Instr::Sub(..)
+            | Instr::Neg(_)
+            | Instr::AddC(..)
+            | Instr::CSub(..)
+            | Instr::MulC(..)
+            | Instr::DivC(..) => None,
+        };
+        list.extend(history);
+        dest += stride as u32;
     }
-    for (x, y) in a[..m].chunks_exact(4).zip(b[n - m..].rchunks_exact(4)) {
-        for l in 0..4 {
-            s[l] = mul_add::<T, FMA>(x[l], y[3 - l], s[l]);
-        }
-    }
-    (s[0] + s[1]) + (s[2] + s[3])
-}
-
-/// `x y + z`: one rounding (fused) if `FMA`, else two.
-#[inline(always)]
-fn mul_add<T: Coefficient, const FMA: bool>(x: T, y: T, z: T) -> T {
-    if FMA {
-        x.fused_mul_add(y, z)
-    } else {
-        x * y + z
-    }
+    list
 }
 
 /// A sum or difference with the products it absorbs (see [`Tape::compile`]); node indices.
