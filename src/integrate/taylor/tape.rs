@@ -17,10 +17,9 @@
 //! `[inputs y_1..y_N, time, constants, operations]` and the operations become a flat array of
 //! `Instr` (a `match` on a small enum per operation and order: no dynamic dispatch, no
 //! allocation). Every slot owns `stride` contiguous Taylor coefficients
-//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`) after a few zeros, so the
-//! convolutions below read two contiguous runs, one forward and one backward, in a single
-//! array (no reversed copy: half the memory and the stores of an earlier layout, the same
-//! arithmetic bit for bit).
+//! `x^[0], x^[1], ...` (normalised derivatives `x^(k) / k!`) between a few places on either
+//! side, so the convolutions below read two contiguous runs, one forward and one backward, in
+//! a single array.
 //!
 //! Recurrences for `w^[k]` (order `k`, given all orders below `k`; R. E. Moore, *Interval
 //! Analysis* (1966), ch. 11; A. Jorba, M. Zou, Experimental Math. 14 (2005) 99–117, sect. 2):
@@ -29,6 +28,13 @@
 //! * `w = a / b`: `(a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]`;
 //! * `w = sqrt(a)`: `(a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0])`;
 //! * `w = a b + c` (fused): the product's sum plus `c^[k]`.
+//!
+//! The pass of order `k` first sums, for every product, quotient and square root, the terms
+//! that use only orders `1 .. k-1` (its history, [`convolution`]: independent sums, one loop
+//! over all of them), then runs through the tape adding the end terms, which need the order
+//! `k` just computed by the operations before ([`recurrence`]); for the tapes of the model
+//! families this run is generated straight-line code ([`super::codegen`]), in the
+//! interpreter's arithmetic.
 //!
 //! At order 0 every recurrence is the `f64` operation itself, so the tape reproduces the `f64`
 //! field bit for bit. Cost of all orders `0..p`: `O(p)` for each linear operation and
@@ -388,16 +394,16 @@ impl Coefficient for f64 {
 }
 
 /// The instruction set the expansion runs in, detected at run time ([`Isa::detect`]). The
-/// dot products fuse their multiply-adds with AVX2 or AVX-512 alike: the arithmetic of a lane
+/// orders `k >= 1` fuse their multiply-adds with AVX2 or AVX-512 alike: the arithmetic of a lane
 /// does not depend on how many lanes run beside it, nor on the width of the registers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Isa {
     /// The target's baseline (x86-64: SSE2, two doubles a register): products and sums apart.
     Baseline,
-    /// AVX2 and FMA: four doubles a register, fused multiply-adds in the dot products.
+    /// AVX2 and FMA: four doubles a register, fused multiply-adds in the orders `k >= 1`.
     Avx2Fma,
-    /// AVX-512F with AVX2 and FMA: eight doubles a register, fused multiply-adds in the dot
-    /// products.
+    /// AVX-512F with AVX2 and FMA: eight doubles a register, fused multiply-adds in the orders
+    /// `k >= 1`.
     Avx512,
 }
 
@@ -443,15 +449,13 @@ pub struct Tape<const N: usize, T = f64> {
     /// The values of the constants, in slot order.
     constants: Vec<f64>,
     /// Coefficients per slot: `coef[s * stride + PAD + k] = x_s^[k]`, `k <= max_order`,
-    /// after `PAD` zeros that are never written and before `PAD` more places. The
-    /// convolutions `sum_j a^[j] b^[k-j]` read `a` forward from order 0 and `b` backward from
-    /// order `k`, so a dot product of order `k` can run over `k + 1` rounded up to a multiple
-    /// of 4: the extra terms pair an order above `k` of `a` (finite) with a zero before `b`.
+    /// between `PAD` places on either side, which vector loads of four coefficients may read
+    /// (and discard: [`convolution::histories_avx2`]).
     coef: Vec<T>,
     max_order: usize,
     /// `PAD + max_order + 1 + PAD`.
     stride: usize,
-    /// The instruction set of the orders `k >= 1` (and whether their dot products fuse).
+    /// The instruction set of the orders `k >= 1` (and whether their multiply-adds fuse).
     isa: Isa,
     /// The history of each instruction with a product, quotient or square root, in the order
     /// of `code` ([`convolution`]).
@@ -464,7 +468,7 @@ pub struct Tape<const N: usize, T = f64> {
     factors: Vec<f64>,
 }
 
-/// Zeros before each slot's coefficients, and places after them (see [`Tape`]).
+/// Places before and after each slot's coefficients (see [`Tape`]).
 pub(super) const PAD: usize = 4;
 
 impl<const N: usize> Tape<N> {
@@ -648,11 +652,6 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         self.first_op
     }
 
-    /// The histories of the instructions ([`convolution`]).
-    pub(super) fn histories(&self) -> &[History] {
-        &self.hist
-    }
-
     /// The number of places of a slot.
     pub(super) fn stride(&self) -> usize {
         self.stride
@@ -756,7 +755,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         self.expand_with::<true>(t, y, p);
     }
 
-    /// [`Tape::expand`], with fused multiply-adds in the dot products if `FMA`.
+    /// [`Tape::expand`], with fused multiply-adds in the orders `k >= 1` if `FMA`.
     #[inline(always)]
     fn expand_with<const FMA: bool>(&mut self, t: T, y: &[T; N], p: usize) {
         assert!(
@@ -777,10 +776,9 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
                 self.set(i, k + 1, f * inv);
             }
         }
-        // The orders above k of the forward runs meet zeros in the dot products: they must
-        // stay finite for the next expansion. A non-finite intermediate shows in the series
-        // of the state (or, if it does not, in the next expansion's, as a NaN). `x * 0` is
-        // NaN for a non-finite `x` and zero otherwise: one vector sum finds the lanes.
+        // A lane whose state series is not finite is cleared and its series set to NaN: its
+        // integrator refuses the step, and the lane's next run starts as on a new tape. `x * 0`
+        // is NaN for a non-finite `x` and zero otherwise: one vector sum finds the lanes.
         let mut probe = T::from_f64(0.0);
         for i in 0..N {
             for &v in self.state_series(i, p) {
