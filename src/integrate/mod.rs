@@ -92,14 +92,15 @@ pub enum Method {
 /// What `auto` picks: `(tol_min, method)` rows, the first with `tol >= tol_min` wins.
 ///
 /// From the work–precision benchmark (BENCHMARKS.md, section "Work-precision", run of
-/// 2026-11-23, three cases to t = 1000): Verner 9(8) reaches every error from 1e-5 to 1e-10
-/// first among our methods (at tolerances down to 1e-15; its smallest error is 2.5e-11 to
-/// 3.6e-11); only the Taylor method reaches errors below that (3.0e-12 to 8.5e-12 at tol 1e-13
-/// to 1e-15), at 1.5 to 2.2x Vern9's time for 1e-10. With the Taylor method's order rule of
-/// tol >= 1e-12 (`taylor::step_exponent`), measured again in CPU time: still 1.2 to 1.3x
-/// Vern9's time at 1e-10 and 1.4 to 1.5x at 1e-9. So tolerances from 1e-13 up go to Vern9
-/// (its errors there are 5e-9 and above, where Taylor is slower), tighter ones to Taylor.
-pub const AUTO_TABLE: [(f64, Method); 2] = [(1e-13, Method::Vern9), (0.0, Method::Taylor)];
+/// 2026-11-24 09:59 UTC, three cases to t = 1000, plain integration): at each tolerance, the
+/// method that reaches the error the other reaches there in less time. At tol 1e-12 and below
+/// the Taylor method is both faster and 7 to 20x more accurate than Vern9 (default: 12.2 ms
+/// for 2.3e-9 against 12.6 ms for 4.9e-8); at 1e-11 Vern9's error (4.8e-7 default, 6.7e-8
+/// tilted) costs the Taylor method about as much or more (default 9.7 against 9.3 ms,
+/// nogravity a tie, tilted less), and at 1e-10 and above Vern9 is the faster (its errors there,
+/// 1e-6 and above, are where its low cost per step wins). Hence Vern9 for tol >= 5e-12 and
+/// the Taylor method below.
+pub const AUTO_TABLE: [(f64, Method); 2] = [(5e-12, Method::Vern9), (0.0, Method::Taylor)];
 
 impl Method {
     /// The method that runs for the tolerance `tol = min(rtol, atol)`: [`AUTO_TABLE`] for

@@ -27,7 +27,11 @@
 //!
 //! Cost per step: `p` passes over the tape, the pass of order `k` costing `O(1)` per linear
 //! operation and `O(k)` per product, quotient or square root: `O(n_ops p^2)` in all
-//! (`n_nonlinear p^2 / 2` multiply-adds dominate); measured in `benches/taylor.rs`. One step
+//! (`n_nonlinear p^2 / 2` multiply-adds). A pass sums the terms of orders `1 .. k-1` of all
+//! convolutions first, independent of each other (`convolution`), then runs the chain of
+//! operations that need order `k` (`recurrence`), as straight-line generated code for the
+//! tapes of the model families (`codegen`, `kernels`): `0.105 + 0.046 p + 0.0024 p^2` us a
+//! step on the default case (`benches/taylor.rs`, BENCHMARKS.md). One step
 //! counts `p` right-hand-side evaluations in [`Stats::rhs_evals`] (one pass of the tape per
 //! order).
 
@@ -66,14 +70,16 @@ pub const JORBA_ZOU_BELOW: f64 = 1e-12;
 /// step `h = rho e^(-u)`, `rho` the radius of convergence, and the order `p = -ln(eps) / u`,
 /// so that the last term `(h / rho)^p = eps`; if a step of order `p` costs `c2 p^2`, the cost
 /// per unit time `e^u p^2 / rho` is smallest at `u = 2`. Our step costs more per order at
-/// low orders: in CPU time per step at t = 1000 (default case, BENCHMARKS.md, "Cost of a
-/// Taylor step against its order"), `c0 + c1 p + c2 p^2` with `c0 = 0.15 us`,
-/// `c1 = 0.107 us`, `c2 = 0.0056 us` (2.5 us at p = 13, 4.2 us at p = 19, 8.4 us at p = 29).
+/// low orders: in time per step at t = 1000 (default case, BENCHMARKS.md, "Cost of a
+/// Taylor step against its order"), `c0 + c1 p + c2 p^2` with `c0 = 0.105 us`,
+/// `c1 = 0.046 us`, `c2 = 0.0024 us` (1.02 us at p = 12, 1.46 us at p = 16, 1.98 us at p = 20;
+/// the same proportions as before the histories of `tape`, at less than half the cost).
 /// The cost per unit time `e^u (c0 + c1 L / u + c2 L^2 / u^2) / rho`, `L = -ln(eps)`, is then
-/// smallest near `u = 1.4` for `eps` from 1e-8 to 1e-15 (11 % below `u = 2` at 1e-10). Measured
-/// on the three cases of the work-precision benchmark (t = 1000, CPU time): `u = 1.5` takes
+/// smallest near `u = 1.4` for `eps` from 1e-8 to 1e-15 (13 % below `u = 2` at 1e-10). Measured
+/// on the three cases of the work-precision benchmark (t = 1000): `u = 1.5` takes
 /// 16 to 36 % less time than `u = 2` at each tolerance 1e-4 .. 1e-12 and reaches each error
-/// from 1e-5 to 1e-9 in 13 to 26 % less, but its error does not fall below 2e-11 at tol
+/// from 1e-5 to 1e-9 in 13 to 26 % less (again after the histories: at tol 1e-10, 10.8 against
+/// 13.1 ms on default for a smaller error), but its error does not fall below 2e-11 at tol
 /// 1e-13 .. 1e-15, where `u = 2` reaches 3e-12 .. 2e-11 (a floor of round-off, not of
 /// truncation: it does not move with the tolerance; `u = 1.25` and `1.75` do no better).
 /// Hence 1.5 down to 1e-12 and Jorba–Zou's 2 below, where the floor matters.

@@ -30,10 +30,10 @@
 //! * `w = a b + c` (fused): the product's sum plus `c^[k]`.
 //!
 //! The pass of order `k` first sums, for every product, quotient and square root, the terms
-//! that use only orders `1 .. k-1` (its history, [`convolution`]: independent sums, one loop
+//! that use only orders `1 .. k-1` (its history, `taylor::convolution`: independent sums, one loop
 //! over all of them), then runs through the tape adding the end terms, which need the order
-//! `k` just computed by the operations before ([`recurrence`]); for the tapes of the model
-//! families this run is generated straight-line code ([`super::codegen`]), in the
+//! `k` just computed by the operations before (`taylor::recurrence`); for the tapes of the model
+//! families this run is generated straight-line code (`taylor::codegen`), in the
 //! interpreter's arithmetic.
 //!
 //! At order 0 every recurrence is the `f64` operation itself, so the tape reproduces the `f64`
@@ -333,7 +333,7 @@ pub trait Coefficient: Scalar + fmt::Debug + Send + Sync {
     /// Sets lane `l` to `v`.
     fn set_lane(&mut self, l: usize, v: f64);
 
-    /// The histories of `list` at order `k >= 1` into `out` ([`convolution::histories`]), in
+    /// The histories of `list` at order `k >= 1` into `out` (`taylor::convolution`), in
     /// the instruction set `isa`.
     ///
     /// # Safety
@@ -374,7 +374,7 @@ impl Coefficient for f64 {
     }
 
     /// Four partial sums in one AVX2 register, four histories reduced together, when the pass
-    /// fuses and the CPU has AVX2 ([`convolution::histories_avx2`], bitwise the generic sums).
+    /// fuses and the CPU has AVX2 (`convolution::histories_avx2`, bitwise the generic sums).
     #[inline(always)]
     unsafe fn histories<const FMA: bool>(
         c: &[f64],
@@ -657,7 +657,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         self.stride
     }
 
-    /// The name of the generated kernel that runs this tape's passes ([`super::codegen`]),
+    /// The name of the generated kernel that runs this tape's passes (`taylor::codegen`),
     /// `None` if the interpreter runs them.
     pub fn kernel(&self) -> Option<&'static str> {
         self.kernel.map(|i| kernels::SHAPES[i].0)
