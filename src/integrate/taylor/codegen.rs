@@ -351,6 +351,49 @@ mod tests {
             .collect()
     }
 
+    /// Every instruction set this CPU has, in `f64` and in 8 lanes, kernel and interpreter:
+    /// bitwise the same coefficients as the detected set's for the sets that fuse (AVX2 with
+    /// FMA, AVX-512: the histories of `f64` in one AVX2 register, the lanes' one by one), and
+    /// for the baseline (products and sums apart) the same in `f64` and in lanes, different
+    /// from the fused ones (the negative control: the comparison sees the rounding).
+    #[test]
+    fn every_instruction_set_gives_the_same_coefficients() {
+        use crate::integrate::taylor::tape::Isa;
+        let p = 20;
+        let case = Case::default_case().expect("the default case");
+        let tape = Tape::record(&ReducedSystem(&case.ball), p).expect("records");
+        let y = case.initial.to_array();
+        let detected = tape.isa();
+        let sets = [Isa::Baseline, Isa::Avx2Fma, Isa::Avx512];
+        let available = &sets[..=sets.iter().position(|&s| s == detected).expect("a set")];
+        let run = |isa: Isa, interpreted: bool| {
+            let tape = if interpreted {
+                tape.interpreted()
+            } else {
+                tape.clone()
+            }
+            .with_isa(isa);
+            let mut single = tape.clone();
+            single.expand(0.5, &y, p);
+            let mut lanes: Tape<6, Lanes<8>> = tape.with_coefficients();
+            lanes.expand(Lanes::splat(0.5), &y.map(Lanes::splat), p);
+            (series_bits(&single, p, 0), series_bits(&lanes, p, 5))
+        };
+        let fused = run(detected, false);
+        assert_eq!(fused.0, fused.1);
+        for &isa in available {
+            for interpreted in [false, true] {
+                let (single, lanes) = run(isa, interpreted);
+                assert_eq!(single, lanes, "{isa:?}");
+                if isa == Isa::Baseline {
+                    assert_ne!(single, fused.0, "{isa:?}");
+                } else {
+                    assert_eq!(single, fused.0, "{isa:?}");
+                }
+            }
+        }
+    }
+
     /// The generated kernels against the interpreter, in `f64` and in 4 and 8 lanes: bitwise
     /// equal coefficients (tolerance zero: the kernels make the interpreter's calls, with the
     /// same values, in its order) at every order up to 24 from 40 random states for each of

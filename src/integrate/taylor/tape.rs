@@ -663,6 +663,15 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         self.kernel.map(|i| kernels::SHAPES[i].0)
     }
 
+    /// The same tape run in the instruction set `isa` (which the CPU must have).
+    #[cfg(test)]
+    pub(super) fn with_isa(&self, isa: Isa) -> Self {
+        Tape {
+            isa,
+            ..self.clone()
+        }
+    }
+
     /// The same tape run by the interpreter (to compare a kernel with it).
     #[cfg(test)]
     pub(super) fn interpreted(&self) -> Self {
