@@ -39,7 +39,6 @@ pub fn minus_mul<T: Coefficient, const FMA: bool>(dk: T, a0: T, ak: T, b0: T, bk
 
 /// `a b + d e` at order `k` (`h`: the history of both products).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub fn dot_add<T: Coefficient, const FMA: bool>(
     [a0, ak, b0, bk]: [T; 4],
     [d0, dk, e0, ek]: [T; 4],
