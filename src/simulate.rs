@@ -429,7 +429,10 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         max_steps: settings.max_steps,
         ..Options::default()
     };
-    let mut stepper = stepper(settings.method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
+    let method = settings
+        .method
+        .resolve_projected(settings.rtol.min(settings.atol), settings.project);
+    let mut stepper = stepper(method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
     let plan = Drive {
         samples,
         project: level
@@ -494,10 +497,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     let stats = stepper.stats();
     Ok(Observed {
         summary: Summary {
-            method: settings
-                .method
-                .resolve(settings.rtol.min(settings.atol))
-                .to_string(),
+            method: method.to_string(),
             t_end: t1,
             steps: stats.steps,
             rejected: stats.rejected,

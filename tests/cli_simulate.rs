@@ -167,6 +167,30 @@ fn projection_every_nth_step_is_reported_and_holds_the_integrals() {
     );
 }
 
+/// `--method auto` resolves by the tolerance and by whether the run projects
+/// (`integrate::AUTO_TABLE` and `AUTO_TABLE_PROJECTED`): at tol 1e-11 Vern9 plain and the
+/// Taylor method projected; at 1e-10 Vern9 either way, at 1e-12 the Taylor method either way.
+/// The JSON names the method that ran.
+#[test]
+fn auto_picks_by_tolerance_and_projection() {
+    let method = |tol: &str, project: bool| {
+        let mut args = vec![
+            "simulate", "--t-end", "1", "--method", "auto", "--rtol", tol, "--atol", tol, "--json",
+        ];
+        if project {
+            args.push("--project");
+        }
+        let out = routh(&args);
+        assert!(out.status.success(), "{}", stderr(&out));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        v["method"].as_str().unwrap().to_string()
+    };
+    assert_eq!(method("1e-11", false), "vern9");
+    assert_eq!(method("1e-11", true), "taylor");
+    assert_eq!(method("1e-10", true), "vern9");
+    assert_eq!(method("1e-12", false), "taylor");
+}
+
 #[test]
 fn bad_case_files_exit_2_naming_the_key_and_file() {
     let default = routh::case::DEFAULT_CASE;

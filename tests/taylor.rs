@@ -354,6 +354,11 @@ fn method_names_and_the_stepper_factory() {
     // The measured choice (AUTO_TABLE): Vern9 down to tol 5e-12, Taylor below.
     assert_eq!(Method::Auto.resolve(1e-11), Method::Vern9);
     assert_eq!(Method::Auto.resolve(1e-12), Method::Taylor);
+    // With projection (AUTO_TABLE_PROJECTED): Vern9 down to tol 5e-11, Taylor below.
+    assert_eq!(Method::Auto.resolve_projected(1e-10, true), Method::Vern9);
+    assert_eq!(Method::Auto.resolve_projected(1e-11, true), Method::Taylor);
+    assert_eq!(Method::Auto.resolve_projected(1e-11, false), Method::Vern9);
+    assert_eq!(Method::Vern9.resolve_projected(1e-15, true), Method::Vern9);
     assert_eq!(Method::Taylor.resolve(1e-3), Method::Taylor);
     // A system that cannot be recorded: a clear refusal, not a wrong result.
     let closure = |_t: f64, y: &[f64; 2]| [y[1], -y[0]];

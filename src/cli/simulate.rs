@@ -30,7 +30,7 @@ pub struct Args {
     /// Absolute tolerance of DOP853.
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
-    /// Integrator: `dop853` (adaptive, 8th order), `vern9` (adaptive, 9th order), `taylor` (Taylor series, adaptive order and step), `auto` (the fastest for the tolerance) or `rk4` / `rk4:<steps>` (fixed step).
+    /// Integrator: `dop853` (adaptive, 8th order), `vern9` (adaptive, 9th order), `taylor` (Taylor series, adaptive order and step), `auto` (the fastest for the tolerance, with or without `--project`) or `rk4` / `rk4:<steps>` (fixed step).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
     pub method: Method,
     /// Project onto the level set of the integrals (|gamma| = 1, H3, K, H1) after each step.
