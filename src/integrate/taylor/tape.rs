@@ -698,24 +698,8 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     /// Number of instructions with a product, quotient or square root (the operations of cost
     /// `O(k)` at order `k`).
     pub fn nonlinear_len(&self) -> usize {
-        self.code
-            .iter()
-            .filter(|i| {
-                matches!(
-                    i,
-                    Instr::Mul(..)
-                        | Instr::Div(..)
-                        | Instr::Sqrt(..)
-                        | Instr::MulAdd(..)
-                        | Instr::CDiv(..)
-                        | Instr::DotAdd(..)
-                        | Instr::DotSub(..)
-                        | Instr::MulPlus(..)
-                        | Instr::MulMinus(..)
-                        | Instr::MinusMul(..)
-                )
-            })
-            .count()
+        // One history each (`histories`).
+        self.hist.len()
     }
 
     /// The highest order the coefficient storage holds.
@@ -891,7 +875,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     /// Order `k >= 1` of every operation, from the orders below `k` and order `k` of the
     /// inputs: the histories of the convolutions first ([`convolution`]: the terms of orders
     /// `1 .. k-1`, for all operations at once), then one pass through the tape that adds to
-    /// each history the terms with order `k` or 0 of an operand, as in [`ends`].
+    /// each history the terms with order `k` or 0 of an operand ([`recurrence`]).
     #[inline(always)]
     fn order<const FMA: bool>(&mut self, k: usize) {
         assert!(k >= 1 && k <= self.max_order);
