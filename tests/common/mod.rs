@@ -26,14 +26,18 @@ pub fn assert_exit_2(args: &[&str], expected: &str) {
     assert!(!err.contains("panicked"), "{args:?}: {err}");
 }
 
-/// Run `command` with its standard output a pipe whose reader has gone before the command
-/// writes (as `command | head -0`), and collect its exit status and stderr.
+/// Run `command` with its standard output a stream whose reader has gone before the command
+/// writes (as `command | head -0`: every write fails with EPIPE), and collect its exit status
+/// and stderr. The reader is closed before the command starts: dropping a pipe's reader after
+/// the spawn raced with the command's first write (a fast command, on a loaded machine, could
+/// write into the pipe's buffer first, go on, and print its summary to stderr). A connected
+/// socket pair stands in for the pipe (`std::io::pipe` is younger than the crate's MSRV).
 pub fn with_closed_stdout(mut command: Command) -> Output {
-    let mut child = command
-        .stdout(Stdio::piped())
+    let (reader, writer) = std::os::unix::net::UnixStream::pair().expect("a socket pair");
+    drop(reader);
+    command
+        .stdout(Stdio::from(std::os::fd::OwnedFd::from(writer)))
         .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary runs");
-    drop(child.stdout.take());
-    child.wait_with_output().expect("the binary ends")
+        .output()
+        .expect("the binary runs")
 }
