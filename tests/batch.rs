@@ -242,6 +242,55 @@ fn lanes_are_bitwise_the_one_at_a_time_taylor_on_1024_runs() {
     lanes_are_bitwise_the_one_at_a_time_run_on_1024_runs(Method::Taylor, 500);
 }
 
+/// Lanes of different orders side by side: with `rtol = atol / 3` a lane's order is that of
+/// `atol` while its state's norm is at most 3 and that of `rtol` above (`step_tolerance`),
+/// and runs of spin 2 and 8 alternate in the queue, so that busy lanes of both orders step
+/// together (the Horner sums then choose per lane). Every run is bitwise its one-at-a-time
+/// [`Taylor`] run (tolerance zero, as above). The control: both orders occur (the mean order
+/// per step, field evaluations over steps, takes more than one value).
+#[test]
+fn taylor_lanes_of_different_orders_are_bitwise_the_one_at_a_time_runs() {
+    let body = Body::default();
+    let opts = Options {
+        rtol: 1e-10 / 3.0,
+        atol: 1e-10,
+        ..Options::default()
+    };
+    let jobs: Vec<Job<6>> = tilts(64)
+        .into_iter()
+        .enumerate()
+        .map(|(j, tilt)| {
+            let spin = if j % 2 == 0 { 2.0 } else { 8.0 };
+            let y0 = State::from_omega(
+                &body,
+                [tilt.sin(), 0.0, tilt.cos()],
+                [0.5, 0.2, spin],
+                Normalise::Reject,
+            )
+            .unwrap()
+            .to_array();
+            Job {
+                t0: 0.0,
+                y0,
+                t_end: 5.0,
+            }
+        })
+        .collect();
+    let lanes = in_lanes(Method::Taylor, &body, &jobs, &opts);
+    let mut orders = std::collections::BTreeSet::new();
+    for (j, (job, record)) in jobs.iter().zip(&lanes).enumerate() {
+        let alone = one_at_a_time(Method::Taylor, &body, job, &opts);
+        let (_, _, stats, failure) = alone.end.as_ref().unwrap();
+        assert!(failure.is_none(), "run {j} failed");
+        assert!(
+            same_bits(record, &alone),
+            "run {j}: lanes differ from one at a time"
+        );
+        orders.insert(stats.rhs_evals * 1000 / stats.steps);
+    }
+    assert!(orders.len() > 1, "control: one order only, {orders:?}");
+}
+
 /// Each lane keeps its own end time and direction: runs to different ends, forward and
 /// backward, with one that has nothing to do (t_end = t0), mixed in one batch, are each
 /// bitwise their one-at-a-time run.

@@ -190,19 +190,30 @@ impl<const N: usize, const L: usize> TaylorLanes<N, L> {
     /// [`Taylor`](crate::integrate::Taylor), lane by lane).
     fn increments(&self, order: &[usize; L], h: &Lanes<L>) -> [Lanes<L>; N] {
         let top = order.iter().copied().max().unwrap_or(0);
-        std::array::from_fn(|i| {
-            let c = |k: usize| self.tape.state_coefficient(i, k);
-            let mut acc = c(top);
+        let c = |i: usize, k: usize| self.tape.state_coefficient(i, k);
+        let mut acc: [Lanes<L>; N] = std::array::from_fn(|i| c(i, top));
+        if order.iter().all(|&p| p == top) {
+            // Every lane of the same order (the usual case: the order depends only on which
+            // tolerance governs): the same sums without the choice per lane, the components
+            // side by side (independent chains of multiply and add).
             for k in (1..top).rev() {
-                let (ck, next) = (c(k), acc * *h + c(k));
-                acc = Lanes(std::array::from_fn(|l| match k.cmp(&order[l]) {
-                    std::cmp::Ordering::Less => next.0[l],
-                    std::cmp::Ordering::Equal => ck.0[l],
-                    std::cmp::Ordering::Greater => acc.0[l],
-                }));
+                for (i, a) in acc.iter_mut().enumerate() {
+                    *a = *a * *h + c(i, k);
+                }
             }
-            acc * *h
-        })
+        } else {
+            for k in (1..top).rev() {
+                for (i, a) in acc.iter_mut().enumerate() {
+                    let (ck, next) = (c(i, k), *a * *h + c(i, k));
+                    *a = Lanes(std::array::from_fn(|l| match k.cmp(&order[l]) {
+                        std::cmp::Ordering::Less => next.0[l],
+                        std::cmp::Ordering::Equal => ck.0[l],
+                        std::cmp::Ordering::Greater => a.0[l],
+                    }));
+                }
+            }
+        }
+        acc.map(|a| a * *h)
     }
 }
 
