@@ -83,8 +83,8 @@ impl LevelSet {
     /// Move `x` onto the level set (in place): simplified Newton steps
     /// `x <- x - J^T (J J^T)^{-1} (C(x) - c0)` with the Jacobian `J` of the constraints at
     /// the start (automatic differentiation), until the correction is below
-    /// [`CONVERGED`] relative to `x` (its square is then below round-off) or after
-    /// [`NEWTON_ITERATIONS`]; the values after the first step in `f64`. Fixed-size
+    /// 2^-26 relative to `x` (its square is then below round-off) or after two iterations
+    /// (`CONVERGED`, `NEWTON_ITERATIONS`); the values after the first step in `f64`. Fixed-size
     /// arithmetic (no allocation): the constraints a model lacks are rows of zeros, with ones
     /// on the diagonal of `J J^T`.
     pub fn project(&self, x: &mut [f64; 6]) {

@@ -3,9 +3,13 @@
 //! issue 14 (false "near a separatrix" refusals of regular nutations near the axis), and a
 //! property test over 500 random states against DOP853.
 
+// The DOP853 reference and the distance of the sweep of issue 14.
+#[allow(dead_code)]
+#[path = "common/exact_sweep.rs"]
+mod exact_sweep;
+
+use exact_sweep::{distance, dop853_at};
 use routh::body::Body;
-use routh::field::vector_field;
-use routh::integrate::{solve, Options};
 use routh::quadrature::{ExactSolution, Motion};
 use routh::state::{Normalise, State};
 use routh::steady::routh_threshold;
@@ -16,36 +20,6 @@ use routh::RouthError;
 /// rtol 3e-16; docs/quadrature.md, section 7), below the 1e-8 compared here.
 fn dop853(body: &Body, x0: &State, t: f64) -> State {
     dop853_at(body, x0, t, 1e-13)
-}
-
-/// DOP853 at relative tolerance `rtol` (atol `rtol / 100`, compensated summation).
-fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
-    let opts = Options {
-        rtol,
-        atol: 1e-2 * rtol,
-        ..Options::default()
-    };
-    let field = |_t: f64, x: &[f64; 6]| vector_field(body, x);
-    let (_, y, _, _) = solve(
-        &field,
-        0.0,
-        x0.to_array(),
-        t,
-        &opts,
-        None,
-        None,
-        &mut |_, _| {},
-    )
-    .expect("integration");
-    State::from_array(&y)
-}
-
-/// Largest component difference, relative to the size of gamma (1) and of M.
-fn distance(a: &State, b: &State) -> f64 {
-    let m = a.m.iter().fold(0.0_f64, |s, v| s.max(v.abs())).max(1e-300);
-    let dg = (0..3).fold(0.0_f64, |s, i| s.max((a.gamma[i] - b.gamma[i]).abs()));
-    let dm = (0..3).fold(0.0_f64, |s, i| s.max((a.m[i] - b.m[i]).abs()));
-    dg.max(dm / m)
 }
 
 fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {

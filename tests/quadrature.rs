@@ -1,6 +1,12 @@
 //! The exact solution by quadrature against the DOP853 integrator, the nutation period
 //! against the integrator's events, and the degenerate cases.
 
+// The DOP853 reference of the sweep of issue 14.
+#[allow(dead_code)]
+#[path = "common/exact_sweep.rs"]
+mod exact_sweep;
+
+use exact_sweep::dop853_at;
 use routh::body::Body;
 use routh::case::Case;
 use routh::field::vector_field;
@@ -9,28 +15,6 @@ use routh::quadrature::{ExactSolution, Motion, Reduction};
 use routh::state::{Normalise, State};
 use routh::RouthError;
 use std::f64::consts::PI;
-
-/// DOP853 at the given rtol (atol = rtol / 100) from `x0` to `t`.
-fn integrate(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
-    let opts = Options {
-        rtol,
-        atol: 1e-2 * rtol,
-        ..Options::default()
-    };
-    let field = |_t: f64, x: &[f64; 6]| vector_field(body, x);
-    let (_, y, _, _) = solve(
-        &field,
-        0.0,
-        x0.to_array(),
-        t,
-        &opts,
-        None,
-        None,
-        &mut |_, _| {},
-    )
-    .expect("integration");
-    State::from_array(&y)
-}
 
 /// Largest difference of the components of two states, relative to the size of each half.
 fn distance(a: &State, b: &State) -> f64 {
@@ -103,7 +87,7 @@ fn quadrature_agrees_with_dop853_at_10_periods_and_t_1000() {
         // At 10 periods DOP853 at rtol = 1e-13 is accurate to well below 1e-9.
         let d10 = distance(
             &exact.state_at(10.0 * period),
-            &integrate(&body, &x0, 10.0 * period, 1e-13),
+            &dop853_at(&body, &x0, 10.0 * period, 1e-13),
         );
         // At t = 1000 (hundreds of periods) the integrator's own global error at rtol = 1e-13
         // reaches 2e-9 to 1e-7 (the last case passes near the unstable vertical spin); it
@@ -112,7 +96,7 @@ fn quadrature_agrees_with_dop853_at_10_periods_and_t_1000() {
         // comparison uses rtol = 5e-16.
         let d1000 = distance(
             &exact.state_at(1000.0),
-            &integrate(&body, &x0, 1000.0, 5e-16),
+            &dop853_at(&body, &x0, 1000.0, 5e-16),
         );
         println!("{name}: T = {period}, at 10 T: {d10:.2e}, at t = 1000: {d1000:.2e}");
         assert!(d10 < 1e-9, "{name}: {d10:e}");
@@ -127,7 +111,7 @@ fn wrong_integrals_disagree_with_dop853() {
     let mut perturbed = x0;
     perturbed.m[2] *= 1.0 + 1e-7;
     let exact = ExactSolution::new(&body, &perturbed).unwrap();
-    let d = distance(&exact.state_at(100.0), &integrate(&body, &x0, 100.0, 1e-13));
+    let d = distance(&exact.state_at(100.0), &dop853_at(&body, &x0, 100.0, 1e-13));
     assert!(d > 1e-7, "{d:e}");
 }
 
@@ -221,7 +205,7 @@ fn steady_motion_is_a_rotation_about_the_axis() {
     assert_eq!(u1, u2);
     let d = distance(
         &exact.state_at(20.0),
-        &integrate(&body, &steady.state, 20.0, 1e-13),
+        &dop853_at(&body, &steady.state, 20.0, 1e-13),
     );
     assert!(d < 1e-9, "{d:e}");
 }
@@ -256,7 +240,7 @@ fn motion_through_the_axis_agrees_with_dop853() {
     for t in [0.3, nut.period, 10.0 * nut.period + 0.1, 100.0] {
         let q = exact.state_at(t);
         assert!(q.gamma.iter().chain(&q.m).all(|v| v.is_finite()));
-        let d = distance(&q, &integrate(&body, &x0, t, 1e-13));
+        let d = distance(&q, &dop853_at(&body, &x0, t, 1e-13));
         println!("through the axis, t = {t}: {d:.2e}");
         assert!(d < 1e-8, "t = {t}: {d:e}");
     }
@@ -302,7 +286,7 @@ fn near_separatrix_has_a_long_period_that_still_agrees() {
     assert!(separated.is_err());
     let d = distance(
         &exact.state_at(period),
-        &integrate(&body, &x0, period, 1e-13),
+        &dop853_at(&body, &x0, period, 1e-13),
     );
     println!("near the separatrix: T = {period}, {d:.2e}");
     assert!(d < 1e-8, "{d:e}");
@@ -322,7 +306,7 @@ fn asymmetric_body_is_refused() {
 fn negative_times_agree_with_backward_integration() {
     for (name, body, x0) in cases() {
         let exact = ExactSolution::new(&body, &x0).unwrap();
-        let d = distance(&exact.state_at(-7.3), &integrate(&body, &x0, -7.3, 1e-13));
+        let d = distance(&exact.state_at(-7.3), &dop853_at(&body, &x0, -7.3, 1e-13));
         assert!(d < 1e-10, "{name}: {d:e}");
     }
 }
