@@ -126,11 +126,20 @@ impl Method {
     /// [`Method::resolve`] for a run that is `projected` onto the level set of the integrals
     /// or not: [`AUTO_TABLE_PROJECTED`] or [`AUTO_TABLE`] for [`Method::Auto`].
     pub fn resolve_projected(self, tol: f64, projected: bool) -> Method {
-        let table = if projected {
-            &AUTO_TABLE_PROJECTED
-        } else {
-            &AUTO_TABLE
-        };
+        self.resolve_in(
+            tol,
+            if projected {
+                &AUTO_TABLE_PROJECTED
+            } else {
+                &AUTO_TABLE
+            },
+        )
+    }
+
+    /// The method that runs for the tolerance `tol` by the `table` of `(tol_min, method)`
+    /// rows (the first with `tol >= tol_min` wins; the Taylor method below the last) for
+    /// [`Method::Auto`], the method itself otherwise.
+    pub fn resolve_in(self, tol: f64, table: &[(f64, Method)]) -> Method {
         match self {
             Method::Auto => table
                 .iter()

@@ -166,13 +166,7 @@ pub const SWEEP_AUTO_TABLE: [(f64, Method); 1] = [(0.0, Method::Taylor)];
 /// [`Method::Auto`] (the rows then name the method that ran, and `routh simulate` with that
 /// method gives the same numbers), the method itself otherwise.
 pub fn resolve(method: Method, tol: f64) -> Method {
-    match method {
-        Method::Auto => SWEEP_AUTO_TABLE
-            .iter()
-            .find(|(tol_min, _)| tol >= *tol_min)
-            .map_or(Method::Taylor, |&(_, m)| m),
-        other => other,
-    }
+    method.resolve_in(tol, &SWEEP_AUTO_TABLE)
 }
 
 /// Set `path` (`table.key` or `table.key[i]`) of a case document to `value`.
