@@ -449,11 +449,11 @@ pub struct Tape<const N: usize, T = f64> {
     /// The values of the constants, in slot order.
     constants: Vec<f64>,
     /// Coefficients per slot: `coef[s * stride + PAD + k] = x_s^[k]`, `k <= max_order`,
-    /// between `PAD` places on either side, which vector loads of four coefficients may read
+    /// between `PAD` places on either side (and at least [`STRIDE`] places a slot), which vector loads of four coefficients may read
     /// (and discard: [`convolution::histories_avx2`]).
     coef: Vec<T>,
     max_order: usize,
-    /// `PAD + max_order + 1 + PAD`.
+    /// `PAD + max_order + 1 + PAD`, at least [`STRIDE`].
     stride: usize,
     /// The instruction set of the orders `k >= 1` (and whether their multiply-adds fuse).
     isa: Isa,
@@ -470,6 +470,16 @@ pub struct Tape<const N: usize, T = f64> {
 
 /// Places before and after each slot's coefficients (see [`Tape`]).
 pub(super) const PAD: usize = 4;
+
+/// The places of a slot up to order 24, `PAD + 25 + PAD` (orders 20 and below at the
+/// tolerances from 1e-12 down to 2.2e-16): a constant, so that the generated kernels address
+/// every coefficient at a fixed distance from order `k` of the first slot (no product of a slot
+/// by a variable stride per operand: the Taylor lanes and the one-at-a-time Taylor method
+/// run about 5 % faster, BENCHMARKS.md). Odd: with 32 places, slots 2 KiB apart in 8 lanes, the
+/// same order of every slot fell into the same few sets of the L1 cache (the lanes 20 % slower
+/// than with a variable stride). The places above a tape's order are never read; a tape of a
+/// higher order has the places it needs.
+const STRIDE: usize = 33;
 
 impl<const N: usize> Tape<N> {
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
@@ -557,7 +567,7 @@ impl<const N: usize> Tape<N> {
         for (j, &i) in ops.iter().enumerate() {
             slot[i] = first_op + j;
         }
-        let stride = PAD + max_order + 1 + PAD;
+        let stride = (PAD + max_order + 1 + PAD).max(STRIDE);
         let s = |a: u32| (slot[a as usize] * stride + PAD) as u32;
         let code = ops
             .iter()
@@ -885,7 +895,11 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         let stride = self.stride;
         if let Some(kernel) = self.kernel {
             let (c, h, q) = (&mut self.coef[..], &self.hval[..], &self.factors[..]);
-            return kernels::pass::<T, FMA>(kernel, c, stride, k, h, q);
+            return if stride == STRIDE {
+                kernels::pass::<T, FMA>(kernel, c, STRIDE, k, h, q)
+            } else {
+                kernels::pass::<T, FMA>(kernel, c, stride, k, h, q)
+            };
         }
         // Slices held in locals: the stores below cannot make the compiler reload them.
         let (code, c, hval) = (&self.code[..], &mut self.coef[..], &self.hval[..]);
