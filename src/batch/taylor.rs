@@ -8,9 +8,11 @@
 //! on its run, operation for operation: the same recurrences on the same tape (a lane of a
 //! `Tape<N, Lanes<L>>` is bitwise an `f64` tape: [`Coefficient`]), a lane's tape cleared
 //! when its run starts (as a new tape), the same order ([`taylor_order`] of
-//! [`step_tolerance`]) and step size ([`taylor_step`]) from the lane's own coefficients, the
-//! same step control ([`Law::Series`]), Horner sum and compensated update. A lane is therefore **bitwise** the one-at-a-time run: the same steps,
-//! orders, field passes, dense output and final state (tests/batch.rs, 1024 runs).
+//! [`step_tolerance`](crate::integrate::taylor::step_tolerance)) and step size
+//! ([`taylor_step`](crate::integrate::taylor::taylor_step)) from the lane's own coefficients
+//! (the same `SeriesRule`), the same step control ([`Law::Series`]), Horner sum and
+//! compensated update. A lane is therefore **bitwise** the one-at-a-time run: the same
+//! steps, orders, field passes, dense output and final state (tests/batch.rs, 1024 runs).
 //! The lanes of one pass of the tape share its order, the highest of their orders: the
 //! coefficients of the orders below are those of a shorter expansion, bit for bit.
 
@@ -18,7 +20,7 @@ use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Job, Lanes};
 use crate::integrate::taylor::tape::{Coefficient, Isa};
-use crate::integrate::taylor::{max_norm, step_tolerance, taylor_order, taylor_step, Tape};
+use crate::integrate::taylor::{max_norm, taylor_order, SeriesRule, Tape};
 use crate::integrate::{IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
 
 /// The Taylor method in lanes: the tape with the coefficients of every lane and each lane's
@@ -26,6 +28,7 @@ use crate::integrate::{IntegrateError, Law, OdeSystem, Options, Stats, StepContr
 struct TaylorLanes<const N: usize, const L: usize> {
     tape: Tape<N, Lanes<L>>,
     opts: Options,
+    rule: SeriesRule,
     /// The order of each lane's step under way, then of its last accepted step (0: free).
     order: [usize; L],
 }
@@ -61,15 +64,15 @@ pub fn integrate_in<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, const
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
     opts.validate()?;
-    let tape = Tape::record(sys, taylor_order(opts.rtol.min(opts.atol))).ok_or(
-        IntegrateError::Unsupported {
-            method: "taylor",
-            reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
-        },
-    )?;
+    let max_order = taylor_order(opts.rtol.min(opts.atol));
+    let tape = Tape::record(sys, max_order).ok_or(IntegrateError::Unsupported {
+        method: "taylor",
+        reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
+    })?;
     let mut method = TaylorLanes::<N, L> {
         tape: tape.with_coefficients(),
         opts: *opts,
+        rule: SeriesRule::new(opts.rtol, opts.atol, max_order),
         order: [0; L],
     };
     Runs::integrate(&mut method, queue);
@@ -95,9 +98,7 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
         if let Some(control) = &runs.control[l] {
             control.budget()?;
         }
-        let y = lane_of(&runs.y, l);
-        let (eps, _) = step_tolerance(self.opts.rtol, self.opts.atol, max_norm(y.iter().copied()));
-        self.order[l] = taylor_order(eps).min(self.tape.max_order());
+        self.order[l] = self.rule.order(max_norm(lane_of(&runs.y, l).into_iter()));
         Ok(())
     }
 
@@ -133,7 +134,6 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
             runs.control[l].map_or(t_busy, |c| c.t())
         }));
         self.tape.expand(t, &runs.y, top);
-        let (rtol, atol) = (self.opts.rtol, self.opts.atol);
         let mut h = [0.0; L];
         let mut failure: [Option<IntegrateError>; L] = std::array::from_fn(|_| None);
         for l in 0..L {
@@ -143,8 +143,7 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
             let p = order[l];
             control.count_evals(p);
             let norm = |k: usize| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l]));
-            let (eps, scale) = step_tolerance(rtol, atol, norm(0));
-            match control.series_step(taylor_step(eps, p, scale, norm(p - 1), norm(p))) {
+            match control.series_step(self.rule.step(p, norm(0), norm(p - 1), norm(p))) {
                 Ok(hl) => h[l] = hl,
                 Err(e) => failure[l] = Some(e),
             }

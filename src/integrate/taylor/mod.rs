@@ -108,9 +108,72 @@ pub fn taylor_order(eps: f64) -> usize {
 /// `e^(-u p) <= eps e^(-u)`. A pure function of these numbers, so that a batch of lanes can
 /// apply it lane by lane.
 pub fn taylor_step(eps: f64, p: usize, scale: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
+    radius(p, scale, norm_p_minus_1, norm_p) * step_factor(eps, p)
+}
+
+/// The `rho` of [`taylor_step`].
+fn radius(p: usize, scale: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
     let radius = |norm: f64, k: usize| (scale / norm).powf(1.0 / k as f64);
-    let rho = radius(norm_p_minus_1, p - 1).min(radius(norm_p, p));
-    rho * (-step_exponent(eps) - 0.7 / (p - 1) as f64).exp()
+    radius(norm_p_minus_1, p - 1).min(radius(norm_p, p))
+}
+
+/// The factor `e^(-u - 0.7 / (p - 1))` of [`taylor_step`].
+fn step_factor(eps: f64, p: usize) -> f64 {
+    (-step_exponent(eps) - 0.7 / (p - 1) as f64).exp()
+}
+
+/// The adaptive order and step for the tolerances `rtol`, `atol` ([`step_tolerance`],
+/// [`taylor_order`], [`taylor_step`]), with what depends on the tolerance alone computed once:
+/// [`step_tolerance`] chooses one of two tolerances, so there are two orders (each at most the
+/// tape's) and two factors of the step. The same numbers as those functions at every step,
+/// without their logarithm, ceiling and exponential (taken by the one-at-a-time method and by
+/// each lane of the batched one).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SeriesRule {
+    rtol: f64,
+    atol: f64,
+    /// The order and the factor of the step under absolute control (`eps = atol`), then
+    /// under relative control (`eps = rtol`).
+    rules: [(usize, f64); 2],
+}
+
+impl SeriesRule {
+    /// The rule for `rtol`, `atol`, with orders at most `max_order`.
+    pub(crate) fn new(rtol: f64, atol: f64, max_order: usize) -> Self {
+        let rule = |eps: f64| {
+            let p = taylor_order(eps).min(max_order);
+            (p, step_factor(eps, p))
+        };
+        SeriesRule {
+            rtol,
+            atol,
+            rules: [rule(atol), rule(rtol)],
+        }
+    }
+
+    /// The tolerance, scale ([`step_tolerance`]) and rule of a state of size `size`
+    /// (`eps` equal to `atol`: the first rule, which is also the second's if `rtol = atol`).
+    fn at(&self, size: f64) -> (f64, f64, (usize, f64)) {
+        let (eps, scale) = step_tolerance(self.rtol, self.atol, size);
+        (eps, scale, self.rules[usize::from(eps != self.atol)])
+    }
+
+    /// The order of a step from a state of size `size = ||y||_inf`.
+    pub(crate) fn order(&self, size: f64) -> usize {
+        self.at(size).2 .0
+    }
+
+    /// The step (unsigned, [`taylor_step`]) of a series of order `p` from a state of size
+    /// `size`, whose last two coefficients have the norms `norm_p_minus_1` and `norm_p`.
+    pub(crate) fn step(&self, p: usize, size: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
+        let (eps, scale, (order, factor)) = self.at(size);
+        let factor = if p == order {
+            factor
+        } else {
+            step_factor(eps, p)
+        };
+        radius(p, scale, norm_p_minus_1, norm_p) * factor
+    }
 }
 
 /// `||v||_inf`.
@@ -121,8 +184,8 @@ pub(crate) fn max_norm(v: impl Iterator<Item = f64>) -> f64 {
 /// How the order and step are chosen.
 #[derive(Debug, Clone, Copy)]
 enum Control {
-    /// Jorba–Zou with these tolerances.
-    Adaptive { rtol: f64, atol: f64 },
+    /// Jorba–Zou with the tolerances of this rule.
+    Adaptive(SeriesRule),
     /// A fixed order and a fixed step (convergence studies).
     Fixed { order: usize, h: f64 },
 }
@@ -156,10 +219,7 @@ impl<const N: usize> Taylor<N> {
     ) -> Result<Self, IntegrateError> {
         opts.validate()?;
         let max_order = taylor_order(opts.rtol.min(opts.atol));
-        let control = Control::Adaptive {
-            rtol: opts.rtol,
-            atol: opts.atol,
-        };
+        let control = Control::Adaptive(SeriesRule::new(opts.rtol, opts.atol, max_order));
         Self::build(sys, t0, y0, t_end, control, max_order, opts)
     }
 
@@ -224,20 +284,16 @@ impl<const N: usize> Taylor<N> {
     }
 
     /// The step size (unsigned, [`taylor_step`]) for the series just expanded to order `p`.
-    fn step_size(&self, p: usize, rtol: f64, atol: f64) -> f64 {
+    fn step_size(&self, p: usize, rule: &SeriesRule) -> f64 {
         let norm = |k: usize| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k)));
-        let (eps, scale) = step_tolerance(rtol, atol, norm(0));
-        taylor_step(eps, p, scale, norm(p - 1), norm(p))
+        rule.step(p, norm(0), norm(p - 1), norm(p))
     }
 
     /// The order for the current state.
     fn order(&self) -> usize {
         match self.control {
             Control::Fixed { order, .. } => order,
-            Control::Adaptive { rtol, atol, .. } => {
-                let (eps, _) = step_tolerance(rtol, atol, max_norm(self.y.iter().copied()));
-                taylor_order(eps).min(self.tape.max_order())
-            }
+            Control::Adaptive(rule) => rule.order(max_norm(self.y.iter().copied())),
         }
     }
 
@@ -253,7 +309,7 @@ impl<const N: usize> Taylor<N> {
         self.ctl.count_evals(p);
         let h = self.ctl.series_step(match self.control {
             Control::Fixed { h, .. } => h.abs(),
-            Control::Adaptive { rtol, atol } => self.step_size(p, rtol, atol),
+            Control::Adaptive(rule) => self.step_size(p, &rule),
         })?;
         let mut delta = [0.0; N];
         for (i, d) in delta.iter_mut().enumerate() {
@@ -324,5 +380,70 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
 
     fn stats(&self) -> Stats {
         self.ctl.stats()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rule computed once is bitwise [`taylor_order`] of [`step_tolerance`] and
+    /// [`taylor_step`] at every step (tolerance zero: the same expressions, evaluated once),
+    /// over 20,000 random tolerances, sizes, norms and orders: `rtol` above, equal to and
+    /// below `atol`, sizes on both sides of `atol / rtol`, NaN and infinite sizes and norms, a
+    /// zero norm, orders at and away from the rule's own, tapes of lower order than the
+    /// tolerance asks for. Control: the two rules of a pair of different tolerances differ.
+    #[test]
+    fn the_rule_computed_once_is_the_order_and_step_of_every_step() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut uniform = |lo: f64, hi: f64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let specials = [f64::NAN, f64::INFINITY, 0.0];
+        for n in 0..20_000 {
+            let rtol = 10f64.powf(uniform(-16.0, -2.0));
+            let atol = match n % 3 {
+                0 => rtol,
+                _ => 10f64.powf(uniform(-16.0, -2.0)),
+            };
+            let max_order = if n % 7 == 0 { 8 } else { 40 };
+            let rule = SeriesRule::new(rtol, atol, max_order);
+            let mut size = atol / rtol * 10f64.powf(uniform(-3.0, 3.0));
+            let mut norms = [
+                10f64.powf(uniform(-30.0, 5.0)),
+                10f64.powf(uniform(-30.0, 5.0)),
+            ];
+            match n % 50 {
+                0..=2 => size = specials[n % 50],
+                3..=5 => norms[0] = specials[n % 50 - 3],
+                6..=8 => norms[1] = specials[n % 50 - 6],
+                _ => {}
+            }
+            let (eps, scale) = step_tolerance(rtol, atol, size);
+            let order = taylor_order(eps).min(max_order);
+            assert_eq!(
+                rule.order(size),
+                order,
+                "rtol {rtol}, atol {atol}, size {size}"
+            );
+            for p in [order, order + 1, (order - 1).max(2)] {
+                let want = taylor_step(eps, p, scale, norms[0], norms[1]);
+                let got = rule.step(p, size, norms[0], norms[1]);
+                assert_eq!(
+                    got.to_bits(),
+                    want.to_bits(),
+                    "{rtol} {atol} {size} {norms:?} {p}"
+                );
+            }
+        }
+        let rule = SeriesRule::new(1e-12, 1e-6, 40);
+        assert_ne!(rule.order(1.0), rule.order(1e9));
+        assert_ne!(
+            rule.step(14, 1.0, 1.0, 1.0).to_bits(),
+            rule.step(14, 1e9, 1.0, 1.0).to_bits()
+        );
     }
 }
