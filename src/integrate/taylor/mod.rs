@@ -395,13 +395,8 @@ mod tests {
     /// tolerance asks for. Control: the two rules of a pair of different tolerances differ.
     #[test]
     fn the_rule_computed_once_is_the_order_and_step_of_every_step() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut uniform = |lo: f64, hi: f64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::sampling::SplitMix64::new(13);
+        let mut uniform = |lo: f64, hi: f64| rng.uniform(lo, hi);
         let specials = [f64::NAN, f64::INFINITY, 0.0];
         for n in 0..20_000 {
             let rtol = 10f64.powf(uniform(-16.0, -2.0));
