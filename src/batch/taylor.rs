@@ -134,6 +134,15 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
             runs.control[l].map_or(t_busy, |c| c.t())
         }));
         self.tape.expand(t, &runs.y, top);
+        // The norms of the series' orders 0, p - 1 and p, of all lanes at once when the busy
+        // lanes share their order (`max_norm` lane by lane: the same maxima in the same order).
+        let same = (0..L).all(|l| runs.control[l].is_none() || order[l] == top);
+        let norms = |k: usize| {
+            (0..N).fold(Lanes::splat(0.0), |m, i| {
+                m.max(self.tape.state_coefficient(i, k).abs())
+            })
+        };
+        let shared = same.then(|| [norms(0), norms(top - 1), norms(top)]);
         let mut h = [0.0; L];
         let mut failure: [Option<IntegrateError>; L] = std::array::from_fn(|_| None);
         for l in 0..L {
@@ -142,8 +151,12 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
             };
             let p = order[l];
             control.count_evals(p);
-            let norm = |k: usize| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l]));
-            match control.series_step(self.rule.step(p, norm(0), norm(p - 1), norm(p))) {
+            let [n0, n1, n2] = match &shared {
+                Some(n) => n.map(|v| v.0[l]),
+                None => [0, p - 1, p]
+                    .map(|k| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l]))),
+            };
+            match control.series_step(self.rule.step(p, n0, n1, n2)) {
                 Ok(hl) => h[l] = hl,
                 Err(e) => failure[l] = Some(e),
             }
