@@ -281,7 +281,7 @@ mod tests {
     use crate::ball::Ball;
     use crate::batch::Lanes;
     use crate::case::Case;
-    use crate::integrate::taylor::tape::Coefficient;
+    use crate::integrate::taylor::tape::{Coefficient, PAD, STRIDE};
     use crate::simulate::ReducedSystem;
 
     const KERNELS: &str = "src/integrate/taylor/kernels.rs";
@@ -399,97 +399,97 @@ mod tests {
     /// same values, in its order) at every order up to 20 and up to 30 (a tape of order 20 has
     /// the constant stride of `tape::STRIDE`, one of order 30 a longer one, and its histories
     /// of orders 25 and above have a variable order: `convolution`'s `at_constant_order!`),
-    /// from 40 random states for each of
-    /// three bodies of each family (the parameters scaled, keeping the zeros, the ones and the
-    /// equal moments: the same shape, the kernel found by its shape). Negative control: the
-    /// kernel's coefficients from another state differ.
+    /// from 40 random states for each of three bodies of each family (the parameters scaled,
+    /// keeping the zeros, the ones and the equal moments: the same shape, the kernel found by
+    /// its shape). Negative control: the kernel's coefficients from another state differ.
     #[test]
     fn kernels_are_bitwise_the_interpreter() {
-        for p in [20, 30] {
-            let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-            let mut uniform = |lo: f64, hi: f64| {
-                seed ^= seed << 13;
-                seed ^= seed >> 7;
-                seed ^= seed << 17;
-                lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
-            };
-            for (name, family) in families() {
-                for draw in 0..3 {
-                    let mut ball = family;
-                    if draw > 0 {
-                        let f = uniform(0.8, 1.2);
-                        ball.inertia = ball.inertia.map(|i| if i == 1.0 { i } else { i * f });
-                        ball.com = ball.com.map(|c| c * uniform(0.5, 0.9));
-                        ball.gravity *= uniform(0.5, 2.0);
-                        ball.validate().expect("a valid body");
+        kernels_are_bitwise_the_interpreter_to(20);
+        kernels_are_bitwise_the_interpreter_to(30);
+    }
+
+    /// [`kernels_are_bitwise_the_interpreter`] for tapes of order `p`.
+    fn kernels_are_bitwise_the_interpreter_to(p: usize) {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut uniform = |lo: f64, hi: f64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for (name, family) in families() {
+            for draw in 0..3 {
+                let mut ball = family;
+                if draw > 0 {
+                    let f = uniform(0.8, 1.2);
+                    ball.inertia = ball.inertia.map(|i| if i == 1.0 { i } else { i * f });
+                    ball.com = ball.com.map(|c| c * uniform(0.5, 0.9));
+                    ball.gravity *= uniform(0.5, 2.0);
+                    ball.validate().expect("a valid body");
+                }
+                let kernel = Tape::record(&ReducedSystem(&ball), p).expect("records");
+                assert_eq!(kernel.kernel(), Some(name), "{name}: found by its shape");
+                // Order 20 runs the kernels at the constant stride, order 30 at a variable one.
+                assert_eq!(
+                    kernel.stride() == STRIDE,
+                    p + 1 + 2 * PAD <= STRIDE,
+                    "order {p}"
+                );
+                let interpreter = kernel.interpreted();
+                assert_eq!(interpreter.kernel(), None);
+                let mut lanes: [Tape<6, Lanes<8>>; 2] =
+                    [kernel.with_coefficients(), interpreter.with_coefficients()];
+                let mut fours: [Tape<6, Lanes<4>>; 2] =
+                    [kernel.with_coefficients(), interpreter.with_coefficients()];
+                let mut single = [kernel, interpreter];
+                let states: Vec<[f64; 6]> = (0..40)
+                    .map(|_| {
+                        let (u, v) = (uniform(0.0, std::f64::consts::PI), uniform(-3.0, 3.0));
+                        [u.sin() * v.cos(), u.sin() * v.sin(), u.cos()]
+                            .into_iter()
+                            .chain((0..3).map(|_| uniform(-5.0, 5.0)))
+                            .collect::<Vec<_>>()
+                            .try_into()
+                            .expect("six numbers")
+                    })
+                    .collect();
+                for (n, y) in states.iter().enumerate() {
+                    let t = uniform(-10.0, 10.0);
+                    for tape in &mut single {
+                        tape.expand(t, y, p);
                     }
-                    let kernel = Tape::record(&ReducedSystem(&ball), p).expect("records");
-                    assert_eq!(kernel.kernel(), Some(name), "{name}: found by its shape");
+                    let [a, b] = &single;
                     assert_eq!(
-                        kernel.stride() == 33,
-                        p == 20,
-                        "the constant stride below 25"
+                        series_bits(a, p, 0),
+                        series_bits(b, p, 0),
+                        "{name}, state {n}"
                     );
-                    let interpreter = kernel.interpreted();
-                    assert_eq!(interpreter.kernel(), None);
-                    let mut lanes: [Tape<6, Lanes<8>>; 2] =
-                        [kernel.with_coefficients(), interpreter.with_coefficients()];
-                    let mut fours: [Tape<6, Lanes<4>>; 2] =
-                        [kernel.with_coefficients(), interpreter.with_coefficients()];
-                    let mut single = [kernel, interpreter];
-                    let states: Vec<[f64; 6]> = (0..40)
-                        .map(|_| {
-                            let (u, v) = (uniform(0.0, std::f64::consts::PI), uniform(-3.0, 3.0));
-                            [u.sin() * v.cos(), u.sin() * v.sin(), u.cos()]
-                                .into_iter()
-                                .chain((0..3).map(|_| uniform(-5.0, 5.0)))
-                                .collect::<Vec<_>>()
-                                .try_into()
-                                .expect("six numbers")
-                        })
-                        .collect();
-                    for (n, y) in states.iter().enumerate() {
-                        let t = uniform(-10.0, 10.0);
-                        for tape in &mut single {
-                            tape.expand(t, y, p);
+                    let other = states[(n + 1) % states.len()];
+                    let mut control = a.clone();
+                    control.expand(t, &other, p);
+                    assert_ne!(series_bits(&control, p, 0), series_bits(b, p, 0));
+                    let group = (0..8).map(|l| states[(n + l) % states.len()]);
+                    let y8: [Lanes<8>; 6] = std::array::from_fn(|i| {
+                        Lanes(std::array::from_fn(|l| states[(n + l) % states.len()][i]))
+                    });
+                    let y4: [Lanes<4>; 6] =
+                        std::array::from_fn(|i| Lanes(std::array::from_fn(|l| y8[i].0[l])));
+                    for tape in &mut lanes {
+                        tape.expand(Lanes::splat(t), &y8, p);
+                    }
+                    for tape in &mut fours {
+                        tape.expand(Lanes::splat(t), &y4, p);
+                    }
+                    for (l, y) in group.enumerate() {
+                        let mut one = a.clone();
+                        one.expand(t, &y, p);
+                        let want = series_bits(&one, p, 0);
+                        for tape in &lanes {
+                            assert_eq!(series_bits(tape, p, l), want, "{name}, 8 lanes, lane {l}");
                         }
-                        let [a, b] = &single;
-                        assert_eq!(
-                            series_bits(a, p, 0),
-                            series_bits(b, p, 0),
-                            "{name}, state {n}"
-                        );
-                        let other = states[(n + 1) % states.len()];
-                        let mut control = a.clone();
-                        control.expand(t, &other, p);
-                        assert_ne!(series_bits(&control, p, 0), series_bits(b, p, 0));
-                        let group = (0..8).map(|l| states[(n + l) % states.len()]);
-                        let y8: [Lanes<8>; 6] = std::array::from_fn(|i| {
-                            Lanes(std::array::from_fn(|l| states[(n + l) % states.len()][i]))
-                        });
-                        let y4: [Lanes<4>; 6] =
-                            std::array::from_fn(|i| Lanes(std::array::from_fn(|l| y8[i].0[l])));
-                        for tape in &mut lanes {
-                            tape.expand(Lanes::splat(t), &y8, p);
-                        }
-                        for tape in &mut fours {
-                            tape.expand(Lanes::splat(t), &y4, p);
-                        }
-                        for (l, y) in group.enumerate() {
-                            let mut one = a.clone();
-                            one.expand(t, &y, p);
-                            let want = series_bits(&one, p, 0);
-                            for tape in &lanes {
-                                assert_eq!(
-                                    series_bits(tape, p, l),
-                                    want,
-                                    "{name}, 8 lanes, lane {l}"
-                                );
-                            }
-                            if l < 4 {
-                                for tape in &fours {
-                                    assert_eq!(series_bits(tape, p, l), want, "{name}, 4 lanes");
-                                }
+                        if l < 4 {
+                            for tape in &fours {
+                                assert_eq!(series_bits(tape, p, l), want, "{name}, 4 lanes");
                             }
                         }
                     }

@@ -449,8 +449,9 @@ pub struct Tape<const N: usize, T = f64> {
     /// The values of the constants, in slot order.
     constants: Vec<f64>,
     /// Coefficients per slot: `coef[s * stride + PAD + k] = x_s^[k]`, `k <= max_order`,
-    /// between `PAD` places on either side (and at least [`STRIDE`] places a slot), which vector loads of four coefficients may read
-    /// (and discard: [`convolution::histories_avx2`]).
+    /// between `PAD` places on either side (and at least [`STRIDE`] places a slot), which
+    /// vector loads of four coefficients may read (and discard:
+    /// [`convolution::histories_avx2`]).
     coef: Vec<T>,
     max_order: usize,
     /// `PAD + max_order + 1 + PAD`, at least [`STRIDE`].
@@ -479,7 +480,7 @@ pub(super) const PAD: usize = 4;
 /// same order of every slot fell into the same few sets of the L1 cache (the lanes 20 % slower
 /// than with a variable stride). The places above a tape's order are never read; a tape of a
 /// higher order has the places it needs.
-const STRIDE: usize = 33;
+pub(super) const STRIDE: usize = 33;
 
 impl<const N: usize> Tape<N> {
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
