@@ -217,7 +217,8 @@ impl Ball {
     /// (the matrix determinant lemma). `D > 0` because each `m r_i^2 / A_i < r_i^2 / r^2`.
     /// About 45 floating-point operations and a single division, instead of a general 3x3
     /// solve or a division per `A_i` (BENCHMARKS.md). `D det A` is of the size of `A_i^6`:
-    /// finite and normal for `A_i` between 1e-50 and 1e50.
+    /// finite and normal for `A_i` between 1e-50 and 1e50. The form for numbers (`f64`, dual
+    /// numbers, lanes); series take [`Ball::angular_velocity_by_reciprocals`].
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
         let r = self.contact_vector(gamma);
@@ -231,6 +232,34 @@ impl Ball {
         let coupling = dot(&r, &c) * self.m;
         let scale = (det_iq * det_a).recip();
         std::array::from_fn(|i| c[i].mul_add(det_iq, b[i] * coupling) * scale)
+    }
+
+    /// The same `omega = I_Q^{-1} M` as [`Ball::angular_velocity`], by Sherman-Morrison with
+    /// the reciprocals `1 / A_i` themselves:
+    ///
+    /// `omega = A^{-1} M + q A^{-1} r`, `q = m (r, A^{-1} M) / (1 - m (r, A^{-1} r))`
+    ///
+    /// (the denominator is `D / det A > 0`). The form for truncated power series (the Taylor
+    /// method's tape), where a quotient costs one convolution, as a product does: 21
+    /// convolutions on the Routh sphere's tape (`A_1 = A_2`: two reciprocals, one quotient)
+    /// against 29 for the cofactors, the whole field's 36 against 44 (BENCHMARKS.md, "Omega
+    /// by reciprocals"). In `f64` its divisions in a row cost more than the products they
+    /// save (DOP853 one run at a time 12 % slower), hence two forms ([`crate::field`]); they
+    /// agree to round-off (`tests/field_identities.rs`). Each `1 / A_i` is finite for `A_i`
+    /// between 1e-300 and 1e300.
+    #[inline(always)]
+    pub fn angular_velocity_by_reciprocals<D: Scalar>(
+        &self,
+        gamma: &[D; 3],
+        m_vec: &[D; 3],
+    ) -> [D; 3] {
+        let r = self.contact_vector(gamma);
+        let mr2 = dot(&r, &r) * self.m;
+        let inverse: [D; 3] = std::array::from_fn(|i| (mr2 + self.inertia[i]).recip());
+        let ar: [D; 3] = std::array::from_fn(|i| r[i] * inverse[i]);
+        let am: [D; 3] = std::array::from_fn(|i| m_vec[i] * inverse[i]);
+        let q = dot(&r, &am) * self.m / (D::from_f64(1.0) - dot(&r, &ar) * self.m);
+        std::array::from_fn(|i| ar[i].mul_add(q, am[i]))
     }
 
     /// `det I_Q` of (om-m) (the `D` of [`Ball::angular_velocity`]).

@@ -35,14 +35,44 @@
 //! Jacobians). The short form has fewer operations: the Taylor method's tape of the default
 //! case has 42 instead of 56, 32 instead of 40 of them products (its steps 16 % cheaper); in
 //! the `f64` code the latency is unchanged (BENCHMARKS.md, "The field by exact identities").
+//!
+//! # Omega in two forms
+//!
+//! `omega = I_Q^{-1} M` has two closed forms ([`OmegaForm`]), the same function: by cofactors
+//! with one division ([`Ball::angular_velocity`], for numbers: `f64`, dual numbers, lanes) and
+//! by the reciprocals `1 / (I_i + m r^2)` ([`Ball::angular_velocity_by_reciprocals`], for the
+//! Taylor method's tape, where a quotient of series costs one convolution as a product does).
+//! The tape of the default case then has 37 operations and 36 convolutions instead of 42 and 44
+//! (the Taylor lanes about 15 % faster; DOP853 keeps the cofactors, with which it is 12 %
+//! faster one run at a time: BENCHMARKS.md, "Omega by reciprocals"). The two agree to
+//! round-off, values and Jacobians (`tests/field_identities.rs`); each integrator's numbers are
+//! those of its own form, bit for bit across lanes and threads.
 
 use crate::ball::{AsBall, Ball};
 use crate::scalar::{cross, lift, split, Scalar};
 
-/// The field X(x) of (mg-eq) at `x = (gamma, M)`, for a [`Ball`] or a [`crate::Body`].
+/// The field X(x) of (mg-eq) at `x = (gamma, M)`, for a [`Ball`] or a [`crate::Body`], with
+/// `omega` in the form for numbers ([`Ball::angular_velocity`]).
 #[inline(always)]
 pub fn vector_field<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
-    ball_field(&body.ball(), x)
+    vector_field_in(OmegaForm::Cofactors, body, x)
+}
+
+/// Which of two equal closed forms of `omega = I_Q^{-1} M` (om-m) the field computes: the same
+/// function in different arithmetic (they agree to round-off).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OmegaForm {
+    /// [`Ball::angular_velocity`]: one division (numbers: `f64`, dual numbers, lanes).
+    Cofactors,
+    /// [`Ball::angular_velocity_by_reciprocals`]: fewer products, three divisions (truncated
+    /// power series: the Taylor method's tape).
+    Reciprocals,
+}
+
+/// [`vector_field`] with `omega` in the form `form`.
+#[inline(always)]
+pub fn vector_field_in<D: Scalar>(form: OmegaForm, body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
+    ball_field(&body.ball(), x, form)
 }
 
 /// (mg-eq) in the form of the module's documentation. The constants `-m R com` and
@@ -53,9 +83,12 @@ pub fn vector_field<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
 /// tape, and would not fold a zero). The one product of variables per component, `s omega_i`,
 /// is fused with the sum it enters.
 #[inline(always)]
-fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6]) -> [D; 6] {
+fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6], form: OmegaForm) -> [D; 6] {
     let (gamma, m_vec) = split(x);
-    let omega = ball.angular_velocity(&gamma, &m_vec);
+    let omega = match form {
+        OmegaForm::Cofactors => ball.angular_velocity(&gamma, &m_vec),
+        OmegaForm::Reciprocals => ball.angular_velocity_by_reciprocals(&gamma, &m_vec),
+    };
     let gamma_dot = cross(&gamma, &omega);
     // Identity 1: m R dgamma/dt x (omega x r) = s omega, s = (dgamma/dt, -m R com).
     let roll = ball.com.map(|c| -(ball.m * ball.radius) * c);

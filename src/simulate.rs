@@ -526,7 +526,10 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
         crate::field::vector_field(self.0, y)
     }
 
+    /// The same field with `omega` in the form for series
+    /// ([`OmegaForm::Reciprocals`](crate::field::OmegaForm)): fewer convolutions per order.
     fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
-        Some(crate::field::vector_field(self.0, y))
+        use crate::field::{vector_field_in, OmegaForm};
+        Some(vector_field_in(OmegaForm::Reciprocals, self.0, y))
     }
 }

@@ -26,6 +26,10 @@
 //! the observed maximum is printed, and is a few eps. The Jacobians: the same bound with the
 //! sizes differentiated by the product rule (`A_j = |d_j M| |omega| + |M| |d_j omega|`, ...),
 //! 64 eps for the roundings of the dual parts on top.
+//!
+//! The two closed forms of `omega` ([`Ball::angular_velocity`] for numbers,
+//! [`Ball::angular_velocity_by_reciprocals`] for the Taylor tape) are compared the same way,
+//! values and Jacobians, with a bound scaled by the condition of `I_Q`.
 
 use routh::ball::Ball;
 use routh::case::Case;
@@ -315,5 +319,95 @@ fn the_sphere_only_form_agrees_in_value_on_the_sphere() {
             term_size(&ball, &y),
         );
         assert!(d <= 32.0, "at {y:?}: {d}");
+    }
+}
+
+/// Largest `|u_i - v_i| / size` over three components, in eps.
+fn gap3(u: &[f64; 3], v: &[f64; 3], size: f64) -> f64 {
+    (0..3)
+        .map(|i| (u[i] - v[i]).abs() / (size + f64::MIN_POSITIVE) / EPS)
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn the_two_forms_of_omega_agree_to_round_off() {
+    // `omega = I_Q^{-1} M` by cofactors (numbers) and by reciprocals (the Taylor tape): the
+    // same solution of `I_Q omega = M`, each rounded a few ulp backward. `I_Q = I + m (r^2 E
+    // - r r^T)` has its eigenvalues between `I_min` and `I_max + m r^2`, so either form is
+    // within `c eps kappa |M| / I_min` of the exact one, `kappa = (I_max + m r^2) / I_min`
+    // (the one division by `1 - m (r, A^{-1} r)`, about `I_min / (m r^2)` where `r` is long,
+    // loses `kappa` to cancellation). Bound `64 eps kappa |M| / I_min`, the observed maximum
+    // printed; the dual parts (the Jacobian of omega) the same with the sizes differentiated
+    // (`|d M| = 1` in a momentum column, `d (m r^2) = 2 m R |r|` in a gamma column).
+    // Negative control: `I_2` taken for `I_1` in the reciprocals is caught where the moments
+    // differ.
+    let points = points(1500);
+    for (name, ball) in balls() {
+        let (i_min, i_max) = ball
+            .inertia
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &i| {
+                (lo.min(i), hi.max(i))
+            });
+        let mut worst = 0.0f64;
+        let mut worst_dual = 0.0f64;
+        let mut caught = 0;
+        for x in &points {
+            let (gamma, m_vec) = split(x);
+            let r = ball.contact_vector(&gamma);
+            let mr2 = ball.m * dot(&r, &r);
+            let kappa = (i_max + mr2) / i_min;
+            let size = kappa * norm(&m_vec) / i_min;
+            let by_cofactors = ball.angular_velocity(&gamma, &m_vec);
+            let by_reciprocals = ball.angular_velocity_by_reciprocals(&gamma, &m_vec);
+            assert!(
+                by_reciprocals.iter().all(|v| v.is_finite()),
+                "{name} at {x:?}"
+            );
+            let d = gap3(&by_cofactors, &by_reciprocals, size);
+            assert!(d <= 64.0, "{name} at {x:?}: {d} eps of {size}");
+            worst = worst.max(d);
+            let omega = |form: fn(&Ball, &[_; 3], &[_; 3]) -> [_; 3]| {
+                move |y: &[_; 6]| {
+                    let (g, m) = split(y);
+                    let w = form(&ball, &g, &m);
+                    [w[0], w[1], w[2], lift(0.0), lift(0.0), lift(0.0)]
+                }
+            };
+            let (_, jc) = jacobian(omega(Ball::angular_velocity), x);
+            let (_, jr) = jacobian(omega(Ball::angular_velocity_by_reciprocals), x);
+            for j in 0..6 {
+                let dm = if j < 3 { 0.0 } else { 1.0 };
+                let dmr2 = if j < 3 {
+                    2.0 * ball.m * ball.radius * norm(&r)
+                } else {
+                    0.0
+                };
+                let dsize =
+                    kappa * (dm + norm(&m_vec) * dmr2 / i_min) / i_min + (dmr2 / i_min) * size;
+                let col = |m: &nalgebra::SMatrix<f64, 6, 6>| -> [f64; 3] {
+                    std::array::from_fn(|i| m[(i, j)])
+                };
+                let d = gap3(&col(&jc), &col(&jr), dsize);
+                assert!(
+                    d <= 128.0,
+                    "{name} at {x:?}, column {j}: {d} eps of {dsize}"
+                );
+                worst_dual = worst_dual.max(d);
+            }
+            let mut swapped = ball;
+            swapped.inertia[0] = ball.inertia[1];
+            let wrong = swapped.angular_velocity_by_reciprocals(&gamma, &m_vec);
+            if gap3(&wrong, &by_cofactors, size) > 64.0 {
+                caught += 1;
+            }
+        }
+        println!(
+            "{name}: omega's two forms within {worst:.2} eps, their Jacobians within {worst_dual:.2} eps; I_2 for I_1 caught at {caught} of {} points",
+            points.len()
+        );
+        if ball.inertia[0] != ball.inertia[1] {
+            assert!(caught * 3 >= points.len(), "{name}: {caught}");
+        }
     }
 }

@@ -51,7 +51,9 @@ pub trait OdeSystem<const N: usize> {
     /// The same field evaluated on tape variables, which records it for the Taylor method
     /// ([`taylor::Tape`]): a system whose field is written generic over
     /// [`Scalar`](crate::scalar::Scalar) returns `Some(field(t, y))`, the same generic code
-    /// as [`OdeSystem::rhs`]. `None` (the default): the system cannot be recorded.
+    /// as [`OdeSystem::rhs`] (or the same function in a closed form cheaper for series, as
+    /// [`ReducedSystem`](crate::simulate::ReducedSystem) records it). `None` (the default):
+    /// the system cannot be recorded.
     fn record(&self, _t: taylor::Var, _y: &[taylor::Var; N]) -> Option<[taylor::Var; N]> {
         None
     }
