@@ -11,6 +11,14 @@
 //! the same values in the same order, so the coefficients are bitwise the interpreter's (test
 //! below, in `f64` and in lanes).
 //!
+//! Each kernel comes with the tape's **histories** in groups ([`groups`]): the histories of a
+//! group are summed side by side in one loop over the orders `j = 1 .. k-1`, which loads each
+//! coefficient it reads once per `j` for all the products of the group (the state and `omega`
+//! are operands of many), instead of two loads a term in a loop per history. The sums keep
+//! [`super::convolution`]'s order term for term, so they are bitwise the interpreter's too;
+//! the loads per term fall from 2 to 1.36 to 1.42 (by family), and an expansion in 8 lanes to
+//! order 20 takes 1.2x less time (BENCHMARKS.md, "Sweeps").
+//!
 //! A kernel is keyed by the **shape** of its tape ([`shape`]): the operations with their
 //! operand slots, the constants left out. The constants that recording folded (the body's
 //! parameters, such as `m R` or `2 R m G`) are data: the constant slots of the tape's storage,
@@ -110,6 +118,7 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
          //! families in straight-line code (see [`super::codegen`]). Generated: do not edit;\n\
          //! rewrite with `{regenerate}`.\n\
          \n\
+         use super::convolution::{{self, at}};\n\
          use super::recurrence;\n\
          use super::tape::Coefficient;\n\
          \n\
@@ -152,10 +161,215 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
         .expect("writing to a String");
     }
     w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
+    w.push_str(
+        "\n\
+         /// The histories ([`super::convolution`]) at order `k >= 1` of the tape of shape\n\
+         /// `SHAPES[kernel]` into `h`, in slots of `s` coefficients: bitwise\n\
+         /// [`super::convolution::histories`] of the tape's list, in groups that load each\n\
+         /// coefficient once for all the products of the group that read it.\n\
+         #[inline(always)]\n\
+         pub(super) fn histories<T: Coefficient, const FMA: bool>(\n\
+        \x20   kernel: usize,\n\
+        \x20   c: &[T],\n\
+        \x20   s: usize,\n\
+        \x20   k: usize,\n\
+        \x20   h: &mut [T],\n\
+         ) {\n\
+        \x20   match kernel {\n",
+    );
+    for (id, (name, _)) in families.iter().enumerate() {
+        writeln!(
+            w,
+            "        {id} => {name}_histories::<T, FMA>(\n\
+             \x20           c,\n\
+             \x20           s,\n\
+             \x20           k,\n\
+             \x20           h.try_into().expect(\"the histories of the shape\"),\n\
+             \x20       ),"
+        )
+        .expect("writing to a String");
+    }
+    w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
     for (name, tape) in families {
         kernel(&mut w, name, tape);
+        grouped_histories(&mut w, name, tape);
     }
     w
+}
+
+/// The largest number of histories summed together in one group: their sums stay in
+/// registers, with the coefficients loaded for them, in 32 vector registers (with 14, the
+/// compiler spilled them and the expansion in 8 lanes took 2x longer).
+#[cfg(test)]
+const GROUP: usize = 12;
+
+/// The coefficients a loop over the terms of some products loads once per term: `(slot,
+/// false)` for order `j` of an operand on the left, `(slot, true)` for order `k - j` of one on
+/// the right.
+#[cfg(test)]
+fn loads(
+    products: impl Iterator<Item = (usize, usize)>,
+) -> std::collections::BTreeSet<(usize, bool)> {
+    products
+        .flat_map(|(a, b)| [(a, false), (b, true)])
+        .collect()
+}
+
+/// The histories of `list` (as slot numbers `(a, b, second)`) in groups of at most [`GROUP`],
+/// each begun with the first history left and grown by the one that adds the fewest loads
+/// (the first of them in the list on a tie).
+#[cfg(test)]
+fn groups(list: &[Spread]) -> Vec<Vec<usize>> {
+    let cost = |group: &[usize]| {
+        let firsts = loads(group.iter().map(|&i| (list[i].a, list[i].b)));
+        let seconds = loads(
+            group
+                .iter()
+                .filter_map(|&i| list[i].second.map(|(d, e, _)| (d, e))),
+        );
+        firsts.len() + seconds.len()
+    };
+    let mut left: Vec<usize> = (0..list.len()).collect();
+    // As many histories in each group as can be (no group with few sums, whose loop would
+    // wait for the latency of its multiply-adds).
+    let size = list.len().div_ceil(list.len().div_ceil(GROUP).max(1));
+    let mut out = vec![];
+    while !left.is_empty() {
+        let mut group = vec![left.remove(0)];
+        while group.len() < size && !left.is_empty() {
+            let base = cost(&group);
+            let added = |i: usize| {
+                let mut g = group.clone();
+                g.push(i);
+                cost(&g) - base
+            };
+            let best = (0..left.len())
+                .min_by_key(|&n| (added(left[n]), n))
+                .expect("a history left");
+            group.push(left.remove(best));
+        }
+        group.sort_unstable();
+        out.push(group);
+    }
+    out
+}
+
+/// A history with slot numbers for operands ([`super::convolution::History`]).
+#[cfg(test)]
+#[derive(Debug, Clone, Copy)]
+struct Spread {
+    a: usize,
+    b: usize,
+    second: Option<(usize, usize, bool)>,
+}
+
+/// The histories of one family in [`groups`]: for each group, one loop over the terms of its
+/// first products and one over its second products (which the convolution adds after the
+/// first's), each loading the coefficients it reads once per term.
+#[cfg(test)]
+fn grouped_histories<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
+    let stride = tape.stride();
+    let slot = |a: u32| (a as usize - PAD) / stride;
+    let list: Vec<Spread> = tape
+        .history_list()
+        .iter()
+        .map(|h| Spread {
+            a: slot(h.a),
+            b: slot(h.b),
+            second: h.second.map(|(d, e, minus)| (slot(d), slot(e), minus)),
+        })
+        .collect();
+    let slots = 1 + list
+        .iter()
+        .flat_map(|h| {
+            [h.a, h.b]
+                .into_iter()
+                .chain(h.second.into_iter().flat_map(|(d, e, _)| [d, e]))
+        })
+        .max()
+        .unwrap_or(0);
+    let place = |x: usize, order: &str| match x {
+        0 => format!("{PAD} + {order}"),
+        1 => format!("s + {PAD} + {order}"),
+        _ => format!("{x} * s + {PAD} + {order}"),
+    };
+    let mut body = String::new();
+    for group in groups(&list) {
+        let n = group.len();
+        writeln!(
+            body,
+            "    // Histories {group:?}.\n    let ({}) = ({});",
+            group
+                .iter()
+                .map(|i| format!("mut s{i}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            vec!["zero"; n].join(", ")
+        )
+        .expect("writing to a String");
+        let loops: [Vec<(usize, usize, usize, bool)>; 2] = [
+            group
+                .iter()
+                .enumerate()
+                .map(|(m, &i)| (m, list[i].a, list[i].b, false))
+                .collect(),
+            group
+                .iter()
+                .enumerate()
+                .filter_map(|(m, &i)| list[i].second.map(|(d, e, minus)| (m, d, e, minus)))
+                .collect(),
+        ];
+        for terms in loops.iter().filter(|terms| !terms.is_empty()) {
+            let read = loads(terms.iter().map(|&(_, a, b, _)| (a, b)));
+            let names: Vec<String> = read
+                .iter()
+                .map(|&(x, right)| format!("{}{x}", if right { 'b' } else { 'a' }))
+                .collect();
+            let values: Vec<String> = read
+                .iter()
+                .map(|&(x, right)| {
+                    format!("at(c, {})", place(x, if right { "k - j" } else { "j" }))
+                })
+                .collect();
+            writeln!(
+                body,
+                "    for j in 1..k {{\n\
+                 \x20       // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.\n\
+                 \x20       let ({}) = unsafe {{ ({}) }};",
+                names.join(", "),
+                values.join(", ")
+            )
+            .expect("writing to a String");
+            for &(m, a, b, minus) in terms {
+                let (sign, i) = (if minus { "-" } else { "" }, group[m]);
+                writeln!(
+                    body,
+                    "        s{i} = convolution::mul_add::<T, FMA>({sign}a{a}, b{b}, s{i});"
+                )
+                .expect("writing to a String");
+            }
+            body.push_str("    }\n");
+        }
+        for &i in &group {
+            writeln!(body, "    h[{i}] = s{i};").expect("writing to a String");
+        }
+    }
+    writeln!(
+        w,
+        "\n/// The histories of the kernel `{name}` at order `k >= 1` ([`histories`]).\n\
+         #[inline(always)]\n\
+         fn {name}_histories<T: Coefficient, const FMA: bool>(\n\
+        \x20   c: &[T],\n\
+        \x20   s: usize,\n\
+        \x20   k: usize,\n\
+        \x20   h: &mut [T; {}],\n\
+         ) {{\n\
+        \x20   assert!(k + {PAD} <= s && c.len() >= {slots} * s, \"the layout of the shape\");\n\
+        \x20   let zero = T::from_f64(0.0);\n\
+         {body}}}",
+        list.len()
+    )
+    .expect("writing to a String");
 }
 
 /// The kernel of one family.
@@ -353,7 +567,7 @@ mod tests {
 
     /// Every instruction set this CPU has, in `f64` and in 8 lanes, kernel and interpreter:
     /// bitwise the same coefficients as the detected set's for the sets that fuse (AVX2 with
-    /// FMA, AVX-512: the histories of `f64` in one AVX2 register, the lanes' one by one), and
+    /// FMA, AVX-512: the same operations in registers of 1, 4 or 8 doubles), and
     /// for the baseline (products and sums apart) the same in `f64` and in lanes, different
     /// from the fused ones (the negative control: the comparison sees the rounding).
     #[test]
@@ -397,8 +611,8 @@ mod tests {
     /// The generated kernels against the interpreter, in `f64` and in 4 and 8 lanes: bitwise
     /// equal coefficients (tolerance zero: the kernels make the interpreter's calls, with the
     /// same values, in its order) at every order up to 20 and up to 30 (a tape of order 20 has
-    /// the constant stride of `tape::STRIDE`, one of order 30 a longer one, and its histories
-    /// of orders 25 and above have a variable order: `convolution`'s `at_constant_order!`),
+    /// the constant stride of `tape::STRIDE`, one of order 30 a longer one, which the
+    /// generated code takes as a variable),
     /// from 40 random states for each of three bodies of each family (the parameters scaled,
     /// keeping the zeros, the ones and the equal moments: the same shape, the kernel found by
     /// its shape). Negative control: the kernel's coefficients from another state differ.

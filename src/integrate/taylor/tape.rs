@@ -30,8 +30,9 @@
 //! * `w = a b + c` (fused): the product's sum plus `c^[k]`.
 //!
 //! The pass of order `k` first sums, for every product, quotient and square root, the terms
-//! that use only orders `1 .. k-1` (its history, `taylor::convolution`: independent sums, one loop
-//! over all of them), then runs through the tape adding the end terms, which need the order
+//! that use only orders `1 .. k-1` (its history, `taylor::convolution`: independent sums, in
+//! groups that share their loads for the model families, `taylor::codegen`), then runs
+//! through the tape adding the end terms, which need the order
 //! `k` just computed by the operations before (`taylor::recurrence`); for the tapes of the model
 //! families this run is generated straight-line code (`taylor::codegen`), in the
 //! interpreter's arithmetic.
@@ -332,27 +333,6 @@ pub trait Coefficient: Scalar + fmt::Debug + Send + Sync {
     fn lane(&self, l: usize) -> f64;
     /// Sets lane `l` to `v`.
     fn set_lane(&mut self, l: usize, v: f64);
-
-    /// The histories of `list` at order `k >= 1` into `out` (`taylor::convolution`), in
-    /// the instruction set `isa`.
-    ///
-    /// # Safety
-    /// The caller is compiled for `isa`, which the CPU has; `c` is the coefficient storage of
-    /// a tape, `list` its histories, `k <= max_order` and `out.len() >= list.len()` (an
-    /// implementation may read the places around the slots without bounds checks).
-    #[inline(always)]
-    unsafe fn histories<const FMA: bool>(
-        c: &[Self],
-        list: &[History],
-        k: usize,
-        out: &mut [Self],
-        isa: Isa,
-    ) where
-        Self: Sized,
-    {
-        let _ = isa;
-        convolution::histories::<Self, FMA>(c, list, k, out);
-    }
 }
 
 impl Coefficient for f64 {
@@ -371,25 +351,6 @@ impl Coefficient for f64 {
     #[inline(always)]
     fn set_lane(&mut self, _l: usize, v: f64) {
         *self = v;
-    }
-
-    /// Four partial sums in one AVX2 register, four histories reduced together, when the pass
-    /// fuses and the CPU has AVX2 (`convolution::histories_avx2`, bitwise the generic sums).
-    #[inline(always)]
-    unsafe fn histories<const FMA: bool>(
-        c: &[f64],
-        list: &[History],
-        k: usize,
-        out: &mut [f64],
-        isa: Isa,
-    ) {
-        #[cfg(target_arch = "x86_64")]
-        if FMA && isa != Isa::Baseline {
-            // SAFETY: the caller's (the tape's layout gives each slot `PAD` places before
-            // order 0 and `PAD + max_order + 1 - k >= PAD` after order `k - 1`).
-            return unsafe { convolution::histories_avx2(c, list, k, out) };
-        }
-        convolution::histories::<f64, FMA>(c, list, k, out);
     }
 }
 
@@ -449,9 +410,7 @@ pub struct Tape<const N: usize, T = f64> {
     /// The values of the constants, in slot order.
     constants: Vec<f64>,
     /// Coefficients per slot: `coef[s * stride + PAD + k] = x_s^[k]`, `k <= max_order`,
-    /// between `PAD` places on either side (and at least [`STRIDE`] places a slot), which
-    /// vector loads of four coefficients may read (and discard:
-    /// [`convolution::histories_avx2`]).
+    /// between `PAD` places on either side (and at least [`STRIDE`] places a slot).
     coef: Vec<T>,
     max_order: usize,
     /// `PAD + max_order + 1 + PAD`, at least [`STRIDE`].
@@ -469,7 +428,8 @@ pub struct Tape<const N: usize, T = f64> {
     factors: Vec<f64>,
 }
 
-/// Places before and after each slot's coefficients (see [`Tape`]).
+/// Places before and after each slot's coefficients (see [`Tape`]), which nothing reads (the
+/// margin of vector loads that read around a slot, which the histories no longer make).
 pub(super) const PAD: usize = 4;
 
 /// The places of a slot up to order 24, `PAD + 25 + PAD` (orders 20 and below at the
@@ -656,6 +616,13 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     /// The compiled instructions.
     pub(super) fn code(&self) -> &[Instr] {
         &self.code
+    }
+
+    /// The histories of the instructions with a product, quotient or square root
+    /// ([`convolution`]), in the order of [`Tape::code`].
+    #[cfg(test)]
+    pub(super) fn history_list(&self) -> &[History] {
+        &self.hist
     }
 
     /// The slot of the first operation.
@@ -890,10 +857,15 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     #[inline(always)]
     fn order<const FMA: bool>(&mut self, k: usize) {
         assert!(k >= 1 && k <= self.max_order);
-        // SAFETY: `expand` compiles this for `self.isa`, which `Isa::detect` found; `hist`
-        // holds the histories of this tape's `code` and `hval` one value each.
-        unsafe { T::histories::<FMA>(&self.coef, &self.hist, k, &mut self.hval, self.isa) };
         let stride = self.stride;
+        let (c, h) = (&self.coef[..], &mut self.hval[..]);
+        match self.kernel {
+            Some(kernel) if stride == STRIDE => {
+                kernels::histories::<T, FMA>(kernel, c, STRIDE, k, h)
+            }
+            Some(kernel) => kernels::histories::<T, FMA>(kernel, c, stride, k, h),
+            None => convolution::histories::<T, FMA>(c, &self.hist, k, h),
+        }
         if let Some(kernel) = self.kernel {
             let (c, h, q) = (&mut self.coef[..], &self.hval[..], &self.factors[..]);
             return if stride == STRIDE {
@@ -963,10 +935,22 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
 /// The histories ([`convolution`]) of the instructions of `code` with a product, quotient or
 /// square root, in their order; `dest` is where the first instruction's coefficients start,
 /// each next one `stride` further.
+///
+/// An operand that is [`Instr::AddC`] of a slot is read as that slot: its orders from 1 up
+/// are the same numbers (a copy), and the generated histories load a slot's coefficient
+/// once for all the products that read it ([`super::codegen`]).
 fn histories(code: &[Instr], mut dest: u32, stride: usize) -> Vec<History> {
     let mut list = vec![];
+    let mut copies: HashMap<u32, u32> = HashMap::new();
     for instr in code {
-        let one = |a, b| Some(History { a, b, second: None });
+        let source = |a: u32| copies.get(&a).copied().unwrap_or(a);
+        let one = |a, b| {
+            Some(History {
+                a: source(a),
+                b: source(b),
+                second: None,
+            })
+        };
         let history = match *instr {
             Instr::Mul(a, b)
             | Instr::MulAdd(a, b, _)
@@ -974,9 +958,9 @@ fn histories(code: &[Instr], mut dest: u32, stride: usize) -> Vec<History> {
             | Instr::MulMinus(a, b, _)
             | Instr::MinusMul(_, a, b) => one(a, b),
             Instr::DotAdd(a, b, d, e) | Instr::DotSub(a, b, d, e) => Some(History {
-                a,
-                b,
-                second: Some((d, e, matches!(instr, Instr::DotSub(..)))),
+                a: source(a),
+                b: source(b),
+                second: Some((source(d), source(e), matches!(instr, Instr::DotSub(..)))),
             }),
             // sum_{j=1..k-1} b^[j] w^[k-j]
             Instr::Div(_, b) | Instr::CDiv(_, b) => one(b, dest),
@@ -991,6 +975,10 @@ fn histories(code: &[Instr], mut dest: u32, stride: usize) -> Vec<History> {
             | Instr::DivC(..) => None,
         };
         list.extend(history);
+        if let Instr::AddC(a, _) = *instr {
+            let a = source(a);
+            copies.insert(dest, a);
+        }
         dest += stride as u32;
     }
     list
