@@ -177,7 +177,21 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
          ) {\n\
         \x20   match kernel {\n",
     );
-    for (id, (name, _)) in families.iter().enumerate() {
+    // One function for the families whose tapes have the same histories.
+    let histories: Vec<String> = families
+        .iter()
+        .map(|(_, tape)| grouped_histories(tape))
+        .collect();
+    let owner: Vec<usize> = (0..families.len())
+        .map(|i| {
+            histories[..i]
+                .iter()
+                .position(|h| *h == histories[i])
+                .unwrap_or(i)
+        })
+        .collect();
+    for (id, &of) in owner.iter().enumerate() {
+        let name = families[of].0;
         writeln!(
             w,
             "        {id} => {name}_histories::<T, FMA>(\n\
@@ -190,9 +204,23 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
         .expect("writing to a String");
     }
     w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
-    for (name, tape) in families {
+    for (i, (name, tape)) in families.iter().enumerate() {
         kernel(&mut w, name, tape);
-        grouped_histories(&mut w, name, tape);
+        if owner[i] == i {
+            let users: Vec<String> = (0..families.len())
+                .filter(|&j| owner[j] == i)
+                .map(|j| format!("`{}`", families[j].0))
+                .collect();
+            writeln!(
+                w,
+                "\n/// The histories of the kernels {} at order `k >= 1` ([`histories`]).\n\
+                 #[inline(always)]\n\
+                 fn {name}_histories{}",
+                users.join(", "),
+                histories[i]
+            )
+            .expect("writing to a String");
+        }
     }
     w
 }
@@ -266,8 +294,10 @@ struct Spread {
 /// The histories of one family in [`groups`]: for each group, one loop over the terms of its
 /// first products and one over its second products (which the convolution adds after the
 /// first's), each loading the coefficients it reads once per term.
+///
+/// The function without its doc and name, from its generic parameters on.
 #[cfg(test)]
-fn grouped_histories<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
+fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
     let stride = tape.stride();
     let slot = |a: u32| (a as usize - PAD) / stride;
     let list: Vec<Spread> = tape
@@ -354,11 +384,8 @@ fn grouped_histories<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>)
             writeln!(body, "    h[{i}] = s{i};").expect("writing to a String");
         }
     }
-    writeln!(
-        w,
-        "\n/// The histories of the kernel `{name}` at order `k >= 1` ([`histories`]).\n\
-         #[inline(always)]\n\
-         fn {name}_histories<T: Coefficient, const FMA: bool>(\n\
+    format!(
+        "<T: Coefficient, const FMA: bool>(\n\
         \x20   c: &[T],\n\
         \x20   s: usize,\n\
         \x20   k: usize,\n\
@@ -369,7 +396,6 @@ fn grouped_histories<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>)
          {body}}}",
         list.len()
     )
-    .expect("writing to a String");
 }
 
 /// The kernel of one family.

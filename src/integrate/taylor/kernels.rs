@@ -94,7 +94,7 @@ pub(super) fn histories<T: Coefficient, const FMA: bool>(
             k,
             h.try_into().expect("the histories of the shape"),
         ),
-        1 => routh_free_histories::<T, FMA>(
+        1 => routh_histories::<T, FMA>(
             c,
             s,
             k,
@@ -106,7 +106,7 @@ pub(super) fn histories<T: Coefficient, const FMA: bool>(
             k,
             h.try_into().expect("the histories of the shape"),
         ),
-        3 => routh_general_free_histories::<T, FMA>(
+        3 => routh_general_histories::<T, FMA>(
             c,
             s,
             k,
@@ -213,7 +213,7 @@ fn routh<T: Coefficient, const FMA: bool>(
     c[43 * s + 4 + k] = v43;
 }
 
-/// The histories of the kernel `routh` at order `k >= 1` ([`histories`]).
+/// The histories of the kernels `routh`, `routh_free` at order `k >= 1` ([`histories`]).
 #[inline(always)]
 fn routh_histories<T: Coefficient, const FMA: bool>(
     c: &[T],
@@ -389,107 +389,6 @@ fn routh_free<T: Coefficient, const FMA: bool>(
     c[38 * s + 4 + k] = v38;
 }
 
-/// The histories of the kernel `routh_free` at order `k >= 1` ([`histories`]).
-#[inline(always)]
-fn routh_free_histories<T: Coefficient, const FMA: bool>(
-    c: &[T],
-    s: usize,
-    k: usize,
-    h: &mut [T; 27],
-) {
-    assert!(k + 4 <= s && c.len() >= 33 * s, "the layout of the shape");
-    let zero = T::from_f64(0.0);
-    // Histories [0, 1, 2, 3, 4, 5, 6, 7, 8].
-    let (mut s0, mut s1, mut s2, mut s3, mut s4, mut s5, mut s6, mut s7, mut s8) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, b0, a1, a2, b2, a3, a4, a9, b11, b13) = unsafe { (at(c, 4 + j), at(c, 4 + k - j), at(c, s + 4 + j), at(c, 2 * s + 4 + j), at(c, 2 * s + 4 + k - j), at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 9 * s + 4 + j), at(c, 11 * s + 4 + k - j), at(c, 13 * s + 4 + k - j)) };
-        s0 = convolution::mul_add::<T, FMA>(a2, b2, s0);
-        s1 = convolution::mul_add::<T, FMA>(a0, b0, s1);
-        s2 = convolution::mul_add::<T, FMA>(a9, b11, s2);
-        s3 = convolution::mul_add::<T, FMA>(a9, b13, s3);
-        s4 = convolution::mul_add::<T, FMA>(a0, b11, s4);
-        s5 = convolution::mul_add::<T, FMA>(a1, b11, s5);
-        s6 = convolution::mul_add::<T, FMA>(a2, b13, s6);
-        s7 = convolution::mul_add::<T, FMA>(a3, b11, s7);
-        s8 = convolution::mul_add::<T, FMA>(a4, b11, s8);
-    }
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a1, b1) = unsafe { (at(c, s + 4 + j), at(c, s + 4 + k - j)) };
-        s0 = convolution::mul_add::<T, FMA>(a1, b1, s0);
-    }
-    h[0] = s0;
-    h[1] = s1;
-    h[2] = s2;
-    h[3] = s3;
-    h[4] = s4;
-    h[5] = s5;
-    h[6] = s6;
-    h[7] = s7;
-    h[8] = s8;
-    // Histories [9, 11, 13, 14, 15, 16, 17, 24, 25].
-    let (mut s9, mut s11, mut s13, mut s14, mut s15, mut s16, mut s17, mut s24, mut s25) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, a5, b13, a14, b14, a15, a16, b17, a24, b25, a26, a27, b32) = unsafe { (at(c, 4 + j), at(c, 5 * s + 4 + j), at(c, 13 * s + 4 + k - j), at(c, 14 * s + 4 + j), at(c, 14 * s + 4 + k - j), at(c, 15 * s + 4 + j), at(c, 16 * s + 4 + j), at(c, 17 * s + 4 + k - j), at(c, 24 * s + 4 + j), at(c, 25 * s + 4 + k - j), at(c, 26 * s + 4 + j), at(c, 27 * s + 4 + j), at(c, 32 * s + 4 + k - j)) };
-        s9 = convolution::mul_add::<T, FMA>(a5, b13, s9);
-        s11 = convolution::mul_add::<T, FMA>(a0, b17, s11);
-        s13 = convolution::mul_add::<T, FMA>(a0, b14, s13);
-        s14 = convolution::mul_add::<T, FMA>(a24, b25, s14);
-        s15 = convolution::mul_add::<T, FMA>(a14, b25, s15);
-        s16 = convolution::mul_add::<T, FMA>(a15, b25, s16);
-        s17 = convolution::mul_add::<T, FMA>(a16, b25, s17);
-        s24 = convolution::mul_add::<T, FMA>(a26, b32, s24);
-        s25 = convolution::mul_add::<T, FMA>(a27, b32, s25);
-    }
-    h[9] = s9;
-    h[11] = s11;
-    h[13] = s13;
-    h[14] = s14;
-    h[15] = s15;
-    h[16] = s16;
-    h[17] = s17;
-    h[24] = s24;
-    h[25] = s25;
-    // Histories [10, 12, 18, 19, 20, 21, 22, 23, 26].
-    let (mut s10, mut s12, mut s18, mut s19, mut s20, mut s21, mut s22, mut s23, mut s26) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, a1, a2, a3, a4, a5, b16, b19, b26, b27, a28, b28, b32) = unsafe { (at(c, 4 + j), at(c, s + 4 + j), at(c, 2 * s + 4 + j), at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 5 * s + 4 + j), at(c, 16 * s + 4 + k - j), at(c, 19 * s + 4 + k - j), at(c, 26 * s + 4 + k - j), at(c, 27 * s + 4 + k - j), at(c, 28 * s + 4 + j), at(c, 28 * s + 4 + k - j), at(c, 32 * s + 4 + k - j)) };
-        s10 = convolution::mul_add::<T, FMA>(a2, b19, s10);
-        s12 = convolution::mul_add::<T, FMA>(a2, b16, s12);
-        s18 = convolution::mul_add::<T, FMA>(a1, b28, s18);
-        s19 = convolution::mul_add::<T, FMA>(a2, b26, s19);
-        s20 = convolution::mul_add::<T, FMA>(a0, b27, s20);
-        s21 = convolution::mul_add::<T, FMA>(a4, b28, s21);
-        s22 = convolution::mul_add::<T, FMA>(a5, b26, s22);
-        s23 = convolution::mul_add::<T, FMA>(a3, b27, s23);
-        s26 = convolution::mul_add::<T, FMA>(a28, b32, s26);
-    }
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, a1, a2, a3, a4, a5, b15, b18, b26, b27, b28) = unsafe { (at(c, 4 + j), at(c, s + 4 + j), at(c, 2 * s + 4 + j), at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 5 * s + 4 + j), at(c, 15 * s + 4 + k - j), at(c, 18 * s + 4 + k - j), at(c, 26 * s + 4 + k - j), at(c, 27 * s + 4 + k - j), at(c, 28 * s + 4 + k - j)) };
-        s10 = convolution::mul_add::<T, FMA>(a1, b18, s10);
-        s12 = convolution::mul_add::<T, FMA>(a1, b15, s12);
-        s18 = convolution::mul_add::<T, FMA>(-a2, b27, s18);
-        s19 = convolution::mul_add::<T, FMA>(-a0, b28, s19);
-        s20 = convolution::mul_add::<T, FMA>(-a1, b26, s20);
-        s21 = convolution::mul_add::<T, FMA>(-a5, b27, s21);
-        s22 = convolution::mul_add::<T, FMA>(-a3, b28, s22);
-        s23 = convolution::mul_add::<T, FMA>(-a4, b26, s23);
-    }
-    h[10] = s10;
-    h[12] = s12;
-    h[18] = s18;
-    h[19] = s19;
-    h[20] = s20;
-    h[21] = s21;
-    h[22] = s22;
-    h[23] = s23;
-    h[26] = s26;
-}
-
 /// The pass of order `k >= 1` of the kernel `routh_general`.
 #[inline(always)]
 fn routh_general<T: Coefficient, const FMA: bool>(
@@ -587,7 +486,7 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     c[49 * s + 4 + k] = v49;
 }
 
-/// The histories of the kernel `routh_general` at order `k >= 1` ([`histories`]).
+/// The histories of the kernels `routh_general`, `routh_general_free` at order `k >= 1` ([`histories`]).
 #[inline(always)]
 fn routh_general_histories<T: Coefficient, const FMA: bool>(
     c: &[T],
@@ -775,107 +674,6 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     c[44 * s + 4 + k] = v44;
 }
 
-/// The histories of the kernel `routh_general_free` at order `k >= 1` ([`histories`]).
-#[inline(always)]
-fn routh_general_free_histories<T: Coefficient, const FMA: bool>(
-    c: &[T],
-    s: usize,
-    k: usize,
-    h: &mut [T; 27],
-) {
-    assert!(k + 4 <= s && c.len() >= 39 * s, "the layout of the shape");
-    let zero = T::from_f64(0.0);
-    // Histories [0, 1, 2, 3, 4, 5, 6, 7, 8].
-    let (mut s0, mut s1, mut s2, mut s3, mut s4, mut s5, mut s6, mut s7, mut s8) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a3, a4, a7, b7, a8, a9, b9, a13, b15, b17) = unsafe { (at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 7 * s + 4 + j), at(c, 7 * s + 4 + k - j), at(c, 8 * s + 4 + j), at(c, 9 * s + 4 + j), at(c, 9 * s + 4 + k - j), at(c, 13 * s + 4 + j), at(c, 15 * s + 4 + k - j), at(c, 17 * s + 4 + k - j)) };
-        s0 = convolution::mul_add::<T, FMA>(a9, b9, s0);
-        s1 = convolution::mul_add::<T, FMA>(a7, b7, s1);
-        s2 = convolution::mul_add::<T, FMA>(a13, b15, s2);
-        s3 = convolution::mul_add::<T, FMA>(a13, b17, s3);
-        s4 = convolution::mul_add::<T, FMA>(a7, b15, s4);
-        s5 = convolution::mul_add::<T, FMA>(a8, b15, s5);
-        s6 = convolution::mul_add::<T, FMA>(a9, b17, s6);
-        s7 = convolution::mul_add::<T, FMA>(a3, b15, s7);
-        s8 = convolution::mul_add::<T, FMA>(a4, b15, s8);
-    }
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a8, b8) = unsafe { (at(c, 8 * s + 4 + j), at(c, 8 * s + 4 + k - j)) };
-        s0 = convolution::mul_add::<T, FMA>(a8, b8, s0);
-    }
-    h[0] = s0;
-    h[1] = s1;
-    h[2] = s2;
-    h[3] = s3;
-    h[4] = s4;
-    h[5] = s5;
-    h[6] = s6;
-    h[7] = s7;
-    h[8] = s8;
-    // Histories [9, 11, 13, 14, 15, 16, 17, 24, 25].
-    let (mut s9, mut s11, mut s13, mut s14, mut s15, mut s16, mut s17, mut s24, mut s25) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a5, a7, b17, a18, b18, a19, a20, b21, a30, b31, a32, a33, b38) = unsafe { (at(c, 5 * s + 4 + j), at(c, 7 * s + 4 + j), at(c, 17 * s + 4 + k - j), at(c, 18 * s + 4 + j), at(c, 18 * s + 4 + k - j), at(c, 19 * s + 4 + j), at(c, 20 * s + 4 + j), at(c, 21 * s + 4 + k - j), at(c, 30 * s + 4 + j), at(c, 31 * s + 4 + k - j), at(c, 32 * s + 4 + j), at(c, 33 * s + 4 + j), at(c, 38 * s + 4 + k - j)) };
-        s9 = convolution::mul_add::<T, FMA>(a5, b17, s9);
-        s11 = convolution::mul_add::<T, FMA>(a7, b21, s11);
-        s13 = convolution::mul_add::<T, FMA>(a7, b18, s13);
-        s14 = convolution::mul_add::<T, FMA>(a30, b31, s14);
-        s15 = convolution::mul_add::<T, FMA>(a18, b31, s15);
-        s16 = convolution::mul_add::<T, FMA>(a19, b31, s16);
-        s17 = convolution::mul_add::<T, FMA>(a20, b31, s17);
-        s24 = convolution::mul_add::<T, FMA>(a32, b38, s24);
-        s25 = convolution::mul_add::<T, FMA>(a33, b38, s25);
-    }
-    h[9] = s9;
-    h[11] = s11;
-    h[13] = s13;
-    h[14] = s14;
-    h[15] = s15;
-    h[16] = s16;
-    h[17] = s17;
-    h[24] = s24;
-    h[25] = s25;
-    // Histories [10, 12, 18, 19, 20, 21, 22, 23, 26].
-    let (mut s10, mut s12, mut s18, mut s19, mut s20, mut s21, mut s22, mut s23, mut s26) = (zero, zero, zero, zero, zero, zero, zero, zero, zero);
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, a1, a2, a3, a4, a5, a9, b20, b23, b32, b33, a34, b34, b38) = unsafe { (at(c, 4 + j), at(c, s + 4 + j), at(c, 2 * s + 4 + j), at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 5 * s + 4 + j), at(c, 9 * s + 4 + j), at(c, 20 * s + 4 + k - j), at(c, 23 * s + 4 + k - j), at(c, 32 * s + 4 + k - j), at(c, 33 * s + 4 + k - j), at(c, 34 * s + 4 + j), at(c, 34 * s + 4 + k - j), at(c, 38 * s + 4 + k - j)) };
-        s10 = convolution::mul_add::<T, FMA>(a9, b23, s10);
-        s12 = convolution::mul_add::<T, FMA>(a9, b20, s12);
-        s18 = convolution::mul_add::<T, FMA>(a1, b34, s18);
-        s19 = convolution::mul_add::<T, FMA>(a2, b32, s19);
-        s20 = convolution::mul_add::<T, FMA>(a0, b33, s20);
-        s21 = convolution::mul_add::<T, FMA>(a4, b34, s21);
-        s22 = convolution::mul_add::<T, FMA>(a5, b32, s22);
-        s23 = convolution::mul_add::<T, FMA>(a3, b33, s23);
-        s26 = convolution::mul_add::<T, FMA>(a34, b38, s26);
-    }
-    for j in 1..k {
-        // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.
-        let (a0, a1, a2, a3, a4, a5, a8, b19, b22, b32, b33, b34) = unsafe { (at(c, 4 + j), at(c, s + 4 + j), at(c, 2 * s + 4 + j), at(c, 3 * s + 4 + j), at(c, 4 * s + 4 + j), at(c, 5 * s + 4 + j), at(c, 8 * s + 4 + j), at(c, 19 * s + 4 + k - j), at(c, 22 * s + 4 + k - j), at(c, 32 * s + 4 + k - j), at(c, 33 * s + 4 + k - j), at(c, 34 * s + 4 + k - j)) };
-        s10 = convolution::mul_add::<T, FMA>(a8, b22, s10);
-        s12 = convolution::mul_add::<T, FMA>(a8, b19, s12);
-        s18 = convolution::mul_add::<T, FMA>(-a2, b33, s18);
-        s19 = convolution::mul_add::<T, FMA>(-a0, b34, s19);
-        s20 = convolution::mul_add::<T, FMA>(-a1, b32, s20);
-        s21 = convolution::mul_add::<T, FMA>(-a5, b33, s21);
-        s22 = convolution::mul_add::<T, FMA>(-a3, b34, s22);
-        s23 = convolution::mul_add::<T, FMA>(-a4, b32, s23);
-    }
-    h[10] = s10;
-    h[12] = s12;
-    h[18] = s18;
-    h[19] = s19;
-    h[20] = s20;
-    h[21] = s21;
-    h[22] = s22;
-    h[23] = s23;
-    h[26] = s26;
-}
-
 /// The pass of order `k >= 1` of the kernel `chaplygin`.
 #[inline(always)]
 fn chaplygin<T: Coefficient, const FMA: bool>(
@@ -945,7 +743,7 @@ fn chaplygin<T: Coefficient, const FMA: bool>(
     c[35 * s + 4 + k] = v35;
 }
 
-/// The histories of the kernel `chaplygin` at order `k >= 1` ([`histories`]).
+/// The histories of the kernels `chaplygin` at order `k >= 1` ([`histories`]).
 #[inline(always)]
 fn chaplygin_histories<T: Coefficient, const FMA: bool>(
     c: &[T],
@@ -1173,7 +971,7 @@ fn ball<T: Coefficient, const FMA: bool>(
     c[64 * s + 4 + k] = v64;
 }
 
-/// The histories of the kernel `ball` at order `k >= 1` ([`histories`]).
+/// The histories of the kernels `ball` at order `k >= 1` ([`histories`]).
 #[inline(always)]
 fn ball_histories<T: Coefficient, const FMA: bool>(
     c: &[T],
