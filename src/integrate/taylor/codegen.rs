@@ -35,7 +35,9 @@
 
 use std::fmt::Write;
 
-use super::tape::{Instr, Tape, PAD};
+#[cfg(test)]
+use super::tape::PAD;
+use super::tape::{Instr, Tape};
 
 /// The operation of an instruction, its operand slots and whether it has an inline constant.
 fn parts(instr: &Instr) -> (&'static str, Vec<u32>, bool) {
@@ -64,13 +66,12 @@ fn parts(instr: &Instr) -> (&'static str, Vec<u32>, bool) {
 /// operand slots, `#` for an inline constant), one per line. Two tapes of the same shape run
 /// the same kernel.
 pub fn shape<const N: usize>(tape: &Tape<N>) -> String {
-    let stride = tape.stride() as u32;
     let mut text = format!("n {N} first {}\n", tape.first_op());
     for instr in tape.code() {
         let (name, operands, constant) = parts(instr);
         text.push_str(name);
         for a in operands {
-            write!(text, " {}", (a - PAD as u32) / stride).expect("writing to a String");
+            write!(text, " {}", tape.slot_of(a)).expect("writing to a String");
         }
         if constant {
             text.push_str(" #");
@@ -298,8 +299,7 @@ struct Spread {
 /// The function without its doc and name, from its generic parameters on.
 #[cfg(test)]
 fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
-    let stride = tape.stride();
-    let slot = |a: u32| (a as usize - PAD) / stride;
+    let slot = |a: u32| tape.slot_of(a);
     let list: Vec<Spread> = tape
         .history_list()
         .iter()
@@ -318,11 +318,6 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
         })
         .max()
         .unwrap_or(0);
-    let place = |x: usize, order: &str| match x {
-        0 => format!("{PAD} + {order}"),
-        1 => format!("s + {PAD} + {order}"),
-        _ => format!("{x} * s + {PAD} + {order}"),
-    };
     let mut body = String::new();
     for group in groups(&list) {
         let n = group.len();
@@ -340,13 +335,11 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
         let loops: [Vec<(usize, usize, usize, bool)>; 2] = [
             group
                 .iter()
-                .enumerate()
-                .map(|(m, &i)| (m, list[i].a, list[i].b, false))
+                .map(|&i| (i, list[i].a, list[i].b, false))
                 .collect(),
             group
                 .iter()
-                .enumerate()
-                .filter_map(|(m, &i)| list[i].second.map(|(d, e, minus)| (m, d, e, minus)))
+                .filter_map(|&i| list[i].second.map(|(d, e, minus)| (i, d, e, minus)))
                 .collect(),
         ];
         for terms in loops.iter().filter(|terms| !terms.is_empty()) {
@@ -358,7 +351,8 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
             let values: Vec<String> = read
                 .iter()
                 .map(|&(x, right)| {
-                    format!("at(c, {})", place(x, if right { "k - j" } else { "j" }))
+                    let order = if right { "k - j" } else { "j" };
+                    format!("at(c, {} + {order})", place(x))
                 })
                 .collect();
             writeln!(
@@ -370,8 +364,8 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
                 values.join(", ")
             )
             .expect("writing to a String");
-            for &(m, a, b, minus) in terms {
-                let (sign, i) = (if minus { "-" } else { "" }, group[m]);
+            for &(i, a, b, minus) in terms {
+                let sign = if minus { "-" } else { "" };
                 writeln!(
                     body,
                     "        s{i} = convolution::mul_add::<T, FMA>({sign}a{a}, b{b}, s{i});"
@@ -398,17 +392,22 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
     )
 }
 
+/// Where order 0 of slot `x` is in the coefficients of a generated function (`s` the stride).
+#[cfg(test)]
+fn place(x: usize) -> String {
+    match x {
+        0 => format!("{PAD}"),
+        1 => format!("s + {PAD}"),
+        _ => format!("{x} * s + {PAD}"),
+    }
+}
+
 /// The kernel of one family.
 #[cfg(test)]
 fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
-    let stride = tape.stride() as u32;
     let first = tape.first_op();
-    let slot = |a: u32| ((a - PAD as u32) / stride) as usize;
-    let at = |x: usize| match x {
-        0 => format!("c[{PAD}"),
-        1 => format!("c[s + {PAD}"),
-        _ => format!("c[{x} * s + {PAD}"),
-    };
+    let slot = |a: u32| tape.slot_of(a);
+    let at = |x: usize| format!("c[{}", place(x));
     // Order 0 and order k of a slot: a local for an operation of this pass.
     let zero = |a: u32| format!("{}]", at(slot(a)));
     let order_k = |a: u32| {

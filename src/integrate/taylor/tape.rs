@@ -630,7 +630,14 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         self.first_op
     }
 
+    /// The slot of the coefficient at `at` in the coefficient storage (as the instructions'
+    /// operands are written: order 0 of the slot).
+    pub(super) fn slot_of(&self, at: u32) -> usize {
+        (at as usize - PAD) / self.stride
+    }
+
     /// The number of places of a slot.
+    #[cfg(test)]
     pub(super) fn stride(&self) -> usize {
         self.stride
     }
@@ -858,22 +865,19 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     fn order<const FMA: bool>(&mut self, k: usize) {
         assert!(k >= 1 && k <= self.max_order);
         let stride = self.stride;
-        let (c, h) = (&self.coef[..], &mut self.hval[..]);
-        match self.kernel {
-            Some(kernel) if stride == STRIDE => {
-                kernels::histories::<T, FMA>(kernel, c, STRIDE, k, h)
-            }
-            Some(kernel) => kernels::histories::<T, FMA>(kernel, c, stride, k, h),
-            None => convolution::histories::<T, FMA>(c, &self.hist, k, h),
-        }
         if let Some(kernel) = self.kernel {
-            let (c, h, q) = (&mut self.coef[..], &self.hval[..], &self.factors[..]);
-            return if stride == STRIDE {
-                kernels::pass::<T, FMA>(kernel, c, STRIDE, k, h, q)
+            let (c, h, q) = (&mut self.coef[..], &mut self.hval[..], &self.factors[..]);
+            // Twice, so that one copy has the usual stride as a constant.
+            if stride == STRIDE {
+                kernels::histories::<T, FMA>(kernel, c, STRIDE, k, h);
+                kernels::pass::<T, FMA>(kernel, c, STRIDE, k, h, q);
             } else {
-                kernels::pass::<T, FMA>(kernel, c, stride, k, h, q)
-            };
+                kernels::histories::<T, FMA>(kernel, c, stride, k, h);
+                kernels::pass::<T, FMA>(kernel, c, stride, k, h, q);
+            }
+            return;
         }
+        convolution::histories::<T, FMA>(&self.coef, &self.hist, k, &mut self.hval);
         // Slices held in locals: the stores below cannot make the compiler reload them.
         let (code, c, hval) = (&self.code[..], &mut self.coef[..], &self.hval[..]);
         let mut histories = hval.iter().copied();
