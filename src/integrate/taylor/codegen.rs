@@ -19,6 +19,13 @@
 //! the loads per term fall from 2 to 1.36 to 1.42 (by family), and an expansion in 8 lanes to
 //! order 20 takes 1.2x less time (BENCHMARKS.md, "Sweeps").
 //!
+//! With 32 vector registers (AVX-512; the const parameter `WIDE`), the loop of an even order
+//! `k` also sums the terms of order `k + 1` that it can (`j = 2 .. k-1`, the right operand's
+//! order `k + 1 - j` loaded one `j` before), and the odd order adds the two end terms: half
+//! the loads a term again, an expansion in 8 lanes to order 20 1.16x faster, in `f64` 1.13x.
+//! With 16 (AVX2, SSE2) the sums of two orders do not fit, and the loops sum one order at a
+//! time in the same order of the terms.
+//!
 //! A kernel is keyed by the **shape** of its tape ([`shape`]): the operations with their
 //! operand slots, the constants left out. The constants that recording folded (the body's
 //! parameters, such as `m R` or `2 R m G`) are data: the constant slots of the tape's storage,
@@ -169,12 +176,13 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
          /// [`super::convolution::histories`] of the tape's list, in groups that load each\n\
          /// coefficient once for all the products of the group that read it.\n\
          #[inline(always)]\n\
-         pub(super) fn histories<T: Coefficient, const FMA: bool>(\n\
+         pub(super) fn histories<T: Coefficient, const FMA: bool, const WIDE: bool>(\n\
         \x20   kernel: usize,\n\
         \x20   c: &[T],\n\
         \x20   s: usize,\n\
         \x20   k: usize,\n\
         \x20   h: &mut [T],\n\
+        \x20   g: &mut [T],\n\
          ) {\n\
         \x20   match kernel {\n",
     );
@@ -195,11 +203,12 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
         let name = families[of].0;
         writeln!(
             w,
-            "        {id} => {name}_histories::<T, FMA>(\n\
+            "        {id} => {name}_histories::<T, FMA, WIDE>(\n\
              \x20           c,\n\
              \x20           s,\n\
              \x20           k,\n\
              \x20           h.try_into().expect(\"the histories of the shape\"),\n\
+             \x20           g.try_into().expect(\"the histories of the shape\"),\n\
              \x20       ),"
         )
         .expect("writing to a String");
@@ -227,8 +236,12 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
 }
 
 /// The largest number of histories summed together in one group: their sums stay in
-/// registers, with the coefficients loaded for them, in 32 vector registers (with 14, the
-/// compiler spilled them and the expansion in 8 lanes took 2x longer).
+/// registers, with the coefficients loaded for them (with 14, the compiler spilled them and
+/// the expansion in 8 lanes took 2x longer). With the sums of two orders (`2 n` sums for `n`
+/// histories) and 32 vector registers (AVX-512), the same groups (9 for the Routh sphere's
+/// 27) hold; in 16 (AVX2, SSE2) they spilled (the expansion in 4 lanes with AVX2 took 1.5x
+/// longer), and groups of 4 were 1.1x slower than one order at a time (8 sums wait for the
+/// latency of their multiply-adds), hence one order at a time there.
 #[cfg(test)]
 const GROUP: usize = 12;
 
@@ -244,11 +257,11 @@ fn loads(
         .collect()
 }
 
-/// The histories of `list` (as slot numbers `(a, b, second)`) in groups of at most [`GROUP`],
+/// The histories of `list` (as slot numbers `(a, b, second)`) in groups of at most `limit`,
 /// each begun with the first history left and grown by the one that adds the fewest loads
 /// (the first of them in the list on a tie).
 #[cfg(test)]
-fn groups(list: &[Spread]) -> Vec<Vec<usize>> {
+fn groups(list: &[Spread], limit: usize) -> Vec<Vec<usize>> {
     let cost = |group: &[usize]| {
         let firsts = loads(group.iter().map(|&i| (list[i].a, list[i].b)));
         let seconds = loads(
@@ -261,7 +274,7 @@ fn groups(list: &[Spread]) -> Vec<Vec<usize>> {
     let mut left: Vec<usize> = (0..list.len()).collect();
     // As many histories in each group as can be (no group with few sums, whose loop would
     // wait for the latency of its multiply-adds).
-    let size = list.len().div_ceil(list.len().div_ceil(GROUP).max(1));
+    let size = list.len().div_ceil(list.len().div_ceil(limit).max(1));
     let mut out = vec![];
     while !left.is_empty() {
         let mut group = vec![left.remove(0)];
@@ -292,9 +305,13 @@ struct Spread {
     second: Option<(usize, usize, bool)>,
 }
 
-/// The histories of one family in [`groups`]: for each group, one loop over the terms of its
-/// first products and one over its second products (which the convolution adds after the
-/// first's), each loading the coefficients it reads once per term.
+/// The histories of one family in [`groups`], two orders at a time
+/// ([`super::convolution`]'s order of the terms). At an even order `k`, for each group, one
+/// loop over the terms of its first products and one over its second products (which the
+/// convolution adds after the first's), each loading the coefficients it reads once per term,
+/// sum the terms of order `k` (the histories `h`) and the terms `j = 2 .. k-2` of order `k + 1`
+/// (into `g`), the latter from the right operands loaded one `j` before. At an odd order, `h`
+/// is `g` plus the end terms.
 ///
 /// The function without its doc and name, from its generic parameters on.
 #[cfg(test)]
@@ -318,18 +335,85 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
         })
         .max()
         .unwrap_or(0);
+    // Odd orders, two at a time: the sums of `g` and the end terms.
+    let mut ends = String::new();
+    for (i, h) in list.iter().enumerate() {
+        writeln!(
+            ends,
+            "        let mut e = g[{i}];\n{}        h[{i}] = e;",
+            end_terms(h, "e", 2)
+        )
+        .expect("writing to a String");
+    }
+    // One more level of indentation, in a branch.
+    let indent = |body: String| -> String { body.lines().map(|l| format!("    {l}\n")).collect() };
+    let wide = indent(sums(&list, GROUP, true));
+    let narrow = indent(sums(&list, GROUP, false));
+    format!(
+        "<T: Coefficient, const FMA: bool, const WIDE: bool>(\n\
+        \x20   c: &[T],\n\
+        \x20   s: usize,\n\
+        \x20   k: usize,\n\
+        \x20   h: &mut [T; {n}],\n\
+        \x20   g: &mut [T; {n}],\n\
+         ) {{\n\
+        \x20   assert!(k + {PAD} <= s && c.len() >= {slots} * s, \"the layout of the shape\");\n\
+        \x20   let zero = T::from_f64(0.0);\n\
+        \x20   if k == 1 {{\n\
+        \x20       h.fill(zero);\n\
+        \x20       return;\n\
+        \x20   }}\n\
+        \x20   let even = k % 2 == 0;\n\
+        \x20   if !WIDE {{\n\
+        \x20       let (lo, hi) = if even {{ (1, k) }} else {{ (2, k - 1) }};\n\
+         {narrow}\
+        \x20   }} else if even {{\n\
+         {wide}\
+        \x20   }} else {{\n\
+        \x20       // SAFETY: the assertion above, with `1 <= k - 1`.\n\
+        \x20       unsafe {{\n\
+         {ends}\
+        \x20       }}\n\
+        \x20   }}\n\
+         }}",
+        n = list.len()
+    )
+}
+
+/// The loops of [`grouped_histories`] in groups of at most `limit`: if `paired`, at an even
+/// order, the sums of the orders `k` (into `h`) and `k + 1` (into `g`); else the histories of
+/// the order `k` alone (into `h`): the terms `j` in `lo..hi` (all of them at an even order,
+/// those between the end terms at an odd order), then at an odd order the end terms.
+#[cfg(test)]
+fn sums(list: &[Spread], limit: usize, paired: bool) -> String {
+    // A tuple, or its one element alone (no parentheses around it).
+    let tuple = |v: &[String]| match v {
+        [one] => one.clone(),
+        _ => format!("({})", v.join(", ")),
+    };
     let mut body = String::new();
-    for group in groups(&list) {
-        let n = group.len();
+    for group in groups(list, limit) {
+        let sums: Vec<String> = group
+            .iter()
+            .flat_map(|i| {
+                let s = format!("mut s{i}");
+                if paired {
+                    vec![s, format!("mut t{i}")]
+                } else {
+                    vec![s]
+                }
+            })
+            .collect();
+        let what = if paired {
+            ": `s` of order `k`, `t` of order `k + 1`"
+        } else {
+            ""
+        };
         writeln!(
             body,
-            "    // Histories {group:?}.\n    let ({}) = ({});",
-            group
-                .iter()
-                .map(|i| format!("mut s{i}"))
-                .collect::<Vec<_>>()
-                .join(", "),
-            vec!["zero"; n].join(", ")
+            "    // Histories {group:?}{what}.\n    let {} = {};",
+            tuple(&sums),
+            tuple(&vec!["zero".to_string(); sums.len()])
         )
         .expect("writing to a String");
         let loops: [Vec<(usize, usize, usize, bool)>; 2] = [
@@ -348,48 +432,116 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
                 .iter()
                 .map(|&(x, right)| format!("{}{x}", if right { 'b' } else { 'a' }))
                 .collect();
-            let values: Vec<String> = read
-                .iter()
-                .map(|&(x, right)| {
-                    let order = if right { "k - j" } else { "j" };
-                    format!("at(c, {} + {order})", place(x))
-                })
-                .collect();
-            writeln!(
-                body,
-                "    for j in 1..k {{\n\
-                 \x20       // SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.\n\
-                 \x20       let ({}) = unsafe {{ ({}) }};",
-                names.join(", "),
-                values.join(", ")
-            )
-            .expect("writing to a String");
-            for &(i, a, b, minus) in terms {
-                let sign = if minus { "-" } else { "" };
+            let values = |j: &str| -> Vec<String> {
+                read.iter()
+                    .map(|&(x, right)| {
+                        let order = if right {
+                            format!("k - {j}")
+                        } else {
+                            j.to_string()
+                        };
+                        format!("at(c, {} + {order})", place(x))
+                    })
+                    .collect()
+            };
+            let add = |body: &mut String, sum: char, right: char| {
+                for &(i, a, b, minus) in terms {
+                    let line = term(
+                        &format!("{sum}{i}"),
+                        &format!("a{a}"),
+                        &format!("{right}{b}"),
+                        minus,
+                    );
+                    writeln!(body, "        {line}").expect("writing to a String");
+                }
+            };
+            let load = "// SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.";
+            if !paired {
                 writeln!(
                     body,
-                    "        s{i} = convolution::mul_add::<T, FMA>({sign}a{a}, b{b}, s{i});"
+                    "    for j in lo..hi {{\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
+                    names.join(", "),
+                    values("j").join(", ")
                 )
                 .expect("writing to a String");
+                add(&mut body, 's', 'b');
+                body.push_str("    }\n");
+                continue;
             }
-            body.push_str("    }\n");
+            // The first term apart: order `k + 1` has no term `j = 1` here.
+            let (carried, right_names): (Vec<String>, Vec<String>) = read
+                .iter()
+                .filter(|r| r.1)
+                .map(|r| (format!("p{}", r.0), format!("b{}", r.0)))
+                .unzip();
+            let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
+            writeln!(
+                body,
+                "    let {} = {{\n        let j = 1;\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
+                tuple(&mutable),
+                names.join(", "),
+                values("j").join(", ")
+            )
+            .expect("writing to a String");
+            add(&mut body, 's', 'b');
+            writeln!(
+                body,
+                "        {}\n    }};\n    for j in 2..k {{\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
+                tuple(&right_names),
+                names.join(", "),
+                values("j").join(", ")
+            )
+            .expect("writing to a String");
+            add(&mut body, 's', 'b');
+            add(&mut body, 't', 'p');
+            writeln!(
+                body,
+                "        {} = {};\n    }}",
+                tuple(&carried),
+                tuple(&right_names)
+            )
+            .expect("writing to a String");
+        }
+        if !paired {
+            body.push_str("    if !even {\n        // SAFETY: the assertion above, with `1 <= k - 1`.\n        unsafe {\n");
+            for &i in &group {
+                body.push_str(&end_terms(&list[i], &format!("s{i}"), 3));
+            }
+            body.push_str("        }\n    }\n");
         }
         for &i in &group {
             writeln!(body, "    h[{i}] = s{i};").expect("writing to a String");
+            if paired {
+                writeln!(body, "    g[{i}] = t{i};").expect("writing to a String");
+            }
         }
     }
-    format!(
-        "<T: Coefficient, const FMA: bool>(\n\
-        \x20   c: &[T],\n\
-        \x20   s: usize,\n\
-        \x20   k: usize,\n\
-        \x20   h: &mut [T; {}],\n\
-         ) {{\n\
-        \x20   assert!(k + {PAD} <= s && c.len() >= {slots} * s, \"the layout of the shape\");\n\
-        \x20   let zero = T::from_f64(0.0);\n\
-         {body}}}",
-        list.len()
-    )
+    body
+}
+
+/// The statements adding to the sum `sum` the end terms `j = 1, k-1` of the history `h`
+/// (those of its first product, then those of its second), indented by `depth` levels.
+#[cfg(test)]
+fn end_terms(h: &Spread, sum: &str, depth: usize) -> String {
+    let mut out = String::new();
+    for (a, b, minus) in [(h.a, h.b, false)].into_iter().chain(h.second) {
+        for (ja, jb) in [("1", "k - 1"), ("k - 1", "1")] {
+            let (x, y) = (
+                format!("at(c, {} + {ja})", place(a)),
+                format!("at(c, {} + {jb})", place(b)),
+            );
+            writeln!(out, "{}{}", "    ".repeat(depth), term(sum, &x, &y, minus))
+                .expect("writing to a String");
+        }
+    }
+    out
+}
+
+/// The statement adding the term `(±a) b` to the sum `sum` (`-a` if `minus`).
+#[cfg(test)]
+fn term(sum: &str, a: &str, b: &str, minus: bool) -> String {
+    let sign = if minus { "-" } else { "" };
+    format!("{sum} = convolution::mul_add::<T, FMA>({sign}{a}, {b}, {sum});")
 }
 
 /// Where order 0 of slot `x` is in the coefficients of a generated function (`s` the stride).

@@ -12,11 +12,22 @@
 //! same coefficients in one loop, which loads each coefficient once for all of them.
 //!
 //! The order of the arithmetic, the same for every [`Coefficient`] type, instruction set and
-//! way of running: a history is one sum, zero to start with, of the terms `j = 1, ..., k-1` in
-//! that order, each as `s <- a^[j] b^[k-j] + s` (a fused multiply-add if the pass fuses); a
-//! second product (`a b ± d e`) adds its terms to the same sum after the first's, with `-d`
-//! for a difference (exact). A lane of [`Lanes`](crate::batch::Lanes) therefore computes
-//! bitwise the `f64` history, and the generated histories bitwise [`histories`].
+//! way of running: a history is one sum, zero to start with, of its terms, each added as
+//! `s <- a^[j] b^[k-j] + s` (a fused multiply-add if the pass fuses); a second product
+//! (`a b ± d e`) adds its terms to the same sum after the first's, with `-d` for a difference
+//! (exact). The terms come in this order:
+//! * at an even order `k` (and at `k = 1`, no term): `j = 1, ..., k-1`;
+//! * at an odd order `k >= 3`: first the terms `j = 2, ..., k-2` (of both products), then the
+//!   two end terms `j = 1, k-1` of the first product and those of the second.
+//!
+//! The odd orders are so ordered for the generated histories ([`super::codegen`]), which sum
+//! the terms of two orders in one loop: at an even order `k` the loop loads `a^[j]` and
+//! `b^[k-j]` for the terms of order `k`, and the `b^[k+1-j]` it loaded one `j` before makes
+//! the term `a^[j] b^[k+1-j]` of order `k + 1` (`j >= 2`): two terms for every two loads, half
+//! the loads of a loop over one order. The end terms of order `k + 1` need the order `k`,
+//! which the pass of order `k` computes after the loop: the pass of order `k + 1` adds them.
+//! A lane of [`Lanes`](crate::batch::Lanes) therefore computes bitwise the `f64` history, and
+//! the generated histories bitwise [`histories`].
 
 use super::tape::Coefficient;
 
@@ -42,33 +53,50 @@ pub fn histories<T: Coefficient, const FMA: bool>(
     out: &mut [T],
 ) {
     for (h, v) in list.iter().zip(out.iter_mut()) {
-        let mut s = terms::<T, FMA, false>(c, h.a as usize, h.b as usize, k, T::from_f64(0.0));
-        if let Some((d, e, minus)) = h.second {
-            s = if minus {
-                terms::<T, FMA, true>(c, d as usize, e as usize, k, s)
-            } else {
-                terms::<T, FMA, false>(c, d as usize, e as usize, k, s)
-            };
-        }
-        *v = s;
+        let zero = T::from_f64(0.0);
+        *v = if k % 2 == 0 || k < 3 {
+            products::<T, FMA>(c, h, k, 1..k, zero)
+        } else {
+            let middle = products::<T, FMA>(c, h, k, 2..k - 1, zero);
+            products::<T, FMA>(c, h, k, [1, k - 1], middle)
+        };
     }
 }
 
-/// `s` plus the terms `(±a^[j]) b^[k-j]`, `j = 1 .. k-1` (`-a` if `MINUS`), in order.
+/// `s` plus the terms `j` of `js` (in order) of the first product of `h`, then those of its
+/// second.
+#[inline(always)]
+fn products<T: Coefficient, const FMA: bool>(
+    c: &[T],
+    h: &History,
+    k: usize,
+    js: impl IntoIterator<Item = usize> + Clone,
+    s: T,
+) -> T {
+    let mut s = terms::<T, FMA, false>(c, h.a as usize, h.b as usize, k, js.clone(), s);
+    if let Some((d, e, minus)) = h.second {
+        s = if minus {
+            terms::<T, FMA, true>(c, d as usize, e as usize, k, js, s)
+        } else {
+            terms::<T, FMA, false>(c, d as usize, e as usize, k, js, s)
+        };
+    }
+    s
+}
+
+/// `s` plus the terms `(±a^[j]) b^[k-j]`, `j` in `js` (each in `1 ..= k-1`), in order (`-a`
+/// if `MINUS`).
 #[inline(always)]
 fn terms<T: Coefficient, const FMA: bool, const MINUS: bool>(
     c: &[T],
     a: usize,
     b: usize,
     k: usize,
+    js: impl IntoIterator<Item = usize>,
     mut s: T,
 ) -> T {
-    if k < 2 {
-        return s;
-    }
-    // Orders 1 .. k-1 of `a`, and of `b` backwards.
-    let (xs, ys) = (&c[a + 1..a + k], &c[b + 1..b + k]);
-    for (&x, &y) in xs.iter().zip(ys.iter().rev()) {
+    for j in js {
+        let (x, y) = (c[a + j], c[b + k - j]);
         s = mul_add::<T, FMA>(if MINUS { -x } else { x }, y, s);
     }
     s

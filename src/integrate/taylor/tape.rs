@@ -363,8 +363,8 @@ pub enum Isa {
     Baseline,
     /// AVX2 and FMA: four doubles a register, fused multiply-adds in the orders `k >= 1`.
     Avx2Fma,
-    /// AVX-512F with AVX2 and FMA: eight doubles a register, fused multiply-adds in the orders
-    /// `k >= 1`.
+    /// AVX-512F and VL with AVX2 and FMA: eight doubles a register and 32 registers for
+    /// every width (VL: for 1, 2 and 4 doubles too), fused multiply-adds in the orders `k >= 1`.
     Avx512,
 }
 
@@ -375,7 +375,7 @@ impl Isa {
         {
             use std::arch::is_x86_feature_detected as has;
             if has!("avx2") && has!("fma") {
-                return if has!("avx512f") {
+                return if has!("avx512f") && has!("avx512vl") {
                     Isa::Avx512
                 } else {
                     Isa::Avx2Fma
@@ -422,6 +422,9 @@ pub struct Tape<const N: usize, T = f64> {
     hist: Vec<History>,
     /// Their values at the order of the pass under way.
     hval: Vec<T>,
+    /// The terms of the next order that the generated histories summed with those of an even
+    /// order ([`super::codegen`]).
+    hnext: Vec<T>,
     /// The generated kernel of the tape's shape, if there is one ([`super::codegen`]).
     kernel: Option<usize>,
     /// The factors and divisors the kernel takes ([`super::codegen::factors`]).
@@ -569,6 +572,7 @@ impl<const N: usize> Tape<N> {
             isa: Isa::detect(),
             hist: vec![],
             hval: vec![],
+            hnext: vec![],
             kernel: None,
             factors: vec![],
         };
@@ -604,6 +608,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             isa: self.isa,
             hist: self.hist.clone(),
             hval: vec![zero; self.hist.len()],
+            hnext: vec![zero; self.hist.len()],
             kernel: self.kernel,
             factors: self.factors.clone(),
         };
@@ -716,26 +721,33 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             Isa::Avx2Fma => return unsafe { self.expand_avx2_fma(t, y, p) },
             Isa::Baseline => {}
         }
-        self.expand_with::<false>(t, y, p);
+        self.expand_with::<false, false>(t, y, p);
     }
 
     /// [`Tape::expand`] compiled for AVX2 and FMA.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     fn expand_avx2_fma(&mut self, t: T, y: &[T; N], p: usize) {
-        self.expand_with::<true>(t, y, p);
+        self.expand_with::<true, false>(t, y, p);
     }
 
-    /// [`Tape::expand`] compiled for AVX-512F (and AVX2, FMA).
+    /// [`Tape::expand`] compiled for AVX-512F and VL (and AVX2, FMA).
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx2,fma")]
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     fn expand_avx512(&mut self, t: T, y: &[T; N], p: usize) {
-        self.expand_with::<true>(t, y, p);
+        // The histories of two orders at a time in `f64` and 8 lanes; one at a time in 4 lanes
+        // (in registers of 4 doubles this Zen 4 loads two a cycle: the loads saved did not
+        // pay, 1.12x slower at order 15; BENCHMARKS.md, "Sweeps").
+        if T::WIDTH == 4 {
+            self.expand_with::<true, false>(t, y, p);
+        } else {
+            self.expand_with::<true, true>(t, y, p);
+        }
     }
 
     /// [`Tape::expand`], with fused multiply-adds in the orders `k >= 1` if `FMA`.
     #[inline(always)]
-    fn expand_with<const FMA: bool>(&mut self, t: T, y: &[T; N], p: usize) {
+    fn expand_with<const FMA: bool, const WIDE: bool>(&mut self, t: T, y: &[T; N], p: usize) {
         assert!(
             p <= self.max_order,
             "order {p} above the tape's {}",
@@ -746,7 +758,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             if k == 0 {
                 self.order_zero();
             } else {
-                self.order::<FMA>(k);
+                self.order::<FMA, WIDE>(k);
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..N {
@@ -862,17 +874,18 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     /// `1 .. k-1`, for all operations at once), then one pass through the tape that adds to
     /// each history the terms with order `k` or 0 of an operand ([`recurrence`]).
     #[inline(always)]
-    fn order<const FMA: bool>(&mut self, k: usize) {
+    fn order<const FMA: bool, const WIDE: bool>(&mut self, k: usize) {
         assert!(k >= 1 && k <= self.max_order);
         let stride = self.stride;
         if let Some(kernel) = self.kernel {
             let (c, h, q) = (&mut self.coef[..], &mut self.hval[..], &self.factors[..]);
+            let g = &mut self.hnext[..];
             // Twice, so that one copy has the usual stride as a constant.
             if stride == STRIDE {
-                kernels::histories::<T, FMA>(kernel, c, STRIDE, k, h);
+                kernels::histories::<T, FMA, WIDE>(kernel, c, STRIDE, k, h, g);
                 kernels::pass::<T, FMA>(kernel, c, STRIDE, k, h, q);
             } else {
-                kernels::histories::<T, FMA>(kernel, c, stride, k, h);
+                kernels::histories::<T, FMA, WIDE>(kernel, c, stride, k, h, g);
                 kernels::pass::<T, FMA>(kernel, c, stride, k, h, q);
             }
             return;
