@@ -305,13 +305,13 @@ struct Spread {
     second: Option<(usize, usize, bool)>,
 }
 
-/// The histories of one family in [`groups`], two orders at a time
-/// ([`super::convolution`]'s order of the terms). At an even order `k`, for each group, one
-/// loop over the terms of its first products and one over its second products (which the
-/// convolution adds after the first's), each loading the coefficients it reads once per term,
-/// sum the terms of order `k` (the histories `h`) and the terms `j = 2 .. k-2` of order `k + 1`
-/// (into `g`), the latter from the right operands loaded one `j` before. At an odd order, `h`
-/// is `g` plus the end terms.
+/// The histories of one family in [`groups`] ([`super::convolution`]'s order of the terms).
+/// With `WIDE`, at an even order `k`, for each group, one loop over the terms of its first
+/// products and one over its second products (which the convolution adds after the first's),
+/// each loading the coefficients it reads once per term, sum the terms of order `k` (the
+/// histories `h`) and the terms `j = 2 .. k-1` of order `k + 1` (into `g`), the latter from the
+/// right operands loaded one `j` before; at an odd order, `h` is `g` plus the end terms.
+/// Without, the same loops sum one order at a time ([`sums`]).
 ///
 /// The function without its doc and name, from its generic parameters on.
 #[cfg(test)]
@@ -432,18 +432,13 @@ fn sums(list: &[Spread], limit: usize, paired: bool) -> String {
                 .iter()
                 .map(|&(x, right)| format!("{}{x}", if right { 'b' } else { 'a' }))
                 .collect();
-            let values = |j: &str| -> Vec<String> {
-                read.iter()
-                    .map(|&(x, right)| {
-                        let order = if right {
-                            format!("k - {j}")
-                        } else {
-                            j.to_string()
-                        };
-                        format!("at(c, {} + {order})", place(x))
-                    })
-                    .collect()
-            };
+            let values: Vec<String> = read
+                .iter()
+                .map(|&(x, right)| {
+                    let order = if right { "k - j" } else { "j" };
+                    format!("at(c, {} + {order})", place(x))
+                })
+                .collect();
             let add = |body: &mut String, sum: char, right: char| {
                 for &(i, a, b, minus) in terms {
                     let line = term(
@@ -455,15 +450,16 @@ fn sums(list: &[Spread], limit: usize, paired: bool) -> String {
                     writeln!(body, "        {line}").expect("writing to a String");
                 }
             };
-            let load = "// SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.";
+            // The coefficients of the group's terms at `j`, loaded once.
+            let load = format!(
+                "// SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.\n        \
+                 let ({}) = unsafe {{ ({}) }};",
+                names.join(", "),
+                values.join(", ")
+            );
             if !paired {
-                writeln!(
-                    body,
-                    "    for j in lo..hi {{\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
-                    names.join(", "),
-                    values("j").join(", ")
-                )
-                .expect("writing to a String");
+                writeln!(body, "    for j in lo..hi {{\n        {load}")
+                    .expect("writing to a String");
                 add(&mut body, 's', 'b');
                 body.push_str("    }\n");
                 continue;
@@ -477,19 +473,15 @@ fn sums(list: &[Spread], limit: usize, paired: bool) -> String {
             let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
             writeln!(
                 body,
-                "    let {} = {{\n        let j = 1;\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
-                tuple(&mutable),
-                names.join(", "),
-                values("j").join(", ")
+                "    let {} = {{\n        let j = 1;\n        {load}",
+                tuple(&mutable)
             )
             .expect("writing to a String");
             add(&mut body, 's', 'b');
             writeln!(
                 body,
-                "        {}\n    }};\n    for j in 2..k {{\n        {load}\n        let ({}) = unsafe {{ ({}) }};",
-                tuple(&right_names),
-                names.join(", "),
-                values("j").join(", ")
+                "        {}\n    }};\n    for j in 2..k {{\n        {load}",
+                tuple(&right_names)
             )
             .expect("writing to a String");
             add(&mut body, 's', 'b');
