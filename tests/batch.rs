@@ -6,6 +6,7 @@
 //! middle of every step, of the final state, and equal counters.
 
 use routh::batch::{self, Job, LaneEnd, Queue, LANES};
+use routh::integrate::taylor::tape::Isa;
 use routh::integrate::{
     drive, Control, Dop853, Drive, IntegrateError, Method, Options, Stats, Stepper, Taylor,
 };
@@ -82,6 +83,22 @@ fn integrate(
     match method {
         Method::Dop853 => batch::integrate::<_, _, 6, LANES>(&sys, opts, queue),
         Method::Taylor => batch::taylor::integrate(&sys, opts, queue),
+        other => panic!("no lanes for {other}"),
+    }
+}
+
+/// The runs of `queue` in `LANES` lanes of `method`, the loop of the lanes compiled for `isa`.
+fn integrate_on(
+    isa: Isa,
+    method: Method,
+    body: &Body,
+    opts: &Options,
+    queue: &mut Recorder,
+) -> Result<(), IntegrateError> {
+    let sys = ReducedSystem(body);
+    match method {
+        Method::Dop853 => batch::integrate_on::<_, _, 6, LANES>(isa, &sys, opts, queue),
+        Method::Taylor => batch::taylor::integrate_in_on::<_, _, 6, LANES>(isa, &sys, opts, queue),
         other => panic!("no lanes for {other}"),
     }
 }
@@ -240,6 +257,32 @@ fn lanes_are_bitwise_the_one_at_a_time_dop853_on_1024_runs() {
 #[test]
 fn lanes_are_bitwise_the_one_at_a_time_taylor_on_1024_runs() {
     lanes_are_bitwise_the_one_at_a_time_run_on_1024_runs(Method::Taylor, 500);
+}
+
+/// The loop of the lanes compiled for each instruction set this CPU has (the baseline, AVX2
+/// with FMA, AVX-512: `Runs::integrate`): every lane is bitwise its one-at-a-time run in
+/// each (64 runs to t = 10 at 1e-12; tolerance zero, as above: the sets differ in the width
+/// of the registers, not in the operations). The negative control is
+/// `the_comparison_sees_a_different_run`.
+#[test]
+fn lanes_are_bitwise_the_one_at_a_time_runs_under_every_instruction_set() {
+    let body = Body::default();
+    let opts = options(1e-12);
+    let jobs = runs(&body, 64, 10.0);
+    let sets = [Isa::Baseline, Isa::Avx2Fma, Isa::Avx512];
+    for method in [Method::Dop853, Method::Taylor] {
+        let alone: Vec<Record> = jobs
+            .iter()
+            .map(|job| one_at_a_time(method, &body, job, &opts))
+            .collect();
+        for isa in sets.into_iter().filter(|isa| isa.available()) {
+            let mut queue = Recorder::new(jobs.clone());
+            integrate_on(isa, method, &body, &opts, &mut queue).unwrap();
+            for (j, (record, alone)) in queue.records.iter().zip(&alone).enumerate() {
+                assert!(same_bits(record, alone), "{method} under {isa:?}: run {j}");
+            }
+        }
+    }
 }
 
 /// Lanes of different orders side by side: with `rtol = atol / 3` a lane's order is that of

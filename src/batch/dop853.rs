@@ -15,6 +15,7 @@ use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Field, Job, Lanes};
 use crate::integrate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
+use crate::integrate::taylor::tape::Isa;
 use crate::integrate::{
     rk_start, scaled_error, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper,
 };
@@ -115,6 +116,18 @@ pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
+    integrate_on::<F, Q, N, L>(Isa::detect(), field, opts, queue)
+}
+
+/// [`integrate`] with the loop of the lanes compiled for the instruction set `isa` (one this
+/// CPU has, [`Isa::available`]; `integrate` takes the widest): the same numbers, bit for bit,
+/// in every set (tests/batch.rs).
+pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
+    isa: Isa,
+    field: &F,
+    opts: &Options,
+    queue: &mut Q,
+) -> Result<(), IntegrateError> {
     opts.validate()?;
     let zero = [Lanes::splat(0.0); N];
     let mut method = Dop853Lanes::<F, N, L> {
@@ -123,7 +136,7 @@ pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
         f: zero,
         k: [zero; 16],
     };
-    Runs::integrate(&mut method, queue);
+    Runs::integrate(isa, &mut method, queue);
     Ok(())
 }
 
@@ -144,6 +157,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
     }
 
     /// The checks before an attempt and its size ([`StepControl::attempt`]).
+    #[inline(always)]
     fn prepare(&mut self, runs: &mut Runs<N, L>, l: usize) -> Result<(), IntegrateError> {
         match runs.control[l].as_mut() {
             Some(control) => control.attempt().map(|_| ()),
@@ -154,6 +168,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
     /// One attempted step in every busy lane: the stages and error norms on all lanes at
     /// once, then lane by lane the judgement of its step control and the update as in
     /// [`crate::integrate::Dop853::step`].
+    #[inline(always)]
     fn step<Q: Queue<N>>(&mut self, runs: &mut Runs<N, L>, queue: &mut Q) {
         // A free lane steps by 0 from its last state: finite numbers, ignored.
         let h = Lanes(std::array::from_fn(|l| {

@@ -10,6 +10,7 @@
 use super::lanes::{lane_of, set_lane};
 use super::Lanes;
 use crate::integrate::compensated::compensated_add;
+use crate::integrate::taylor::tape::Isa;
 use crate::integrate::{check_start, IntegrateError, Stats, StepControl, Stepper};
 
 /// One run: integrate from `(t0, y0)` to `t_end`.
@@ -84,7 +85,43 @@ pub(crate) struct Runs<const N: usize, const L: usize> {
 impl<const N: usize, const L: usize> Runs<N, L> {
     /// Integrates the runs of `queue` with `method`, `L` at a time: returns when the queue
     /// is empty and every lane has ended.
-    pub fn integrate<M: LaneMethod<N, L>, Q: Queue<N>>(method: &mut M, queue: &mut Q) {
+    ///
+    /// The whole loop (the lanes' steps, norms, step sizes, Horner sums and updates) is
+    /// compiled for the instruction set `isa` ([`Isa::detect`] unless a test or benchmark
+    /// compares them; one this CPU has: [`Isa::available`]), so that `L` lanes are one or two
+    /// registers rather than `L / 2` SSE2 registers. The arithmetic is the same in each (no
+    /// contraction into fused multiply-adds: Rust does not contract, and
+    /// [`Scalar::mul_add`](crate::scalar::Scalar::mul_add) decides at compile time), so a lane
+    /// stays bitwise the one-at-a-time run (tests/batch.rs, under every set).
+    pub fn integrate<M: LaneMethod<N, L>, Q: Queue<N>>(isa: Isa, method: &mut M, queue: &mut Q) {
+        assert!(isa.available(), "{isa:?} is not available on this CPU");
+        #[cfg(target_arch = "x86_64")]
+        match isa {
+            // SAFETY: the CPU has the features each function is compiled for (`available`).
+            Isa::Avx512 => return unsafe { Self::integrate_avx512(method, queue) },
+            Isa::Avx2Fma => return unsafe { Self::integrate_avx2_fma(method, queue) },
+            Isa::Baseline => {}
+        }
+        Self::integrate_with(method, queue);
+    }
+
+    /// [`Runs::integrate`] compiled for AVX-512F and VL (and AVX2, FMA).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    fn integrate_avx512<M: LaneMethod<N, L>, Q: Queue<N>>(method: &mut M, queue: &mut Q) {
+        Self::integrate_with(method, queue);
+    }
+
+    /// [`Runs::integrate`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn integrate_avx2_fma<M: LaneMethod<N, L>, Q: Queue<N>>(method: &mut M, queue: &mut Q) {
+        Self::integrate_with(method, queue);
+    }
+
+    /// The loop of [`Runs::integrate`], inlined into each instruction set's copy.
+    #[inline(always)]
+    fn integrate_with<M: LaneMethod<N, L>, Q: Queue<N>>(method: &mut M, queue: &mut Q) {
         let zero = [Lanes::splat(0.0); N];
         let mut runs = Runs {
             y: zero,
@@ -99,6 +136,7 @@ impl<const N: usize, const L: usize> Runs<N, L> {
 
     /// Fills every free lane from the queue and prepares every busy lane's step (ending the
     /// runs that cannot step on); `false` when no lane is busy any more.
+    #[inline(always)]
     fn fill<M: LaneMethod<N, L>, Q: Queue<N>>(&mut self, method: &mut M, queue: &mut Q) -> bool {
         let mut any = false;
         for l in 0..L {
@@ -183,6 +221,7 @@ impl<const N: usize, const L: usize> Runs<N, L> {
 
     /// Lane `l`'s state plus `delta`, summed with compensation ([`compensated_add`], the
     /// lane's carry updated) or plainly, as the one-at-a-time steppers add their increments.
+    #[inline(always)]
     pub fn add(&mut self, l: usize, delta: &[f64; N], compensated: bool) -> [f64; N] {
         let mut y = lane_of(&self.y, l);
         if compensated {

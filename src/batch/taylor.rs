@@ -63,6 +63,18 @@ pub fn integrate_in<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, const
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
+    integrate_in_on::<S, Q, N, L>(Isa::detect(), sys, opts, queue)
+}
+
+/// [`integrate_in`] with the loop of the lanes compiled for the instruction set `isa` (one
+/// this CPU has, [`Isa::available`]; the expansion of the tape keeps its own, the widest):
+/// the same numbers, bit for bit, in every set (tests/batch.rs).
+pub fn integrate_in_on<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, const L: usize>(
+    isa: Isa,
+    sys: &S,
+    opts: &Options,
+    queue: &mut Q,
+) -> Result<(), IntegrateError> {
     opts.validate()?;
     let max_order = taylor_order(opts.rtol.min(opts.atol));
     let tape = Tape::record(sys, max_order).ok_or(IntegrateError::Unsupported {
@@ -75,7 +87,7 @@ pub fn integrate_in<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, const
         rule: SeriesRule::new(opts.rtol, opts.atol, max_order),
         order: [0; L],
     };
-    Runs::integrate(&mut method, queue);
+    Runs::integrate(isa, &mut method, queue);
     Ok(())
 }
 
@@ -94,6 +106,7 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
 
     /// The step budget ([`StepControl::budget`]) and the order of the lane's step from its
     /// state, as [`Taylor`](crate::integrate::Taylor)'s.
+    #[inline(always)]
     fn prepare(&mut self, runs: &mut Runs<N, L>, l: usize) -> Result<(), IntegrateError> {
         if let Some(control) = &runs.control[l] {
             control.budget()?;
@@ -114,6 +127,7 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
     /// by its step control ([`StepControl::series_step`]) and the update of
     /// [`Taylor`](crate::integrate::Taylor)'s step; the Horner sums on all lanes at once. A
     /// free lane takes the time and state of a busy one (finite numbers, ignored).
+    #[inline(always)]
     fn step<Q: Queue<N>>(&mut self, runs: &mut Runs<N, L>, queue: &mut Q) {
         let Some(busy) = runs.control.iter().position(Option::is_some) else {
             return;
@@ -200,6 +214,7 @@ impl<const N: usize, const L: usize> TaylorLanes<N, L> {
     /// The increments `sum_{k=1..p} y^[k] h^k` of all lanes at once, each by Horner's rule
     /// from its own order `p = order[l]` down (the sums of
     /// [`Taylor`](crate::integrate::Taylor), lane by lane).
+    #[inline(always)]
     fn increments(&self, order: &[usize; L], h: &Lanes<L>) -> [Lanes<L>; N] {
         let top = order.iter().copied().max().unwrap_or(0);
         let c = |i: usize, k: usize| self.tape.state_coefficient(i, k);

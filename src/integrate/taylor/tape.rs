@@ -385,6 +385,16 @@ impl Isa {
         Isa::Baseline
     }
 
+    /// Whether this CPU has the set: the baseline always, AVX2 with FMA when
+    /// [`Isa::detect`] finds it or AVX-512, AVX-512 when it finds AVX-512.
+    pub fn available(self) -> bool {
+        match self {
+            Isa::Baseline => true,
+            Isa::Avx2Fma => Isa::detect() != Isa::Baseline,
+            Isa::Avx512 => Isa::detect() == Isa::Avx512,
+        }
+    }
+
     /// The number of doubles in one vector register.
     pub fn doubles(self) -> usize {
         match self {
