@@ -156,21 +156,31 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
                 m.max(self.tape.state_coefficient(i, k).abs())
             })
         };
-        let shared = same.then(|| [norms(0), norms(top - 1), norms(top)]);
+        // The step sizes of the series: of all lanes side by side in one loop without a
+        // branch or a call (`taylor_step`) when they share their order (those of the free
+        // lanes are ignored), otherwise lane by lane.
+        let mut series = [0.0; L];
+        if same {
+            let [n0, n1, n2] = [norms(0), norms(top - 1), norms(top)];
+            for (l, h) in series.iter_mut().enumerate() {
+                *h = self.rule.step(top, n0.0[l], n1.0[l], n2.0[l]);
+            }
+        } else {
+            for l in (0..L).filter(|&l| runs.control[l].is_some()) {
+                let p = order[l];
+                let [n0, n1, n2] = [0, p - 1, p]
+                    .map(|k| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l])));
+                series[l] = self.rule.step(p, n0, n1, n2);
+            }
+        }
         let mut h = [0.0; L];
         let mut failure: [Option<IntegrateError>; L] = std::array::from_fn(|_| None);
         for l in 0..L {
             let Some(control) = runs.control[l].as_mut() else {
                 continue;
             };
-            let p = order[l];
-            control.count_evals(p);
-            let [n0, n1, n2] = match &shared {
-                Some(n) => n.map(|v| v.0[l]),
-                None => [0, p - 1, p]
-                    .map(|k| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l]))),
-            };
-            match control.series_step(self.rule.step(p, n0, n1, n2)) {
+            control.count_evals(order[l]);
+            match control.series_step(series[l]) {
                 Ok(hl) => h[l] = hl,
                 Err(e) => failure[l] = Some(e),
             }

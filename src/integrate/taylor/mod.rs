@@ -37,6 +37,7 @@
 
 mod codegen;
 mod convolution;
+mod elementary;
 #[rustfmt::skip]
 mod kernels;
 mod recurrence;
@@ -105,74 +106,58 @@ pub fn taylor_order(eps: f64) -> usize {
 /// (Jorba–Zou), and the step is `rho e^(-u - 0.7 / (p - 1))`, `u` of [`step_exponent`] (with
 /// the safety factor `e^(-0.7 / (p - 1))` of heyoka: F. Biscani, D. Izzo, MNRAS 504 (2021)
 /// 2614–2628). At the order of [`taylor_order`] the last term is then about
-/// `e^(-u p) <= eps e^(-u)`. A pure function of these numbers, so that a batch of lanes can
-/// apply it lane by lane.
+/// `e^(-u p) <= eps e^(-u)`. Computed as `exp(min(ln(scale / norm_p_minus_1) / (p - 1),
+/// ln(scale / norm_p) / p) - u - 0.7 / (p - 1))` with the `ln` and `exp` of [`elementary`]
+/// (a norm of 0 gives an infinite root, which the other root bounds; NaN only if both roots
+/// are NaN): a pure function of these numbers without a branch or a library call, so that a
+/// batch of lanes computes it for all lanes at once, bitwise as one lane alone.
+#[inline(always)]
 pub fn taylor_step(eps: f64, p: usize, scale: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
-    radius(p, scale, norm_p_minus_1, norm_p) * step_factor(eps, p)
-}
-
-/// The `rho` of [`taylor_step`].
-fn radius(p: usize, scale: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
-    let radius = |norm: f64, k: usize| (scale / norm).powf(1.0 / k as f64);
-    radius(norm_p_minus_1, p - 1).min(radius(norm_p, p))
-}
-
-/// The factor `e^(-u - 0.7 / (p - 1))` of [`taylor_step`].
-fn step_factor(eps: f64, p: usize) -> f64 {
-    (-step_exponent(eps) - 0.7 / (p - 1) as f64).exp()
+    let p = p as f64;
+    let log_root = |norm: f64, k: f64| elementary::ln(scale / norm) / k;
+    let log_rho = log_root(norm_p_minus_1, p - 1.0).min(log_root(norm_p, p));
+    elementary::exp(log_rho - step_exponent(eps) - 0.7 / (p - 1.0))
 }
 
 /// The adaptive order and step for the tolerances `rtol`, `atol` ([`step_tolerance`],
-/// [`taylor_order`], [`taylor_step`]), with what depends on the tolerance alone computed once:
-/// [`step_tolerance`] chooses one of two tolerances, so there are two orders (each at most the
-/// tape's) and two factors of the step. The same numbers as those functions at every step,
-/// without their logarithm, ceiling and exponential (taken by the one-at-a-time method and by
-/// each lane of the batched one).
+/// [`taylor_order`], [`taylor_step`]), with the orders (which depend on the tolerance alone)
+/// computed once: [`step_tolerance`] chooses one of two tolerances, so there are two orders
+/// (each at most the tape's). The same numbers as those functions at every step, without
+/// their logarithm and ceiling (taken by the one-at-a-time method and by each lane of the
+/// batched one).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct SeriesRule {
     rtol: f64,
     atol: f64,
-    /// The order and the factor of the step under absolute control (`eps = atol`), then
-    /// under relative control (`eps = rtol`).
-    rules: [(usize, f64); 2],
+    /// The order under absolute control (`eps = atol`), then under relative control
+    /// (`eps = rtol`).
+    orders: [usize; 2],
 }
 
 impl SeriesRule {
     /// The rule for `rtol`, `atol`, with orders at most `max_order`.
     pub(crate) fn new(rtol: f64, atol: f64, max_order: usize) -> Self {
-        let rule = |eps: f64| {
-            let p = taylor_order(eps).min(max_order);
-            (p, step_factor(eps, p))
-        };
+        let order = |eps: f64| taylor_order(eps).min(max_order);
         SeriesRule {
             rtol,
             atol,
-            rules: [rule(atol), rule(rtol)],
+            orders: [order(atol), order(rtol)],
         }
     }
 
-    /// The tolerance, scale ([`step_tolerance`]) and rule of a state of size `size`
-    /// (`eps` equal to `atol`: the first rule, which is also the second's if `rtol = atol`).
-    fn at(&self, size: f64) -> (f64, f64, (usize, f64)) {
-        let (eps, scale) = step_tolerance(self.rtol, self.atol, size);
-        (eps, scale, self.rules[usize::from(eps != self.atol)])
-    }
-
-    /// The order of a step from a state of size `size = ||y||_inf`.
+    /// The order of a step from a state of size `size = ||y||_inf` (that of `eps = atol`, the
+    /// first, which is also the second if `rtol = atol`).
     pub(crate) fn order(&self, size: f64) -> usize {
-        self.at(size).2 .0
+        let (eps, _) = step_tolerance(self.rtol, self.atol, size);
+        self.orders[usize::from(eps != self.atol)]
     }
 
     /// The step (unsigned, [`taylor_step`]) of a series of order `p` from a state of size
     /// `size`, whose last two coefficients have the norms `norm_p_minus_1` and `norm_p`.
+    #[inline(always)]
     pub(crate) fn step(&self, p: usize, size: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
-        let (eps, scale, (order, factor)) = self.at(size);
-        let factor = if p == order {
-            factor
-        } else {
-            step_factor(eps, p)
-        };
-        radius(p, scale, norm_p_minus_1, norm_p) * factor
+        let (eps, scale) = step_tolerance(self.rtol, self.atol, size);
+        taylor_step(eps, p, scale, norm_p_minus_1, norm_p)
     }
 }
 
