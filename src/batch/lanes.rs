@@ -2,9 +2,9 @@
 //! (mg-eq) evaluated at `L` states at once.
 //!
 //! Each operation is the `f64` operation applied lane by lane, written as a plain loop over a
-//! fixed-size array, which LLVM turns into SIMD instructions on stable Rust (two doubles per
-//! SSE2 register in the default x86-64 build, four per AVX2 register with
-//! `-C target-cpu=native`). Lane `l` of a result is therefore bitwise the `f64` result of the
+//! fixed-size array, which LLVM turns into SIMD instructions on stable Rust: the loop of the
+//! lanes (`runs::Runs::integrate`) and the Taylor expansion are compiled for AVX-512, AVX2 or
+//! the baseline (two doubles per SSE2 register) and chosen at run time. Lane `l` of a result is therefore bitwise the `f64` result of the
 //! same operation on lane `l` of the operands: the generic field run on `Lanes<L>` gives, in
 //! each lane, exactly the `f64` field. [`Scalar::mul_add`] makes the same choice as the `f64`
 //! implementation (fused where the target has a fused multiply-add instruction, else a
