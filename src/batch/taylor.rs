@@ -191,8 +191,9 @@ impl<const N: usize, const L: usize> LaneMethod<N, L> for TaylorLanes<N, L> {
                 continue;
             };
             let d = lane_of(&delta, l);
-            let checked = match failure[l].take() {
-                Some(e) => Err(e),
+            // Read in place, not taken: writing `None` back cost a stalled copy per lane.
+            let checked = match &failure[l] {
+                Some(e) => Err(e.clone()),
                 None => control.check_increment(d.iter().all(|v| v.is_finite())),
             };
             if let Err(e) = checked {

@@ -799,12 +799,17 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
     /// Sets every coefficient of lane `l` to zero but the constants': the lane is then as in
     /// a new tape (for a new run in that lane; the results of an expansion depend on the
     /// previous one's only through zeros, whose signs this makes those of a new tape).
+    ///
+    /// Only the places of orders `0 ..= max_order` of each slot: the places around them are
+    /// never written (zero since the tape was made).
     pub fn clear_lane(&mut self, l: usize) {
-        let ops = self.first_op * self.stride;
-        let inputs = (N + 1) * self.stride;
-        let (inputs_and_constants, operations) = self.coef.split_at_mut(ops);
-        for v in inputs_and_constants[..inputs].iter_mut().chain(operations) {
-            v.set_lane(l, 0.0);
+        let (stride, orders) = (self.stride, self.max_order + 1);
+        let slots = (0..=N).chain(self.first_op..self.coef.len() / stride);
+        for slot in slots {
+            let at = slot * stride + PAD;
+            for v in &mut self.coef[at..at + orders] {
+                v.set_lane(l, 0.0);
+            }
         }
     }
 
