@@ -72,22 +72,19 @@ impl Queue<6> for Recorder {
     }
 }
 
-/// The runs of `queue` in lanes of `method` (DOP853 or Taylor).
+/// The runs of `queue` in lanes of `method` (DOP853 or Taylor), as `routh sweep` runs them.
 fn integrate(
     method: Method,
     body: &Body,
     opts: &Options,
     queue: &mut Recorder,
 ) -> Result<(), IntegrateError> {
-    let sys = ReducedSystem(body);
-    match method {
-        Method::Dop853 => batch::integrate::<_, _, 6, LANES>(&sys, opts, queue),
-        Method::Taylor => batch::taylor::integrate(&sys, opts, queue),
-        other => panic!("no lanes for {other}"),
-    }
+    integrate_on(Isa::detect(), method, body, opts, queue)
 }
 
-/// The runs of `queue` in `LANES` lanes of `method`, the loop of the lanes compiled for `isa`.
+/// The runs of `queue` in lanes of `method` (`LANES` for DOP853, those of
+/// [`batch::taylor::lanes`] for Taylor: 8 with AVX-512, else 4), the loop of the lanes
+/// compiled for `isa`.
 fn integrate_on(
     isa: Isa,
     method: Method,
@@ -98,7 +95,10 @@ fn integrate_on(
     let sys = ReducedSystem(body);
     match method {
         Method::Dop853 => batch::integrate_on::<_, _, 6, LANES>(isa, &sys, opts, queue),
-        Method::Taylor => batch::taylor::integrate_in_on::<_, _, 6, LANES>(isa, &sys, opts, queue),
+        Method::Taylor if batch::taylor::lanes() == 8 => {
+            batch::taylor::integrate_in_on::<_, _, 6, 8>(isa, &sys, opts, queue)
+        }
+        Method::Taylor => batch::taylor::integrate_in_on::<_, _, 6, 4>(isa, &sys, opts, queue),
         other => panic!("no lanes for {other}"),
     }
 }
