@@ -105,6 +105,12 @@ mod tests {
         assert_eq!(exp(-746.0), 0.0);
         assert!(exp(f64::NAN).is_nan());
         assert!(exp(-740.0) > 0.0 && exp(-740.0) < f64::MIN_POSITIVE);
+        // At the edge of overflow: the largest `y` whose library `exp` is finite, and the next.
+        let edge = 709.782_712_893_384_f64;
+        let beyond = f64::from_bits(edge.to_bits() + 1);
+        assert!(edge.exp().is_finite() && beyond.exp().is_infinite());
+        assert!(ulps(exp(edge), edge.exp()) <= 2.0, "{:e}", exp(edge));
+        assert_eq!(exp(beyond), f64::INFINITY);
         assert_ne!(ln(1.0 + 4e-16), ln(1.0));
     }
 
@@ -124,11 +130,14 @@ mod tests {
         }
 
         /// `exp` within 2 ulp of the library's over the whole range where it is a normal
-        /// double, and within one unit of the smallest subnormal below it.
+        /// double, within two units of the smallest subnormal below it, and infinite where
+        /// the library's is.
         #[test]
         fn exp_is_the_library_s_to_2_ulp(y in -745.2f64..709.8) {
             let (ours, lib) = (exp(y), y.exp());
-            if lib >= f64::MIN_POSITIVE {
+            if lib.is_infinite() {
+                prop_assert_eq!(ours, lib, "exp({})", y);
+            } else if lib >= f64::MIN_POSITIVE {
                 prop_assert!(ulps(ours, lib) <= 2.0, "exp({y}) = {ours:e}, library {lib:e}");
             } else {
                 prop_assert!((ours - lib).abs() <= 2.0 * 4.9e-324, "exp({y}) = {ours:e}, library {lib:e}");
