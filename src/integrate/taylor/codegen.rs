@@ -257,11 +257,11 @@ fn loads(
         .collect()
 }
 
-/// The histories of `list` (as slot numbers `(a, b, second)`) in groups of at most `limit`,
+/// The histories of `list` (as slot numbers `(a, b, second)`) in groups of at most [`GROUP`],
 /// each begun with the first history left and grown by the one that adds the fewest loads
 /// (the first of them in the list on a tie).
 #[cfg(test)]
-fn groups(list: &[Spread], limit: usize) -> Vec<Vec<usize>> {
+fn groups(list: &[Spread]) -> Vec<Vec<usize>> {
     let cost = |group: &[usize]| {
         let firsts = loads(group.iter().map(|&i| (list[i].a, list[i].b)));
         let seconds = loads(
@@ -274,7 +274,7 @@ fn groups(list: &[Spread], limit: usize) -> Vec<Vec<usize>> {
     let mut left: Vec<usize> = (0..list.len()).collect();
     // As many histories in each group as can be (no group with few sums, whose loop would
     // wait for the latency of its multiply-adds).
-    let size = list.len().div_ceil(list.len().div_ceil(limit).max(1));
+    let size = list.len().div_ceil(list.len().div_ceil(GROUP).max(1));
     let mut out = vec![];
     while !left.is_empty() {
         let mut group = vec![left.remove(0)];
@@ -347,8 +347,8 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
     }
     // One more level of indentation, in a branch.
     let indent = |body: String| -> String { body.lines().map(|l| format!("    {l}\n")).collect() };
-    let wide = indent(sums(&list, GROUP, true));
-    let narrow = indent(sums(&list, GROUP, false));
+    let wide = indent(sums(&list, true));
+    let narrow = indent(sums(&list, false));
     format!(
         "<T: Coefficient, const FMA: bool, const WIDE: bool>(\n\
         \x20   c: &[T],\n\
@@ -380,19 +380,19 @@ fn grouped_histories<const N: usize>(tape: &Tape<N>) -> String {
     )
 }
 
-/// The loops of [`grouped_histories`] in groups of at most `limit`: if `paired`, at an even
+/// The loops of [`grouped_histories`] in [`groups`]: if `paired`, at an even
 /// order, the sums of the orders `k` (into `h`) and `k + 1` (into `g`); else the histories of
 /// the order `k` alone (into `h`): the terms `j` in `lo..hi` (all of them at an even order,
 /// those between the end terms at an odd order), then at an odd order the end terms.
 #[cfg(test)]
-fn sums(list: &[Spread], limit: usize, paired: bool) -> String {
+fn sums(list: &[Spread], paired: bool) -> String {
     // A tuple, or its one element alone (no parentheses around it).
     let tuple = |v: &[String]| match v {
         [one] => one.clone(),
         _ => format!("({})", v.join(", ")),
     };
     let mut body = String::new();
-    for group in groups(list, limit) {
+    for group in groups(list) {
         let sums: Vec<String> = group
             .iter()
             .flat_map(|i| {
@@ -748,7 +748,6 @@ mod tests {
         let y = case.initial.to_array();
         let detected = tape.isa();
         let sets = [Isa::Baseline, Isa::Avx2Fma, Isa::Avx512];
-        let available = &sets[..=sets.iter().position(|&s| s == detected).expect("a set")];
         let run = |isa: Isa, interpreted: bool| {
             let tape = if interpreted {
                 tape.interpreted()
@@ -764,7 +763,7 @@ mod tests {
         };
         let fused = run(detected, false);
         assert_eq!(fused.0, fused.1);
-        for &isa in available {
+        for isa in sets.into_iter().filter(|s| s.available()) {
             for interpreted in [false, true] {
                 let (single, lanes) = run(isa, interpreted);
                 assert_eq!(single, lanes, "{isa:?}");
