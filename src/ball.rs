@@ -218,7 +218,7 @@ impl Ball {
     /// About 45 floating-point operations and a single division, instead of a general 3x3
     /// solve or a division per `A_i` (BENCHMARKS.md). `D det A` is of the size of `A_i^6`:
     /// finite and normal for `A_i` between 1e-50 and 1e50. The form for numbers (`f64`, dual
-    /// numbers, lanes); series take [`Ball::angular_velocity_by_reciprocals`].
+    /// numbers, lanes); series take [`Ball::angular_velocity_by_quotients`].
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
         let r = self.contact_vector(gamma);
@@ -235,31 +235,65 @@ impl Ball {
     }
 
     /// The same `omega = I_Q^{-1} M` as [`Ball::angular_velocity`], by Sherman-Morrison with
-    /// the reciprocals `1 / A_i` themselves:
+    /// a quotient by each `A_i`:
     ///
-    /// `omega = A^{-1} M + q A^{-1} r`, `q = m (r, A^{-1} M) / (1 - m (r, A^{-1} r))`
+    /// `omega_i = (M_i + q r_i) / A_i`, `q = m (r, A^{-1} M) / (1 - m (r, A^{-1} r))`
     ///
-    /// (the denominator is `D / det A > 0`). The form for truncated power series (the Taylor
-    /// method's tape), where a quotient costs one convolution, as a product does: 21
-    /// convolutions on the Routh sphere's tape (`A_1 = A_2`: two reciprocals, one quotient)
-    /// against 29 for the cofactors, the whole field's 36 against 44 (BENCHMARKS.md, "Omega
-    /// by reciprocals"). In `f64` its divisions in a row cost more than the products they
-    /// save (DOP853 one run at a time 12 % slower), hence two forms ([`crate::field`]); they
-    /// agree to round-off (`tests/field_identities.rs`). Each `1 / A_i` is finite for `A_i`
-    /// between 1e-300 and 1e300.
+    /// (the denominator is `D / det A > 0`), where the two sums over `i` divide once per
+    /// distinct `A_i`: `(r, A^{-1} M) = sum_G (sum_{i in G} r_i M_i) / A_G` over the groups `G`
+    /// of equal moments of inertia (`I_1 = I_2` on the Routh sphere: `{1, 2}` and `{3}`), and
+    /// `(r, A^{-1} r)` likewise with the squares `r_i^2`, whose sums also make `r^2`. The form
+    /// for truncated power series (the Taylor method's tape), where a quotient costs one
+    /// convolution, as a product does: 17 convolutions on the Routh sphere's tape (three
+    /// squares, three products, eight quotients, three fused products) against 29 for the
+    /// cofactors and 21 for the reciprocals `1 / A_i` times `r_i` and `M_i` (the form before,
+    /// BENCHMARKS.md, "Omega by quotients"); the whole field's 32 against 44 and 36. In `f64` its
+    /// divisions in a row cost more than the products they save, hence two forms
+    /// ([`crate::field`]); they agree to round-off (`tests/field_identities.rs`). Each
+    /// quotient is finite for `A_i` between 1e-300 and 1e300.
     #[inline(always)]
-    pub fn angular_velocity_by_reciprocals<D: Scalar>(
+    pub fn angular_velocity_by_quotients<D: Scalar>(
         &self,
         gamma: &[D; 3],
         m_vec: &[D; 3],
     ) -> [D; 3] {
         let r = self.contact_vector(gamma);
-        let mr2 = dot(&r, &r) * self.m;
-        let inverse: [D; 3] = std::array::from_fn(|i| (mr2 + self.inertia[i]).recip());
-        let ar: [D; 3] = std::array::from_fn(|i| r[i] * inverse[i]);
-        let am: [D; 3] = std::array::from_fn(|i| m_vec[i] * inverse[i]);
-        let q = dot(&r, &am) * self.m / (D::from_f64(1.0) - dot(&r, &ar) * self.m);
-        std::array::from_fn(|i| ar[i].mul_add(q, am[i]))
+        // The groups of equal moments: the first index of each, and each index's group.
+        let first: [usize; 3] = std::array::from_fn(|i| {
+            (0..i)
+                .find(|&j| self.inertia[j] == self.inertia[i])
+                .unwrap_or(i)
+        });
+        let in_group = |g: usize| (0..3).filter(move |&i| first[i] == g);
+        // sum_{i in G} u_i v_i, one fused sum per group (`None` for an index that is not the
+        // first of its group).
+        let group_sums = |u: &[D; 3], v: &[D; 3]| -> [Option<D>; 3] {
+            std::array::from_fn(|g| {
+                in_group(g).fold(None, |acc: Option<D>, i| {
+                    Some(match acc {
+                        None => u[i] * v[i],
+                        Some(a) => u[i].mul_add(v[i], a),
+                    })
+                })
+            })
+        };
+        // The sum of the groups' terms (the group of index 0 is never empty).
+        let total = |terms: [Option<D>; 3]| {
+            terms
+                .into_iter()
+                .flatten()
+                .reduce(|acc, v| acc + v)
+                .expect("the group of the first index")
+        };
+        let squares = group_sums(&r, &r);
+        let mr2 = total(squares) * self.m;
+        let a: [D; 3] = std::array::from_fn(|i| mr2 + self.inertia[first[i]]);
+        let over_a =
+            |sums: [Option<D>; 3]| total(std::array::from_fn(|g| sums[g].map(|v| v / a[g])));
+        let rar = over_a(squares);
+        let ram = over_a(group_sums(&r, m_vec));
+        let q = ram * self.m / (D::from_f64(1.0) - rar * self.m);
+        std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / a[i])
     }
 
     /// `det I_Q` of (om-m) (the `D` of [`Ball::angular_velocity`]).

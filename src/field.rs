@@ -40,13 +40,13 @@
 //!
 //! `omega = I_Q^{-1} M` has two closed forms ([`OmegaForm`]), the same function: by cofactors
 //! with one division ([`Ball::angular_velocity`], for numbers: `f64`, dual numbers, lanes) and
-//! by the reciprocals `1 / (I_i + m r^2)` ([`Ball::angular_velocity_by_reciprocals`], for the
-//! Taylor method's tape, where a quotient of series costs one convolution as a product does).
-//! The tape of the default case then has 37 operations and 36 convolutions instead of 42 and 44
-//! (the Taylor lanes about 15 % faster; DOP853 keeps the cofactors, with which it is 12 %
-//! faster one run at a time: BENCHMARKS.md, "Omega by reciprocals"). The two agree to
-//! round-off, values and Jacobians (`tests/field_identities.rs`); each integrator's numbers are
-//! those of its own form, bit for bit across lanes and threads.
+//! by a quotient by each `I_i + m r^2` ([`Ball::angular_velocity_by_quotients`], for the Taylor
+//! method's tape, where a quotient of series costs one convolution as a product does). The
+//! tape of the default case then has 32 convolutions instead of 44 (BENCHMARKS.md, "Omega by
+//! quotients"; DOP853 keeps the cofactors, with which it is 12 % faster one run at a time:
+//! "Omega by reciprocals"). The two agree to round-off, values and Jacobians
+//! (`tests/field_identities.rs`); each integrator's numbers are those of its own form, bit for
+//! bit across lanes and threads.
 
 use crate::ball::{AsBall, Ball};
 use crate::scalar::{cross, lift, split, Scalar};
@@ -64,9 +64,10 @@ pub fn vector_field<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
 pub enum OmegaForm {
     /// [`Ball::angular_velocity`]: one division (numbers: `f64`, dual numbers, lanes).
     Cofactors,
-    /// [`Ball::angular_velocity_by_reciprocals`]: fewer products, three divisions (truncated
-    /// power series: the Taylor method's tape).
-    Reciprocals,
+    /// [`Ball::angular_velocity_by_quotients`]: fewer convolutions, a division for each
+    /// distinct moment of inertia and component (truncated power series: the Taylor method's
+    /// tape).
+    Quotients,
 }
 
 /// [`vector_field`] with `omega` in the form `form`.
@@ -87,7 +88,7 @@ fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6], form: OmegaForm) -> [D; 6] {
     let (gamma, m_vec) = split(x);
     let omega = match form {
         OmegaForm::Cofactors => ball.angular_velocity(&gamma, &m_vec),
-        OmegaForm::Reciprocals => ball.angular_velocity_by_reciprocals(&gamma, &m_vec),
+        OmegaForm::Quotients => ball.angular_velocity_by_quotients(&gamma, &m_vec),
     };
     let gamma_dot = cross(&gamma, &omega);
     // Identity 1: m R dgamma/dt x (omega x r) = s omega, s = (dgamma/dt, -m R com).

@@ -16,8 +16,8 @@
 //! coefficient it reads once per `j` for all the products of the group (the state and `omega`
 //! are operands of many), instead of two loads a term in a loop per history. The sums keep
 //! [`super::convolution`]'s order term for term, so they are bitwise the interpreter's too;
-//! the loads per term fall from 2 to 1.36 to 1.42 (by family), and an expansion in 8 lanes to
-//! order 20 takes 1.2x less time (BENCHMARKS.md, "Sweeps").
+//! the loads per term fall from 2 to about 1.4, and an expansion in 8 lanes to order 20 took
+//! 1.2x less time (BENCHMARKS.md, "Sweeps").
 //!
 //! With 32 vector registers (AVX-512; the const parameter `WIDE`), the loop of an even order
 //! `k` also sums the terms of order `k + 1` that it can (`j = 2 .. k-1`, the right operand's
@@ -238,12 +238,14 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
 /// The largest number of histories summed together in one group: their sums stay in
 /// registers, with the coefficients loaded for them (with 14, the compiler spilled them and
 /// the expansion in 8 lanes took 2x longer). With the sums of two orders (`2 n` sums for `n`
-/// histories) and 32 vector registers (AVX-512), the same groups (9 for the Routh sphere's
-/// 27) hold; in 16 (AVX2, SSE2) they spilled (the expansion in 4 lanes with AVX2 took 1.5x
-/// longer), and groups of 4 were 1.1x slower than one order at a time (8 sums wait for the
-/// latency of their multiply-adds), hence one order at a time there.
+/// histories, AVX-512) and the second products of `a b ± d e` in the same loop as the first
+/// ([`super::convolution`]'s order), groups of 12 spilled (12 stack references in each loop
+/// of the Routh sphere's two) and were no faster than a second loop per group; 8 were 1.05x
+/// and 6 1.09x faster than 12 (8 Taylor lanes at tol 1e-12, 1024 runs; 5 and 4 within 1 % of
+/// 6: BENCHMARKS.md, "Sweeps"). In 16 registers (AVX2, SSE2) the sums of two orders do not
+/// fit, and the loops sum one order at a time.
 #[cfg(test)]
-const GROUP: usize = 12;
+const GROUP: usize = 6;
 
 /// The coefficients a loop over the terms of some products loads once per term: `(slot,
 /// false)` for order `j` of an operand on the left, `(slot, true)` for order `k - j` of one on
@@ -306,9 +308,9 @@ struct Spread {
 }
 
 /// The histories of one family in [`groups`] ([`super::convolution`]'s order of the terms).
-/// With `WIDE`, at an even order `k`, for each group, one loop over the terms of its first
-/// products and one over its second products (which the convolution adds after the first's),
-/// each loading the coefficients it reads once per term, sum the terms of order `k` (the
+/// With `WIDE`, at an even order `k`, for each group, one loop over the terms of its products
+/// (at each `j`, a history's first product, then its second), loading the coefficients it
+/// reads once per term, sums the terms of order `k` (the
 /// histories `h`) and the terms `j = 2 .. k-1` of order `k + 1` (into `g`), the latter from the
 /// right operands loaded one `j` before; at an odd order, `h` is `g` plus the end terms.
 /// Without, the same loops sum one order at a time ([`sums`]).
@@ -416,17 +418,17 @@ fn sums(list: &[Spread], paired: bool) -> String {
             tuple(&vec!["zero".to_string(); sums.len()])
         )
         .expect("writing to a String");
-        let loops: [Vec<(usize, usize, usize, bool)>; 2] = [
-            group
-                .iter()
-                .map(|&i| (i, list[i].a, list[i].b, false))
-                .collect(),
-            group
-                .iter()
-                .filter_map(|&i| list[i].second.map(|(d, e, minus)| (i, d, e, minus)))
-                .collect(),
-        ];
-        for terms in loops.iter().filter(|terms| !terms.is_empty()) {
+        // The terms at `j` of each history: its first product's, then its second's.
+        let terms: Vec<(usize, usize, usize, bool)> = group
+            .iter()
+            .flat_map(|&i| {
+                let h = list[i];
+                [(i, h.a, h.b, false)]
+                    .into_iter()
+                    .chain(h.second.map(|(d, e, minus)| (i, d, e, minus)))
+            })
+            .collect();
+        {
             let read = loads(terms.iter().map(|&(_, a, b, _)| (a, b)));
             let names: Vec<String> = read
                 .iter()
@@ -440,7 +442,7 @@ fn sums(list: &[Spread], paired: bool) -> String {
                 })
                 .collect();
             let add = |body: &mut String, sum: char, right: char| {
-                for &(i, a, b, minus) in terms {
+                for &(i, a, b, minus) in &terms {
                     let line = term(
                         &format!("{sum}{i}"),
                         &format!("a{a}"),
@@ -462,37 +464,37 @@ fn sums(list: &[Spread], paired: bool) -> String {
                     .expect("writing to a String");
                 add(&mut body, 's', 'b');
                 body.push_str("    }\n");
-                continue;
+            } else {
+                // The first term apart: order `k + 1` has no term `j = 1` here.
+                let (carried, right_names): (Vec<String>, Vec<String>) = read
+                    .iter()
+                    .filter(|r| r.1)
+                    .map(|r| (format!("p{}", r.0), format!("b{}", r.0)))
+                    .unzip();
+                let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
+                writeln!(
+                    body,
+                    "    let {} = {{\n        let j = 1;\n        {load}",
+                    tuple(&mutable)
+                )
+                .expect("writing to a String");
+                add(&mut body, 's', 'b');
+                writeln!(
+                    body,
+                    "        {}\n    }};\n    for j in 2..k {{\n        {load}",
+                    tuple(&right_names)
+                )
+                .expect("writing to a String");
+                add(&mut body, 's', 'b');
+                add(&mut body, 't', 'p');
+                writeln!(
+                    body,
+                    "        {} = {};\n    }}",
+                    tuple(&carried),
+                    tuple(&right_names)
+                )
+                .expect("writing to a String");
             }
-            // The first term apart: order `k + 1` has no term `j = 1` here.
-            let (carried, right_names): (Vec<String>, Vec<String>) = read
-                .iter()
-                .filter(|r| r.1)
-                .map(|r| (format!("p{}", r.0), format!("b{}", r.0)))
-                .unzip();
-            let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
-            writeln!(
-                body,
-                "    let {} = {{\n        let j = 1;\n        {load}",
-                tuple(&mutable)
-            )
-            .expect("writing to a String");
-            add(&mut body, 's', 'b');
-            writeln!(
-                body,
-                "        {}\n    }};\n    for j in 2..k {{\n        {load}",
-                tuple(&right_names)
-            )
-            .expect("writing to a String");
-            add(&mut body, 's', 'b');
-            add(&mut body, 't', 'p');
-            writeln!(
-                body,
-                "        {} = {};\n    }}",
-                tuple(&carried),
-                tuple(&right_names)
-            )
-            .expect("writing to a String");
         }
         if !paired {
             body.push_str("    if !even {\n        // SAFETY: the assertion above, with `1 <= k - 1`.\n        unsafe {\n");
@@ -512,12 +514,12 @@ fn sums(list: &[Spread], paired: bool) -> String {
 }
 
 /// The statements adding to the sum `sum` the end terms `j = 1, k-1` of the history `h`
-/// (those of its first product, then those of its second), indented by `depth` levels.
+/// (at each `j`, its first product's term, then its second's), indented by `depth` levels.
 #[cfg(test)]
 fn end_terms(h: &Spread, sum: &str, depth: usize) -> String {
     let mut out = String::new();
-    for (a, b, minus) in [(h.a, h.b, false)].into_iter().chain(h.second) {
-        for (ja, jb) in [("1", "k - 1"), ("k - 1", "1")] {
+    for (ja, jb) in [("1", "k - 1"), ("k - 1", "1")] {
+        for (a, b, minus) in [(h.a, h.b, false)].into_iter().chain(h.second) {
             let (x, y) = (
                 format!("at(c, {} + {ja})", place(a)),
                 format!("at(c, {} + {jb})", place(b)),

@@ -14,11 +14,12 @@
 //! The order of the arithmetic, the same for every [`Coefficient`] type, instruction set and
 //! way of running: a history is one sum, zero to start with, of its terms, each added as
 //! `s <- a^[j] b^[k-j] + s` (a fused multiply-add if the pass fuses); a second product
-//! (`a b ± d e`) adds its terms to the same sum after the first's, with `-d` for a difference
-//! (exact). The terms come in this order:
+//! (`a b ± d e`) adds its term `(±d^[j]) e^[k-j]` to the same sum right after the first's
+//! term of the same `j`, with `-d` for a difference (exact; so one loop over `j` sums both
+//! products, instead of a second loop that would wait for the first's sum). The orders `j`
+//! come in this order:
 //! * at an even order `k` (and at `k = 1`, no term): `j = 1, ..., k-1`;
-//! * at an odd order `k >= 3`: first the terms `j = 2, ..., k-2` (of both products), then the
-//!   two end terms `j = 1, k-1` of the first product and those of the second.
+//! * at an odd order `k >= 3`: first `j = 2, ..., k-2`, then the end terms `j = 1, k-1`.
 //!
 //! The odd orders are so ordered for the generated histories ([`super::codegen`]), which sum
 //! the terms of two orders in one loop: at an even order `k` the loop loads `a^[j]` and
@@ -63,41 +64,23 @@ pub fn histories<T: Coefficient, const FMA: bool>(
     }
 }
 
-/// `s` plus the terms `j` of `js` (in order) of the first product of `h`, then those of its
-/// second.
+/// `s` plus, for each `j` of `js` in order (each in `1 ..= k-1`), the term `a^[j] b^[k-j]` of
+/// the first product of `h`, then the term `(±d^[j]) e^[k-j]` of its second.
 #[inline(always)]
 fn products<T: Coefficient, const FMA: bool>(
     c: &[T],
     h: &History,
     k: usize,
-    js: impl IntoIterator<Item = usize> + Clone,
-    s: T,
-) -> T {
-    let mut s = terms::<T, FMA, false>(c, h.a as usize, h.b as usize, k, js.clone(), s);
-    if let Some((d, e, minus)) = h.second {
-        s = if minus {
-            terms::<T, FMA, true>(c, d as usize, e as usize, k, js, s)
-        } else {
-            terms::<T, FMA, false>(c, d as usize, e as usize, k, js, s)
-        };
-    }
-    s
-}
-
-/// `s` plus the terms `(±a^[j]) b^[k-j]`, `j` in `js` (each in `1 ..= k-1`), in order (`-a`
-/// if `MINUS`).
-#[inline(always)]
-fn terms<T: Coefficient, const FMA: bool, const MINUS: bool>(
-    c: &[T],
-    a: usize,
-    b: usize,
-    k: usize,
     js: impl IntoIterator<Item = usize>,
     mut s: T,
 ) -> T {
+    let (a, b) = (h.a as usize, h.b as usize);
     for j in js {
-        let (x, y) = (c[a + j], c[b + k - j]);
-        s = mul_add::<T, FMA>(if MINUS { -x } else { x }, y, s);
+        s = mul_add::<T, FMA>(c[a + j], c[b + k - j], s);
+        if let Some((d, e, minus)) = h.second {
+            let x = c[d as usize + j];
+            s = mul_add::<T, FMA>(if minus { -x } else { x }, c[e as usize + k - j], s);
+        }
     }
     s
 }

@@ -25,7 +25,8 @@
 //! Analysis* (1966), ch. 11; A. Jorba, M. Zou, Experimental Math. 14 (2005) 99–117, sect. 2):
 //! * `w = a ± b`: `a^[k] ± b^[k]`; `w = c a`: `c a^[k]`;
 //! * `w = a b`: `sum_{j=0..k} a^[j] b^[k-j]`;
-//! * `w = a / b`: `(a^[k] - sum_{j=1..k} b^[j] w^[k-j]) / b^[0]`;
+//! * `w = a / b`: `(a^[k] - sum_{j=1..k} b^[j] w^[k-j]) (1 / b^[0])` (a product by the
+//!   reciprocal: `recurrence::quotient`);
 //! * `w = sqrt(a)`: `(a^[k] - sum_{j=1..k-1} w^[j] w^[k-j]) / (2 w^[0])`;
 //! * `w = a b + c` (fused): the product's sum plus `c^[k]`.
 //!
