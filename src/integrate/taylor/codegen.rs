@@ -100,6 +100,80 @@ pub fn factors(code: &[Instr]) -> Vec<f64> {
         .collect()
 }
 
+/// The inline constants of the tape's instructions, in their order (those of
+/// [`Instr::AddC`], [`Instr::CSub`], [`Instr::MulC`], [`Instr::DivC`], [`Instr::CDiv`]): the
+/// array a kernel's order 0 takes.
+pub fn constants(code: &[Instr]) -> Vec<f64> {
+    code.iter()
+        .filter_map(|instr| match *instr {
+            Instr::AddC(_, k)
+            | Instr::CSub(k, _)
+            | Instr::MulC(_, k)
+            | Instr::DivC(_, k)
+            | Instr::CDiv(k, _) => Some(k),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Order 0 of one family: the `f64` operations of [`Tape`]'s `order_zero`, instruction by
+/// instruction, the values of the operations in locals.
+#[cfg(test)]
+fn order_zero<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
+    let first = tape.first_op();
+    let slot = |a: u32| tape.slot_of(a);
+    let value = |a: u32| {
+        let x = slot(a);
+        if x >= first {
+            format!("v{x}")
+        } else {
+            format!("c[{}]", place(x))
+        }
+    };
+    let (mut body, mut constant) = (String::new(), 0);
+    for (j, instr) in tape.code().iter().enumerate() {
+        let dest = first + j;
+        let mut z = || {
+            constant += 1;
+            format!("z[{}]", constant - 1)
+        };
+        let v = |a: u32| value(a);
+        let expr = match *instr {
+            Instr::Add(a, b) => format!("{} + {}", v(a), v(b)),
+            Instr::Sub(a, b) => format!("{} - {}", v(a), v(b)),
+            Instr::Mul(a, b) => format!("{} * {}", v(a), v(b)),
+            Instr::Div(a, b) => format!("{} / {}", v(a), v(b)),
+            Instr::Neg(a) => format!("-{}", v(a)),
+            Instr::Sqrt(a) => format!("{}.sqrt()", v(a)),
+            Instr::MulAdd(a, b, d) => format!("{}.mul_add({}, {})", v(a), v(b), v(d)),
+            Instr::AddC(a, _) => format!("{} + {}", v(a), z()),
+            Instr::CSub(_, a) => format!("T::from_f64({}) - {}", z(), v(a)),
+            Instr::MulC(a, _) => format!("{} * {}", v(a), z()),
+            Instr::DivC(a, _) => format!("{} / {}", v(a), z()),
+            Instr::CDiv(_, a) => format!("T::from_f64({}) / {}", z(), v(a)),
+            Instr::DotAdd(a, b, d, e) => format!("{} * {} + {} * {}", v(a), v(b), v(d), v(e)),
+            Instr::DotSub(a, b, d, e) => format!("{} * {} - {} * {}", v(a), v(b), v(d), v(e)),
+            Instr::MulPlus(a, b, d) => format!("{} * {} + {}", v(a), v(b), v(d)),
+            Instr::MulMinus(a, b, d) => format!("{} * {} - {}", v(a), v(b), v(d)),
+            Instr::MinusMul(d, a, b) => format!("{} - {} * {}", v(d), v(a), v(b)),
+        };
+        writeln!(
+            body,
+            "    let v{dest} = {expr};\n    c[{}] = v{dest};",
+            place(dest)
+        )
+        .expect("writing to a String");
+    }
+    let z_name = if constant > 0 { "z" } else { "_z" };
+    writeln!(
+        w,
+        "\n/// Order 0 of the kernel `{name}`.\n\
+         #[inline(always)]\n\
+         fn {name}_zero<T: Coefficient>(c: &mut [T], s: usize, {z_name}: &[f64; {constant}]) {{\n{body}}}"
+    )
+    .expect("writing to a String");
+}
+
 /// The Rust source of the kernels of `families` (a name, a valid Rust identifier, and a tape
 /// recorded from the generic field of that family) and of the function that dispatches to
 /// them, as checked in as `src/integrate/taylor/kernels.rs`. `regenerate` is the command that
@@ -171,6 +245,22 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
     w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
     w.push_str(
         "\n\
+         /// Order 0 of the tape of shape `SHAPES[kernel]`, in slots of `s` coefficients: the\n\
+         /// field's own operations, with the inline constants `z` ([`super::codegen::constants`]).\n\
+         #[inline(always)]\n\
+         pub(super) fn zero<T: Coefficient>(kernel: usize, c: &mut [T], s: usize, z: &[f64]) {\n\
+        \x20   match kernel {\n",
+    );
+    for (id, (name, _)) in families.iter().enumerate() {
+        writeln!(
+            w,
+            "        {id} => {name}_zero::<T>(c, s, z.try_into().expect(\"the constants of the shape\")),"
+        )
+        .expect("writing to a String");
+    }
+    w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
+    w.push_str(
+        "\n\
          /// The histories ([`super::convolution`]) at order `k >= 1` of the tape of shape\n\
          /// `SHAPES[kernel]` into `h`, in slots of `s` coefficients: bitwise\n\
          /// [`super::convolution::histories`] of the tape's list, in groups that load each\n\
@@ -216,6 +306,7 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
     w.push_str("        _ => unreachable!(\"a kernel of SHAPES\"),\n    }\n}\n");
     for (i, (name, tape)) in families.iter().enumerate() {
         kernel(&mut w, name, tape);
+        order_zero(&mut w, name, tape);
         if owner[i] == i {
             let users: Vec<String> = (0..families.len())
                 .filter(|&j| owner[j] == i)

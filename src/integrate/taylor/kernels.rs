@@ -75,6 +75,21 @@ pub(super) fn pass<T: Coefficient, const FMA: bool>(
     }
 }
 
+/// Order 0 of the tape of shape `SHAPES[kernel]`, in slots of `s` coefficients: the
+/// field's own operations, with the inline constants `z` ([`super::codegen::constants`]).
+#[inline(always)]
+pub(super) fn zero<T: Coefficient>(kernel: usize, c: &mut [T], s: usize, z: &[f64]) {
+    match kernel {
+        0 => routh_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        1 => routh_free_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        2 => routh_general_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        3 => routh_general_free_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        4 => chaplygin_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        5 => ball_zero::<T>(c, s, z.try_into().expect("the constants of the shape")),
+        _ => unreachable!("a kernel of SHAPES"),
+    }
+}
+
 /// The histories ([`super::convolution`]) at order `k >= 1` of the tape of shape
 /// `SHAPES[kernel]` into `h`, in slots of `s` coefficients: bitwise
 /// [`super::convolution::histories`] of the tape's list, in groups that load each
@@ -218,6 +233,85 @@ fn routh<T: Coefficient, const FMA: bool>(
     c[42 * s + 4 + k] = v42;
     let v43 = recurrence::mul_plus::<T, FMA>(c[28 * s + 4], v28, c[32 * s + 4], v32, v38, h[23]);
     c[43 * s + 4 + k] = v43;
+}
+
+/// Order 0 of the kernel `routh`.
+#[inline(always)]
+fn routh_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 8]) {
+    let v7 = c[2 * s + 4] + z[0];
+    c[7 * s + 4] = v7;
+    let v8 = c[4] * c[4] + c[s + 4] * c[s + 4];
+    c[8 * s + 4] = v8;
+    let v9 = v7 * v7;
+    c[9 * s + 4] = v9;
+    let v10 = v8 + v9;
+    c[10 * s + 4] = v10;
+    let v11 = v10 + z[1];
+    c[11 * s + 4] = v11;
+    let v12 = v10 + z[2];
+    c[12 * s + 4] = v12;
+    let v13 = v8 / v11;
+    c[13 * s + 4] = v13;
+    let v14 = v9 / v12;
+    c[14 * s + 4] = v14;
+    let v15 = v13 + v14;
+    c[15 * s + 4] = v15;
+    let v16 = c[4] * c[3 * s + 4] + c[s + 4] * c[4 * s + 4];
+    c[16 * s + 4] = v16;
+    let v17 = c[5 * s + 4] * v7;
+    c[17 * s + 4] = v17;
+    let v18 = v16 / v11;
+    c[18 * s + 4] = v18;
+    let v19 = v17 / v12;
+    c[19 * s + 4] = v19;
+    let v20 = v18 + v19;
+    c[20 * s + 4] = v20;
+    let v21 = T::from_f64(z[3]) - v15;
+    c[21 * s + 4] = v21;
+    let v22 = v20 / v21;
+    c[22 * s + 4] = v22;
+    let v23 = c[4] * v22 + c[3 * s + 4];
+    c[23 * s + 4] = v23;
+    let v24 = v23 / v11;
+    c[24 * s + 4] = v24;
+    let v25 = c[s + 4] * v22 + c[4 * s + 4];
+    c[25 * s + 4] = v25;
+    let v26 = v25 / v11;
+    c[26 * s + 4] = v26;
+    let v27 = v7 * v22 + c[5 * s + 4];
+    c[27 * s + 4] = v27;
+    let v28 = v27 / v12;
+    c[28 * s + 4] = v28;
+    let v29 = c[s + 4] * v28 - c[2 * s + 4] * v26;
+    c[29 * s + 4] = v29;
+    let v30 = c[2 * s + 4] * v24 - c[4] * v28;
+    c[30 * s + 4] = v30;
+    let v31 = c[4] * v26 - c[s + 4] * v24;
+    c[31 * s + 4] = v31;
+    let v32 = v31 * z[4];
+    c[32 * s + 4] = v32;
+    let v33 = c[s + 4] * z[5];
+    c[33 * s + 4] = v33;
+    let v34 = c[4] * z[6];
+    c[34 * s + 4] = v34;
+    let v35 = T::from_f64(z[7]) - v34;
+    c[35 * s + 4] = v35;
+    let v36 = c[4 * s + 4] * v28 - c[5 * s + 4] * v26;
+    c[36 * s + 4] = v36;
+    let v37 = c[5 * s + 4] * v24 - c[3 * s + 4] * v28;
+    c[37 * s + 4] = v37;
+    let v38 = c[3 * s + 4] * v26 - c[4 * s + 4] * v24;
+    c[38 * s + 4] = v38;
+    let v39 = v33 + v36;
+    c[39 * s + 4] = v39;
+    let v40 = v24 * v32 + v39;
+    c[40 * s + 4] = v40;
+    let v41 = v35 + v37;
+    c[41 * s + 4] = v41;
+    let v42 = v26 * v32 + v41;
+    c[42 * s + 4] = v42;
+    let v43 = v28 * v32 + v38;
+    c[43 * s + 4] = v43;
 }
 
 /// The histories of the kernels `routh`, `routh_free` at order `k >= 1` ([`histories`]).
@@ -793,6 +887,75 @@ fn routh_free<T: Coefficient, const FMA: bool>(
     c[38 * s + 4 + k] = v38;
 }
 
+/// Order 0 of the kernel `routh_free`.
+#[inline(always)]
+fn routh_free_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 5]) {
+    let v7 = c[2 * s + 4] + z[0];
+    c[7 * s + 4] = v7;
+    let v8 = c[4] * c[4] + c[s + 4] * c[s + 4];
+    c[8 * s + 4] = v8;
+    let v9 = v7 * v7;
+    c[9 * s + 4] = v9;
+    let v10 = v8 + v9;
+    c[10 * s + 4] = v10;
+    let v11 = v10 + z[1];
+    c[11 * s + 4] = v11;
+    let v12 = v10 + z[2];
+    c[12 * s + 4] = v12;
+    let v13 = v8 / v11;
+    c[13 * s + 4] = v13;
+    let v14 = v9 / v12;
+    c[14 * s + 4] = v14;
+    let v15 = v13 + v14;
+    c[15 * s + 4] = v15;
+    let v16 = c[4] * c[3 * s + 4] + c[s + 4] * c[4 * s + 4];
+    c[16 * s + 4] = v16;
+    let v17 = c[5 * s + 4] * v7;
+    c[17 * s + 4] = v17;
+    let v18 = v16 / v11;
+    c[18 * s + 4] = v18;
+    let v19 = v17 / v12;
+    c[19 * s + 4] = v19;
+    let v20 = v18 + v19;
+    c[20 * s + 4] = v20;
+    let v21 = T::from_f64(z[3]) - v15;
+    c[21 * s + 4] = v21;
+    let v22 = v20 / v21;
+    c[22 * s + 4] = v22;
+    let v23 = c[4] * v22 + c[3 * s + 4];
+    c[23 * s + 4] = v23;
+    let v24 = v23 / v11;
+    c[24 * s + 4] = v24;
+    let v25 = c[s + 4] * v22 + c[4 * s + 4];
+    c[25 * s + 4] = v25;
+    let v26 = v25 / v11;
+    c[26 * s + 4] = v26;
+    let v27 = v7 * v22 + c[5 * s + 4];
+    c[27 * s + 4] = v27;
+    let v28 = v27 / v12;
+    c[28 * s + 4] = v28;
+    let v29 = c[s + 4] * v28 - c[2 * s + 4] * v26;
+    c[29 * s + 4] = v29;
+    let v30 = c[2 * s + 4] * v24 - c[4] * v28;
+    c[30 * s + 4] = v30;
+    let v31 = c[4] * v26 - c[s + 4] * v24;
+    c[31 * s + 4] = v31;
+    let v32 = v31 * z[4];
+    c[32 * s + 4] = v32;
+    let v33 = c[4 * s + 4] * v28 - c[5 * s + 4] * v26;
+    c[33 * s + 4] = v33;
+    let v34 = c[5 * s + 4] * v24 - c[3 * s + 4] * v28;
+    c[34 * s + 4] = v34;
+    let v35 = c[3 * s + 4] * v26 - c[4 * s + 4] * v24;
+    c[35 * s + 4] = v35;
+    let v36 = v24 * v32 + v33;
+    c[36 * s + 4] = v36;
+    let v37 = v26 * v32 + v34;
+    c[37 * s + 4] = v37;
+    let v38 = v28 * v32 + v35;
+    c[38 * s + 4] = v38;
+}
+
 /// The pass of order `k >= 1` of the kernel `routh_general`.
 #[inline(always)]
 fn routh_general<T: Coefficient, const FMA: bool>(
@@ -888,6 +1051,97 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     c[48 * s + 4 + k] = v48;
     let v49 = recurrence::mul_plus::<T, FMA>(c[34 * s + 4], v34, c[38 * s + 4], v38, v44, h[23]);
     c[49 * s + 4 + k] = v49;
+}
+
+/// Order 0 of the kernel `routh_general`.
+#[inline(always)]
+fn routh_general_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 14]) {
+    let v7 = c[4] * z[0];
+    c[7 * s + 4] = v7;
+    let v8 = c[s + 4] * z[1];
+    c[8 * s + 4] = v8;
+    let v9 = c[2 * s + 4] * z[2];
+    c[9 * s + 4] = v9;
+    let v10 = v9 + z[3];
+    c[10 * s + 4] = v10;
+    let v11 = v7 * v7 + v8 * v8;
+    c[11 * s + 4] = v11;
+    let v12 = v10 * v10;
+    c[12 * s + 4] = v12;
+    let v13 = v11 + v12;
+    c[13 * s + 4] = v13;
+    let v14 = v13 * z[4];
+    c[14 * s + 4] = v14;
+    let v15 = v14 + z[5];
+    c[15 * s + 4] = v15;
+    let v16 = v14 + z[6];
+    c[16 * s + 4] = v16;
+    let v17 = v11 / v15;
+    c[17 * s + 4] = v17;
+    let v18 = v12 / v16;
+    c[18 * s + 4] = v18;
+    let v19 = v17 + v18;
+    c[19 * s + 4] = v19;
+    let v20 = c[3 * s + 4] * v7 + c[4 * s + 4] * v8;
+    c[20 * s + 4] = v20;
+    let v21 = c[5 * s + 4] * v10;
+    c[21 * s + 4] = v21;
+    let v22 = v20 / v15;
+    c[22 * s + 4] = v22;
+    let v23 = v21 / v16;
+    c[23 * s + 4] = v23;
+    let v24 = v22 + v23;
+    c[24 * s + 4] = v24;
+    let v25 = v24 * z[7];
+    c[25 * s + 4] = v25;
+    let v26 = v19 * z[8];
+    c[26 * s + 4] = v26;
+    let v27 = T::from_f64(z[9]) - v26;
+    c[27 * s + 4] = v27;
+    let v28 = v25 / v27;
+    c[28 * s + 4] = v28;
+    let v29 = v7 * v28 + c[3 * s + 4];
+    c[29 * s + 4] = v29;
+    let v30 = v29 / v15;
+    c[30 * s + 4] = v30;
+    let v31 = v8 * v28 + c[4 * s + 4];
+    c[31 * s + 4] = v31;
+    let v32 = v31 / v15;
+    c[32 * s + 4] = v32;
+    let v33 = v10 * v28 + c[5 * s + 4];
+    c[33 * s + 4] = v33;
+    let v34 = v33 / v16;
+    c[34 * s + 4] = v34;
+    let v35 = c[s + 4] * v34 - c[2 * s + 4] * v32;
+    c[35 * s + 4] = v35;
+    let v36 = c[2 * s + 4] * v30 - c[4] * v34;
+    c[36 * s + 4] = v36;
+    let v37 = c[4] * v32 - c[s + 4] * v30;
+    c[37 * s + 4] = v37;
+    let v38 = v37 * z[10];
+    c[38 * s + 4] = v38;
+    let v39 = c[s + 4] * z[11];
+    c[39 * s + 4] = v39;
+    let v40 = c[4] * z[12];
+    c[40 * s + 4] = v40;
+    let v41 = T::from_f64(z[13]) - v40;
+    c[41 * s + 4] = v41;
+    let v42 = c[4 * s + 4] * v34 - c[5 * s + 4] * v32;
+    c[42 * s + 4] = v42;
+    let v43 = c[5 * s + 4] * v30 - c[3 * s + 4] * v34;
+    c[43 * s + 4] = v43;
+    let v44 = c[3 * s + 4] * v32 - c[4 * s + 4] * v30;
+    c[44 * s + 4] = v44;
+    let v45 = v39 + v42;
+    c[45 * s + 4] = v45;
+    let v46 = v30 * v38 + v45;
+    c[46 * s + 4] = v46;
+    let v47 = v41 + v43;
+    c[47 * s + 4] = v47;
+    let v48 = v32 * v38 + v47;
+    c[48 * s + 4] = v48;
+    let v49 = v34 * v38 + v44;
+    c[49 * s + 4] = v49;
 }
 
 /// The histories of the kernels `routh_general`, `routh_general_free` at order `k >= 1` ([`histories`]).
@@ -1475,6 +1729,87 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     c[44 * s + 4 + k] = v44;
 }
 
+/// Order 0 of the kernel `routh_general_free`.
+#[inline(always)]
+fn routh_general_free_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 11]) {
+    let v7 = c[4] * z[0];
+    c[7 * s + 4] = v7;
+    let v8 = c[s + 4] * z[1];
+    c[8 * s + 4] = v8;
+    let v9 = c[2 * s + 4] * z[2];
+    c[9 * s + 4] = v9;
+    let v10 = v9 + z[3];
+    c[10 * s + 4] = v10;
+    let v11 = v7 * v7 + v8 * v8;
+    c[11 * s + 4] = v11;
+    let v12 = v10 * v10;
+    c[12 * s + 4] = v12;
+    let v13 = v11 + v12;
+    c[13 * s + 4] = v13;
+    let v14 = v13 * z[4];
+    c[14 * s + 4] = v14;
+    let v15 = v14 + z[5];
+    c[15 * s + 4] = v15;
+    let v16 = v14 + z[6];
+    c[16 * s + 4] = v16;
+    let v17 = v11 / v15;
+    c[17 * s + 4] = v17;
+    let v18 = v12 / v16;
+    c[18 * s + 4] = v18;
+    let v19 = v17 + v18;
+    c[19 * s + 4] = v19;
+    let v20 = c[3 * s + 4] * v7 + c[4 * s + 4] * v8;
+    c[20 * s + 4] = v20;
+    let v21 = c[5 * s + 4] * v10;
+    c[21 * s + 4] = v21;
+    let v22 = v20 / v15;
+    c[22 * s + 4] = v22;
+    let v23 = v21 / v16;
+    c[23 * s + 4] = v23;
+    let v24 = v22 + v23;
+    c[24 * s + 4] = v24;
+    let v25 = v24 * z[7];
+    c[25 * s + 4] = v25;
+    let v26 = v19 * z[8];
+    c[26 * s + 4] = v26;
+    let v27 = T::from_f64(z[9]) - v26;
+    c[27 * s + 4] = v27;
+    let v28 = v25 / v27;
+    c[28 * s + 4] = v28;
+    let v29 = v7 * v28 + c[3 * s + 4];
+    c[29 * s + 4] = v29;
+    let v30 = v29 / v15;
+    c[30 * s + 4] = v30;
+    let v31 = v8 * v28 + c[4 * s + 4];
+    c[31 * s + 4] = v31;
+    let v32 = v31 / v15;
+    c[32 * s + 4] = v32;
+    let v33 = v10 * v28 + c[5 * s + 4];
+    c[33 * s + 4] = v33;
+    let v34 = v33 / v16;
+    c[34 * s + 4] = v34;
+    let v35 = c[s + 4] * v34 - c[2 * s + 4] * v32;
+    c[35 * s + 4] = v35;
+    let v36 = c[2 * s + 4] * v30 - c[4] * v34;
+    c[36 * s + 4] = v36;
+    let v37 = c[4] * v32 - c[s + 4] * v30;
+    c[37 * s + 4] = v37;
+    let v38 = v37 * z[10];
+    c[38 * s + 4] = v38;
+    let v39 = c[4 * s + 4] * v34 - c[5 * s + 4] * v32;
+    c[39 * s + 4] = v39;
+    let v40 = c[5 * s + 4] * v30 - c[3 * s + 4] * v34;
+    c[40 * s + 4] = v40;
+    let v41 = c[3 * s + 4] * v32 - c[4 * s + 4] * v30;
+    c[41 * s + 4] = v41;
+    let v42 = v30 * v38 + v39;
+    c[42 * s + 4] = v42;
+    let v43 = v32 * v38 + v40;
+    c[43 * s + 4] = v43;
+    let v44 = v34 * v38 + v41;
+    c[44 * s + 4] = v44;
+}
+
 /// The pass of order `k >= 1` of the kernel `chaplygin`.
 #[inline(always)]
 fn chaplygin<T: Coefficient, const FMA: bool>(
@@ -1554,6 +1889,81 @@ fn chaplygin<T: Coefficient, const FMA: bool>(
     c[40 * s + 4 + k] = v40;
     let v41 = recurrence::dot_sub::<T, FMA>([c[3 * s + 4], c[3 * s + 4 + k], c[33 * s + 4], v33], [c[4 * s + 4], c[4 * s + 4 + k], c[31 * s + 4], v31], h[24]);
     c[41 * s + 4 + k] = v41;
+}
+
+/// Order 0 of the kernel `chaplygin`.
+#[inline(always)]
+fn chaplygin_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 4]) {
+    let v7 = c[4] * c[4];
+    c[7 * s + 4] = v7;
+    let v8 = c[s + 4] * c[s + 4];
+    c[8 * s + 4] = v8;
+    let v9 = c[2 * s + 4] * c[2 * s + 4];
+    c[9 * s + 4] = v9;
+    let v10 = v7 + v8;
+    c[10 * s + 4] = v10;
+    let v11 = v9 + v10;
+    c[11 * s + 4] = v11;
+    let v12 = v11 + z[0];
+    c[12 * s + 4] = v12;
+    let v13 = v11 + z[1];
+    c[13 * s + 4] = v13;
+    let v14 = v11 + z[2];
+    c[14 * s + 4] = v14;
+    let v15 = v7 / v12;
+    c[15 * s + 4] = v15;
+    let v16 = v8 / v13;
+    c[16 * s + 4] = v16;
+    let v17 = v9 / v14;
+    c[17 * s + 4] = v17;
+    let v18 = v15 + v16;
+    c[18 * s + 4] = v18;
+    let v19 = v17 + v18;
+    c[19 * s + 4] = v19;
+    let v20 = c[4] * c[3 * s + 4];
+    c[20 * s + 4] = v20;
+    let v21 = c[s + 4] * c[4 * s + 4];
+    c[21 * s + 4] = v21;
+    let v22 = c[2 * s + 4] * c[5 * s + 4];
+    c[22 * s + 4] = v22;
+    let v23 = v20 / v12;
+    c[23 * s + 4] = v23;
+    let v24 = v21 / v13;
+    c[24 * s + 4] = v24;
+    let v25 = v22 / v14;
+    c[25 * s + 4] = v25;
+    let v26 = v23 + v24;
+    c[26 * s + 4] = v26;
+    let v27 = v25 + v26;
+    c[27 * s + 4] = v27;
+    let v28 = T::from_f64(z[3]) - v19;
+    c[28 * s + 4] = v28;
+    let v29 = v27 / v28;
+    c[29 * s + 4] = v29;
+    let v30 = c[4] * v29 + c[3 * s + 4];
+    c[30 * s + 4] = v30;
+    let v31 = v30 / v12;
+    c[31 * s + 4] = v31;
+    let v32 = c[s + 4] * v29 + c[4 * s + 4];
+    c[32 * s + 4] = v32;
+    let v33 = v32 / v13;
+    c[33 * s + 4] = v33;
+    let v34 = c[2 * s + 4] * v29 + c[5 * s + 4];
+    c[34 * s + 4] = v34;
+    let v35 = v34 / v14;
+    c[35 * s + 4] = v35;
+    let v36 = c[s + 4] * v35 - c[2 * s + 4] * v33;
+    c[36 * s + 4] = v36;
+    let v37 = c[2 * s + 4] * v31 - c[4] * v35;
+    c[37 * s + 4] = v37;
+    let v38 = c[4] * v33 - c[s + 4] * v31;
+    c[38 * s + 4] = v38;
+    let v39 = c[4 * s + 4] * v35 - c[5 * s + 4] * v33;
+    c[39 * s + 4] = v39;
+    let v40 = c[5 * s + 4] * v31 - c[3 * s + 4] * v35;
+    c[40 * s + 4] = v40;
+    let v41 = c[3 * s + 4] * v33 - c[4 * s + 4] * v31;
+    c[41 * s + 4] = v41;
 }
 
 /// The histories of the kernels `chaplygin` at order `k >= 1` ([`histories`]).
@@ -2212,6 +2622,139 @@ fn ball<T: Coefficient, const FMA: bool>(
     c[69 * s + 4 + k] = v69;
     let v70 = recurrence::mul_plus::<T, FMA>(c[44 * s + 4], v44, c[52 * s + 4], v52, v69, h[27]);
     c[70 * s + 4 + k] = v70;
+}
+
+/// Order 0 of the kernel `ball`.
+#[inline(always)]
+fn ball_zero<T: Coefficient>(c: &mut [T], s: usize, z: &[f64; 22]) {
+    let v7 = c[4] * z[0];
+    c[7 * s + 4] = v7;
+    let v8 = v7 + z[1];
+    c[8 * s + 4] = v8;
+    let v9 = c[s + 4] * z[2];
+    c[9 * s + 4] = v9;
+    let v10 = v9 + z[3];
+    c[10 * s + 4] = v10;
+    let v11 = c[2 * s + 4] * z[4];
+    c[11 * s + 4] = v11;
+    let v12 = v11 + z[5];
+    c[12 * s + 4] = v12;
+    let v13 = v8 * v8;
+    c[13 * s + 4] = v13;
+    let v14 = v10 * v10;
+    c[14 * s + 4] = v14;
+    let v15 = v12 * v12;
+    c[15 * s + 4] = v15;
+    let v16 = v13 + v14;
+    c[16 * s + 4] = v16;
+    let v17 = v15 + v16;
+    c[17 * s + 4] = v17;
+    let v18 = v17 * z[6];
+    c[18 * s + 4] = v18;
+    let v19 = v18 + z[7];
+    c[19 * s + 4] = v19;
+    let v20 = v18 + z[8];
+    c[20 * s + 4] = v20;
+    let v21 = v18 + z[9];
+    c[21 * s + 4] = v21;
+    let v22 = v13 / v19;
+    c[22 * s + 4] = v22;
+    let v23 = v14 / v20;
+    c[23 * s + 4] = v23;
+    let v24 = v15 / v21;
+    c[24 * s + 4] = v24;
+    let v25 = v22 + v23;
+    c[25 * s + 4] = v25;
+    let v26 = v24 + v25;
+    c[26 * s + 4] = v26;
+    let v27 = c[3 * s + 4] * v8;
+    c[27 * s + 4] = v27;
+    let v28 = c[4 * s + 4] * v10;
+    c[28 * s + 4] = v28;
+    let v29 = c[5 * s + 4] * v12;
+    c[29 * s + 4] = v29;
+    let v30 = v27 / v19;
+    c[30 * s + 4] = v30;
+    let v31 = v28 / v20;
+    c[31 * s + 4] = v31;
+    let v32 = v29 / v21;
+    c[32 * s + 4] = v32;
+    let v33 = v30 + v31;
+    c[33 * s + 4] = v33;
+    let v34 = v32 + v33;
+    c[34 * s + 4] = v34;
+    let v35 = v34 * z[10];
+    c[35 * s + 4] = v35;
+    let v36 = v26 * z[11];
+    c[36 * s + 4] = v36;
+    let v37 = T::from_f64(z[12]) - v36;
+    c[37 * s + 4] = v37;
+    let v38 = v35 / v37;
+    c[38 * s + 4] = v38;
+    let v39 = v8 * v38 + c[3 * s + 4];
+    c[39 * s + 4] = v39;
+    let v40 = v39 / v19;
+    c[40 * s + 4] = v40;
+    let v41 = v10 * v38 + c[4 * s + 4];
+    c[41 * s + 4] = v41;
+    let v42 = v41 / v20;
+    c[42 * s + 4] = v42;
+    let v43 = v12 * v38 + c[5 * s + 4];
+    c[43 * s + 4] = v43;
+    let v44 = v43 / v21;
+    c[44 * s + 4] = v44;
+    let v45 = c[s + 4] * v44 - c[2 * s + 4] * v42;
+    c[45 * s + 4] = v45;
+    let v46 = c[2 * s + 4] * v40 - c[4] * v44;
+    c[46 * s + 4] = v46;
+    let v47 = c[4] * v42 - c[s + 4] * v40;
+    c[47 * s + 4] = v47;
+    let v48 = v45 * z[13];
+    c[48 * s + 4] = v48;
+    let v49 = v46 * z[14];
+    c[49 * s + 4] = v49;
+    let v50 = v48 + v49;
+    c[50 * s + 4] = v50;
+    let v51 = v47 * z[15];
+    c[51 * s + 4] = v51;
+    let v52 = v50 + v51;
+    c[52 * s + 4] = v52;
+    let v53 = c[s + 4] * z[16];
+    c[53 * s + 4] = v53;
+    let v54 = c[2 * s + 4] * z[17];
+    c[54 * s + 4] = v54;
+    let v55 = v53 - v54;
+    c[55 * s + 4] = v55;
+    let v56 = c[2 * s + 4] * z[18];
+    c[56 * s + 4] = v56;
+    let v57 = c[4] * z[19];
+    c[57 * s + 4] = v57;
+    let v58 = v56 - v57;
+    c[58 * s + 4] = v58;
+    let v59 = c[4] * z[20];
+    c[59 * s + 4] = v59;
+    let v60 = c[s + 4] * z[21];
+    c[60 * s + 4] = v60;
+    let v61 = v59 - v60;
+    c[61 * s + 4] = v61;
+    let v62 = c[4 * s + 4] * v44 - c[5 * s + 4] * v42;
+    c[62 * s + 4] = v62;
+    let v63 = c[5 * s + 4] * v40 - c[3 * s + 4] * v44;
+    c[63 * s + 4] = v63;
+    let v64 = c[3 * s + 4] * v42 - c[4 * s + 4] * v40;
+    c[64 * s + 4] = v64;
+    let v65 = v55 + v62;
+    c[65 * s + 4] = v65;
+    let v66 = v40 * v52 + v65;
+    c[66 * s + 4] = v66;
+    let v67 = v58 + v63;
+    c[67 * s + 4] = v67;
+    let v68 = v42 * v52 + v67;
+    c[68 * s + 4] = v68;
+    let v69 = v61 + v64;
+    c[69 * s + 4] = v69;
+    let v70 = v44 * v52 + v69;
+    c[70 * s + 4] = v70;
 }
 
 /// The histories of the kernels `ball` at order `k >= 1` ([`histories`]).

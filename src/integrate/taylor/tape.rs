@@ -440,6 +440,8 @@ pub struct Tape<const N: usize, T = f64> {
     kernel: Option<usize>,
     /// The factors and divisors the kernel takes ([`super::codegen::factors`]).
     factors: Vec<f64>,
+    /// The inline constants the kernel's order 0 takes ([`super::codegen::constants`]).
+    inline: Vec<f64>,
 }
 
 /// Places before and after each slot's coefficients (see [`Tape`]), which nothing reads (the
@@ -586,15 +588,18 @@ impl<const N: usize> Tape<N> {
             hnext: vec![],
             kernel: None,
             factors: vec![],
+            inline: vec![],
         };
         let hist = histories(&tape.code, (first_op * stride + PAD) as u32, stride);
         let shape = codegen::shape(&tape);
         let kernel = kernels::SHAPES.iter().position(|(_, s)| *s == shape);
         let factors = codegen::factors(&tape.code);
+        let inline = codegen::constants(&tape.code);
         Tape {
             hist,
             kernel,
             factors,
+            inline,
             ..tape
         }
         .with_coefficients()
@@ -622,6 +627,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             hnext: vec![zero; self.hist.len()],
             kernel: self.kernel,
             factors: self.factors.clone(),
+            inline: self.inline.clone(),
         };
         for j in 0..tape.constants.len() {
             tape.set(N + 1 + j, 0, U::from_f64(tape.constants[j]));
@@ -850,9 +856,14 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         }
     }
 
-    /// Order 0 of every operation: the `f64` operations of the field themselves.
+    /// Order 0 of every operation: the `f64` operations of the field themselves (in the
+    /// generated kernel's straight-line code if the tape has one, the same operations).
     #[inline(always)]
     fn order_zero(&mut self) {
+        if let Some(kernel) = self.kernel {
+            kernels::zero(kernel, &mut self.coef, self.stride, &self.inline);
+            return;
+        }
         // Slices held in locals: the stores below cannot make the compiler reload them.
         let (code, c) = (&self.code[..], &mut self.coef[..]);
         let stride = self.stride;
