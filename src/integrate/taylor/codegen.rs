@@ -121,15 +121,7 @@ pub fn constants(code: &[Instr]) -> Vec<f64> {
 #[cfg(test)]
 fn order_zero<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
     let first = tape.first_op();
-    let slot = |a: u32| tape.slot_of(a);
-    let value = |a: u32| {
-        let x = slot(a);
-        if x >= first {
-            format!("v{x}")
-        } else {
-            format!("c[{}]", place(x))
-        }
-    };
+    let value = |a: u32| operand(tape, a, "");
     let (mut body, mut constant) = (String::new(), 0);
     for (j, instr) in tape.code().iter().enumerate() {
         let dest = first + j;
@@ -639,6 +631,18 @@ fn place(x: usize) -> String {
     }
 }
 
+/// Operand `a` in a generated function: the local `v{slot}` of an operation of the tape (the
+/// function computed it), else the coefficient `c[place + offset]` of its slot.
+#[cfg(test)]
+fn operand<const N: usize>(tape: &Tape<N>, a: u32, offset: &str) -> String {
+    let x = tape.slot_of(a);
+    if x >= tape.first_op() {
+        format!("v{x}")
+    } else {
+        format!("c[{}{offset}]", place(x))
+    }
+}
+
 /// The kernel of one family.
 #[cfg(test)]
 fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
@@ -647,14 +651,7 @@ fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
     let at = |x: usize| format!("c[{}", place(x));
     // Order 0 and order k of a slot: a local for an operation of this pass.
     let zero = |a: u32| format!("{}]", at(slot(a)));
-    let order_k = |a: u32| {
-        let x = slot(a);
-        if x >= first {
-            format!("v{x}")
-        } else {
-            format!("{} + k]", at(x))
-        }
-    };
+    let order_k = |a: u32| operand(tape, a, " + k");
     let (mut body, mut hist, mut factor) = (String::new(), 0, 0);
     for (j, instr) in tape.code().iter().enumerate() {
         let dest = first + j;
