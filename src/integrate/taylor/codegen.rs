@@ -121,7 +121,7 @@ pub fn constants(code: &[Instr]) -> Vec<f64> {
 #[cfg(test)]
 fn order_zero<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
     let first = tape.first_op();
-    let value = |a: u32| operand(tape, a, "");
+    let v = |a: u32| operand(tape, a, "");
     let (mut body, mut constant) = (String::new(), 0);
     for (j, instr) in tape.code().iter().enumerate() {
         let dest = first + j;
@@ -129,7 +129,6 @@ fn order_zero<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
             constant += 1;
             format!("z[{}]", constant - 1)
         };
-        let v = |a: u32| value(a);
         let expr = match *instr {
             Instr::Add(a, b) => format!("{} + {}", v(a), v(b)),
             Instr::Sub(a, b) => format!("{} - {}", v(a), v(b)),
@@ -511,73 +510,70 @@ fn sums(list: &[Spread], paired: bool) -> String {
                     .chain(h.second.map(|(d, e, minus)| (i, d, e, minus)))
             })
             .collect();
-        {
-            let read = loads(terms.iter().map(|&(_, a, b, _)| (a, b)));
-            let names: Vec<String> = read
-                .iter()
-                .map(|&(x, right)| format!("{}{x}", if right { 'b' } else { 'a' }))
-                .collect();
-            let values: Vec<String> = read
-                .iter()
-                .map(|&(x, right)| {
-                    let order = if right { "k - j" } else { "j" };
-                    format!("at(c, {} + {order})", place(x))
-                })
-                .collect();
-            let add = |body: &mut String, sum: char, right: char| {
-                for &(i, a, b, minus) in &terms {
-                    let line = term(
-                        &format!("{sum}{i}"),
-                        &format!("a{a}"),
-                        &format!("{right}{b}"),
-                        minus,
-                    );
-                    writeln!(body, "        {line}").expect("writing to a String");
-                }
-            };
-            // The coefficients of the group's terms at `j`, loaded once.
-            let load = format!(
-                "// SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.\n        \
-                 let ({}) = unsafe {{ ({}) }};",
-                names.join(", "),
-                values.join(", ")
-            );
-            if !paired {
-                writeln!(body, "    for j in lo..hi {{\n        {load}")
-                    .expect("writing to a String");
-                add(&mut body, 's', 'b');
-                body.push_str("    }\n");
-            } else {
-                // The first term apart: order `k + 1` has no term `j = 1` here.
-                let (carried, right_names): (Vec<String>, Vec<String>) = read
-                    .iter()
-                    .filter(|r| r.1)
-                    .map(|r| (format!("p{}", r.0), format!("b{}", r.0)))
-                    .unzip();
-                let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
-                writeln!(
-                    body,
-                    "    let {} = {{\n        let j = 1;\n        {load}",
-                    tuple(&mutable)
-                )
-                .expect("writing to a String");
-                add(&mut body, 's', 'b');
-                writeln!(
-                    body,
-                    "        {}\n    }};\n    for j in 2..k {{\n        {load}",
-                    tuple(&right_names)
-                )
-                .expect("writing to a String");
-                add(&mut body, 's', 'b');
-                add(&mut body, 't', 'p');
-                writeln!(
-                    body,
-                    "        {} = {};\n    }}",
-                    tuple(&carried),
-                    tuple(&right_names)
-                )
-                .expect("writing to a String");
+        let read = loads(terms.iter().map(|&(_, a, b, _)| (a, b)));
+        let names: Vec<String> = read
+            .iter()
+            .map(|&(x, right)| format!("{}{x}", if right { 'b' } else { 'a' }))
+            .collect();
+        let values: Vec<String> = read
+            .iter()
+            .map(|&(x, right)| {
+                let order = if right { "k - j" } else { "j" };
+                format!("at(c, {} + {order})", place(x))
+            })
+            .collect();
+        let add = |body: &mut String, sum: char, right: char| {
+            for &(i, a, b, minus) in &terms {
+                let line = term(
+                    &format!("{sum}{i}"),
+                    &format!("a{a}"),
+                    &format!("{right}{b}"),
+                    minus,
+                );
+                writeln!(body, "        {line}").expect("writing to a String");
             }
+        };
+        // The coefficients of the group's terms at `j`, loaded once.
+        let load = format!(
+            "// SAFETY: the assertion above, with `1 <= j, k - j <= k - 1`.\n        \
+             let ({}) = unsafe {{ ({}) }};",
+            names.join(", "),
+            values.join(", ")
+        );
+        if !paired {
+            writeln!(body, "    for j in lo..hi {{\n        {load}").expect("writing to a String");
+            add(&mut body, 's', 'b');
+            body.push_str("    }\n");
+        } else {
+            // The first term apart: order `k + 1` has no term `j = 1` here.
+            let (carried, right_names): (Vec<String>, Vec<String>) = read
+                .iter()
+                .filter(|r| r.1)
+                .map(|r| (format!("p{}", r.0), format!("b{}", r.0)))
+                .unzip();
+            let mutable: Vec<String> = carried.iter().map(|p| format!("mut {p}")).collect();
+            writeln!(
+                body,
+                "    let {} = {{\n        let j = 1;\n        {load}",
+                tuple(&mutable)
+            )
+            .expect("writing to a String");
+            add(&mut body, 's', 'b');
+            writeln!(
+                body,
+                "        {}\n    }};\n    for j in 2..k {{\n        {load}",
+                tuple(&right_names)
+            )
+            .expect("writing to a String");
+            add(&mut body, 's', 'b');
+            add(&mut body, 't', 'p');
+            writeln!(
+                body,
+                "        {} = {};\n    }}",
+                tuple(&carried),
+                tuple(&right_names)
+            )
+            .expect("writing to a String");
         }
         if !paired {
             body.push_str("    if !even {\n        // SAFETY: the assertion above, with `1 <= k - 1`.\n        unsafe {\n");
