@@ -29,8 +29,8 @@
 //! A kernel is keyed by the **shape** of its tape ([`shape`]): the operations with their
 //! operand slots, the constants left out. The constants that recording folded (the body's
 //! parameters, such as `m R` or `2 R m G`) are data: the constant slots of the tape's storage,
-//! and the factors and divisors of [`Instr::MulC`] and [`Instr::DivC`], which the kernel takes
-//! as an array ([`factors`]). The shape therefore depends on the model family (which
+//! and the inline constants of the instructions, which the kernel takes as an array
+//! ([`constants`]). The shape therefore depends on the model family (which
 //! parameters vanish or equal 1, which constants coincide), not on the parameter values: a
 //! tape recorded from another body of the family finds the same kernel ([`Tape::record`] looks
 //! its shape up), and any other tape runs in the interpreter.
@@ -88,21 +88,10 @@ pub fn shape<const N: usize>(tape: &Tape<N>) -> String {
     text
 }
 
-/// The factors and divisors of the tape's [`Instr::MulC`] and [`Instr::DivC`], in the order of
-/// the instructions: the array a kernel takes (the other inline constants do not enter the
-/// orders `k >= 1`).
-pub fn factors(code: &[Instr]) -> Vec<f64> {
-    code.iter()
-        .filter_map(|instr| match *instr {
-            Instr::MulC(_, m) | Instr::DivC(_, m) => Some(m),
-            _ => None,
-        })
-        .collect()
-}
-
 /// The inline constants of the tape's instructions, in their order (those of
 /// [`Instr::AddC`], [`Instr::CSub`], [`Instr::MulC`], [`Instr::DivC`], [`Instr::CDiv`]): the
-/// array a kernel's order 0 takes.
+/// array a kernel takes (its orders `k >= 1` read only the factors and divisors of
+/// [`Instr::MulC`] and [`Instr::DivC`]).
 pub fn constants(code: &[Instr]) -> Vec<f64> {
     code.iter()
         .filter_map(|instr| match *instr {
@@ -208,7 +197,7 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
          \n\
          /// The pass of order `k >= 1` through the tape of shape `SHAPES[kernel]`, in slots of\n\
          /// `s` coefficients (order 0 of each `PAD` places into its slot), with the histories `h`\n\
-         /// ([`super::convolution`]) and the factors `q` ([`super::codegen::factors`]).\n\
+         /// ([`super::convolution`]) and the inline constants `q` ([`super::codegen::constants`]).\n\
          #[inline(always)]\n\
          pub(super) fn pass<T: Coefficient, const FMA: bool>(\n\
         \x20   kernel: usize,\n\
@@ -228,7 +217,7 @@ pub fn source<const N: usize>(families: &[(&str, &Tape<N>)], regenerate: &str) -
              \x20           s,\n\
              \x20           k,\n\
              \x20           h.try_into().expect(\"the histories of the shape\"),\n\
-             \x20           q.try_into().expect(\"the factors of the shape\"),\n\
+             \x20           q.try_into().expect(\"the constants of the shape\"),\n\
              \x20       ),"
         )
         .expect("writing to a String");
@@ -648,16 +637,17 @@ fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
     // Order 0 and order k of a slot: a local for an operation of this pass.
     let zero = |a: u32| format!("{}]", at(slot(a)));
     let order_k = |a: u32| operand(tape, a, " + k");
-    let (mut body, mut hist, mut factor) = (String::new(), 0, 0);
+    let (mut body, mut hist, mut constant, mut read) = (String::new(), 0, 0, false);
     for (j, instr) in tape.code().iter().enumerate() {
         let dest = first + j;
         let mut h = || {
             hist += 1;
             format!("h[{}]", hist - 1)
         };
+        // The instruction's inline constant, the next of `constants` (read by `MulC`, `DivC`).
         let mut q = || {
-            factor += 1;
-            format!("q[{}]", factor - 1)
+            read = true;
+            format!("q[{constant}]")
         };
         let ends =
             |a: u32, b: u32| format!("{}, {}, {}, {}", zero(a), order_k(a), zero(b), order_k(b));
@@ -727,8 +717,11 @@ fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
             at(dest)
         )
         .expect("writing to a String");
+        if parts(instr).2 {
+            constant += 1;
+        }
     }
-    let q_name = if factor > 0 { "q" } else { "_q" };
+    let q_name = if read { "q" } else { "_q" };
     writeln!(
         w,
         "\n/// The pass of order `k >= 1` of the kernel `{name}`.\n\
@@ -738,7 +731,7 @@ fn kernel<const N: usize>(w: &mut String, name: &str, tape: &Tape<N>) {
         \x20   s: usize,\n\
         \x20   k: usize,\n\
         \x20   h: &[T; {hist}],\n\
-        \x20   {q_name}: &[f64; {factor}],\n\
+        \x20   {q_name}: &[f64; {constant}],\n\
          ) {{\n{body}}}"
     )
     .expect("writing to a String");

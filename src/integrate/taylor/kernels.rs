@@ -18,7 +18,7 @@ pub(super) const SHAPES: [(&str, &str); 6] = [
 
 /// The pass of order `k >= 1` through the tape of shape `SHAPES[kernel]`, in slots of
 /// `s` coefficients (order 0 of each `PAD` places into its slot), with the histories `h`
-/// ([`super::convolution`]) and the factors `q` ([`super::codegen::factors`]).
+/// ([`super::convolution`]) and the inline constants `q` ([`super::codegen::constants`]).
 #[inline(always)]
 pub(super) fn pass<T: Coefficient, const FMA: bool>(
     kernel: usize,
@@ -34,42 +34,42 @@ pub(super) fn pass<T: Coefficient, const FMA: bool>(
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         1 => routh_free::<T, FMA>(
             c,
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         2 => routh_general::<T, FMA>(
             c,
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         3 => routh_general_free::<T, FMA>(
             c,
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         4 => chaplygin::<T, FMA>(
             c,
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         5 => ball::<T, FMA>(
             c,
             s,
             k,
             h.try_into().expect("the histories of the shape"),
-            q.try_into().expect("the factors of the shape"),
+            q.try_into().expect("the constants of the shape"),
         ),
         _ => unreachable!("a kernel of SHAPES"),
     }
@@ -157,7 +157,7 @@ fn routh<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 24],
-    q: &[f64; 3],
+    q: &[f64; 8],
 ) {
     let v7 = c[2 * s + 4 + k];
     c[7 * s + 4 + k] = v7;
@@ -209,11 +209,11 @@ fn routh<T: Coefficient, const FMA: bool>(
     c[30 * s + 4 + k] = v30;
     let v31 = recurrence::dot_sub::<T, FMA>([c[4], c[4 + k], c[26 * s + 4], v26], [c[s + 4], c[s + 4 + k], c[24 * s + 4], v24], h[17]);
     c[31 * s + 4 + k] = v31;
-    let v32 = v31 * q[0];
+    let v32 = v31 * q[4];
     c[32 * s + 4 + k] = v32;
-    let v33 = c[s + 4 + k] * q[1];
+    let v33 = c[s + 4 + k] * q[5];
     c[33 * s + 4 + k] = v33;
-    let v34 = c[4 + k] * q[2];
+    let v34 = c[4 + k] * q[6];
     c[34 * s + 4 + k] = v34;
     let v35 = -v34;
     c[35 * s + 4 + k] = v35;
@@ -819,7 +819,7 @@ fn routh_free<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 24],
-    q: &[f64; 1],
+    q: &[f64; 5],
 ) {
     let v7 = c[2 * s + 4 + k];
     c[7 * s + 4 + k] = v7;
@@ -871,7 +871,7 @@ fn routh_free<T: Coefficient, const FMA: bool>(
     c[30 * s + 4 + k] = v30;
     let v31 = recurrence::dot_sub::<T, FMA>([c[4], c[4 + k], c[26 * s + 4], v26], [c[s + 4], c[s + 4 + k], c[24 * s + 4], v24], h[17]);
     c[31 * s + 4 + k] = v31;
-    let v32 = v31 * q[0];
+    let v32 = v31 * q[4];
     c[32 * s + 4 + k] = v32;
     let v33 = recurrence::dot_sub::<T, FMA>([c[4 * s + 4], c[4 * s + 4 + k], c[28 * s + 4], v28], [c[5 * s + 4], c[5 * s + 4 + k], c[26 * s + 4], v26], h[18]);
     c[33 * s + 4 + k] = v33;
@@ -963,7 +963,7 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 24],
-    q: &[f64; 9],
+    q: &[f64; 14],
 ) {
     let v7 = c[4 + k] * q[0];
     c[7 * s + 4 + k] = v7;
@@ -979,7 +979,7 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     c[12 * s + 4 + k] = v12;
     let v13 = v11 + v12;
     c[13 * s + 4 + k] = v13;
-    let v14 = v13 * q[3];
+    let v14 = v13 * q[4];
     c[14 * s + 4 + k] = v14;
     let v15 = v14;
     c[15 * s + 4 + k] = v15;
@@ -1001,9 +1001,9 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     c[23 * s + 4 + k] = v23;
     let v24 = v22 + v23;
     c[24 * s + 4 + k] = v24;
-    let v25 = v24 * q[4];
+    let v25 = v24 * q[7];
     c[25 * s + 4 + k] = v25;
-    let v26 = v19 * q[5];
+    let v26 = v19 * q[8];
     c[26 * s + 4 + k] = v26;
     let v27 = -v26;
     c[27 * s + 4 + k] = v27;
@@ -1027,11 +1027,11 @@ fn routh_general<T: Coefficient, const FMA: bool>(
     c[36 * s + 4 + k] = v36;
     let v37 = recurrence::dot_sub::<T, FMA>([c[4], c[4 + k], c[32 * s + 4], v32], [c[s + 4], c[s + 4 + k], c[30 * s + 4], v30], h[17]);
     c[37 * s + 4 + k] = v37;
-    let v38 = v37 * q[6];
+    let v38 = v37 * q[10];
     c[38 * s + 4 + k] = v38;
-    let v39 = c[s + 4 + k] * q[7];
+    let v39 = c[s + 4 + k] * q[11];
     c[39 * s + 4 + k] = v39;
-    let v40 = c[4 + k] * q[8];
+    let v40 = c[4 + k] * q[12];
     c[40 * s + 4 + k] = v40;
     let v41 = -v40;
     c[41 * s + 4 + k] = v41;
@@ -1649,7 +1649,7 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 24],
-    q: &[f64; 7],
+    q: &[f64; 11],
 ) {
     let v7 = c[4 + k] * q[0];
     c[7 * s + 4 + k] = v7;
@@ -1665,7 +1665,7 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     c[12 * s + 4 + k] = v12;
     let v13 = v11 + v12;
     c[13 * s + 4 + k] = v13;
-    let v14 = v13 * q[3];
+    let v14 = v13 * q[4];
     c[14 * s + 4 + k] = v14;
     let v15 = v14;
     c[15 * s + 4 + k] = v15;
@@ -1687,9 +1687,9 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     c[23 * s + 4 + k] = v23;
     let v24 = v22 + v23;
     c[24 * s + 4 + k] = v24;
-    let v25 = v24 * q[4];
+    let v25 = v24 * q[7];
     c[25 * s + 4 + k] = v25;
-    let v26 = v19 * q[5];
+    let v26 = v19 * q[8];
     c[26 * s + 4 + k] = v26;
     let v27 = -v26;
     c[27 * s + 4 + k] = v27;
@@ -1713,7 +1713,7 @@ fn routh_general_free<T: Coefficient, const FMA: bool>(
     c[36 * s + 4 + k] = v36;
     let v37 = recurrence::dot_sub::<T, FMA>([c[4], c[4 + k], c[32 * s + 4], v32], [c[s + 4], c[s + 4 + k], c[30 * s + 4], v30], h[17]);
     c[37 * s + 4 + k] = v37;
-    let v38 = v37 * q[6];
+    let v38 = v37 * q[10];
     c[38 * s + 4 + k] = v38;
     let v39 = recurrence::dot_sub::<T, FMA>([c[4 * s + 4], c[4 * s + 4 + k], c[34 * s + 4], v34], [c[5 * s + 4], c[5 * s + 4 + k], c[32 * s + 4], v32], h[18]);
     c[39 * s + 4 + k] = v39;
@@ -1817,7 +1817,7 @@ fn chaplygin<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 25],
-    _q: &[f64; 0],
+    _q: &[f64; 4],
 ) {
     let v7 = recurrence::product::<T, FMA>(c[4], c[4 + k], c[4], c[4 + k], h[0]);
     c[7 * s + 4 + k] = v7;
@@ -2492,17 +2492,17 @@ fn ball<T: Coefficient, const FMA: bool>(
     s: usize,
     k: usize,
     h: &[T; 28],
-    q: &[f64; 15],
+    q: &[f64; 22],
 ) {
     let v7 = c[4 + k] * q[0];
     c[7 * s + 4 + k] = v7;
     let v8 = v7;
     c[8 * s + 4 + k] = v8;
-    let v9 = c[s + 4 + k] * q[1];
+    let v9 = c[s + 4 + k] * q[2];
     c[9 * s + 4 + k] = v9;
     let v10 = v9;
     c[10 * s + 4 + k] = v10;
-    let v11 = c[2 * s + 4 + k] * q[2];
+    let v11 = c[2 * s + 4 + k] * q[4];
     c[11 * s + 4 + k] = v11;
     let v12 = v11;
     c[12 * s + 4 + k] = v12;
@@ -2516,7 +2516,7 @@ fn ball<T: Coefficient, const FMA: bool>(
     c[16 * s + 4 + k] = v16;
     let v17 = v15 + v16;
     c[17 * s + 4 + k] = v17;
-    let v18 = v17 * q[3];
+    let v18 = v17 * q[6];
     c[18 * s + 4 + k] = v18;
     let v19 = v18;
     c[19 * s + 4 + k] = v19;
@@ -2550,9 +2550,9 @@ fn ball<T: Coefficient, const FMA: bool>(
     c[33 * s + 4 + k] = v33;
     let v34 = v32 + v33;
     c[34 * s + 4 + k] = v34;
-    let v35 = v34 * q[4];
+    let v35 = v34 * q[10];
     c[35 * s + 4 + k] = v35;
-    let v36 = v26 * q[5];
+    let v36 = v26 * q[11];
     c[36 * s + 4 + k] = v36;
     let v37 = -v36;
     c[37 * s + 4 + k] = v37;
@@ -2576,31 +2576,31 @@ fn ball<T: Coefficient, const FMA: bool>(
     c[46 * s + 4 + k] = v46;
     let v47 = recurrence::dot_sub::<T, FMA>([c[4], c[4 + k], c[42 * s + 4], v42], [c[s + 4], c[s + 4 + k], c[40 * s + 4], v40], h[21]);
     c[47 * s + 4 + k] = v47;
-    let v48 = v45 * q[6];
+    let v48 = v45 * q[13];
     c[48 * s + 4 + k] = v48;
-    let v49 = v46 * q[7];
+    let v49 = v46 * q[14];
     c[49 * s + 4 + k] = v49;
     let v50 = v48 + v49;
     c[50 * s + 4 + k] = v50;
-    let v51 = v47 * q[8];
+    let v51 = v47 * q[15];
     c[51 * s + 4 + k] = v51;
     let v52 = v50 + v51;
     c[52 * s + 4 + k] = v52;
-    let v53 = c[s + 4 + k] * q[9];
+    let v53 = c[s + 4 + k] * q[16];
     c[53 * s + 4 + k] = v53;
-    let v54 = c[2 * s + 4 + k] * q[10];
+    let v54 = c[2 * s + 4 + k] * q[17];
     c[54 * s + 4 + k] = v54;
     let v55 = v53 - v54;
     c[55 * s + 4 + k] = v55;
-    let v56 = c[2 * s + 4 + k] * q[11];
+    let v56 = c[2 * s + 4 + k] * q[18];
     c[56 * s + 4 + k] = v56;
-    let v57 = c[4 + k] * q[12];
+    let v57 = c[4 + k] * q[19];
     c[57 * s + 4 + k] = v57;
     let v58 = v56 - v57;
     c[58 * s + 4 + k] = v58;
-    let v59 = c[4 + k] * q[13];
+    let v59 = c[4 + k] * q[20];
     c[59 * s + 4 + k] = v59;
-    let v60 = c[s + 4 + k] * q[14];
+    let v60 = c[s + 4 + k] * q[21];
     c[60 * s + 4 + k] = v60;
     let v61 = v59 - v60;
     c[61 * s + 4 + k] = v61;

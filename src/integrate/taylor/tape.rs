@@ -438,9 +438,7 @@ pub struct Tape<const N: usize, T = f64> {
     hnext: Vec<T>,
     /// The generated kernel of the tape's shape, if there is one ([`super::codegen`]).
     kernel: Option<usize>,
-    /// The factors and divisors the kernel takes ([`super::codegen::factors`]).
-    factors: Vec<f64>,
-    /// The inline constants the kernel's order 0 takes ([`super::codegen::constants`]).
+    /// The inline constants the kernel takes ([`super::codegen::constants`]).
     inline: Vec<f64>,
 }
 
@@ -587,18 +585,15 @@ impl<const N: usize> Tape<N> {
             hval: vec![],
             hnext: vec![],
             kernel: None,
-            factors: vec![],
             inline: vec![],
         };
         let hist = histories(&tape.code, (first_op * stride + PAD) as u32, stride);
         let shape = codegen::shape(&tape);
         let kernel = kernels::SHAPES.iter().position(|(_, s)| *s == shape);
-        let factors = codegen::factors(&tape.code);
         let inline = codegen::constants(&tape.code);
         Tape {
             hist,
             kernel,
-            factors,
             inline,
             ..tape
         }
@@ -626,7 +621,6 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
             hval: vec![zero; self.hist.len()],
             hnext: vec![zero; self.hist.len()],
             kernel: self.kernel,
-            factors: self.factors.clone(),
             inline: self.inline.clone(),
         };
         for j in 0..tape.constants.len() {
@@ -905,7 +899,7 @@ impl<const N: usize, T: Coefficient> Tape<N, T> {
         assert!(k >= 1 && k <= self.max_order);
         let stride = self.stride;
         if let Some(kernel) = self.kernel {
-            let (c, h, q) = (&mut self.coef[..], &mut self.hval[..], &self.factors[..]);
+            let (c, h, q) = (&mut self.coef[..], &mut self.hval[..], &self.inline[..]);
             let g = &mut self.hnext[..];
             // Twice, so that one copy has the usual stride as a constant.
             if stride == STRIDE {
