@@ -83,6 +83,19 @@ impl<B: AsBall + ?Sized> AsBall for &B {
     }
 }
 
+/// The elementary symmetric polynomial `e_k` of `values` (`e_0 = 1`, and 0 for `k` beyond their
+/// number), by the recurrence `e_j(v_1 .. v_i) = e_j(v_1 .. v_{i-1}) + v_i e_{j-1}(v_1 .. v_{i-1})`.
+fn elementary_symmetric(values: &[f64], k: usize) -> f64 {
+    let mut e = vec![0.0; k + 1];
+    e[0] = 1.0;
+    for &v in values {
+        for j in (1..=k).rev() {
+            e[j] += v * e[j - 1];
+        }
+    }
+    e[k]
+}
+
 /// `|x| <= MODEL_TOLERANCE * scale`.
 fn negligible(x: f64, scale: f64) -> bool {
     x.abs() <= MODEL_TOLERANCE * scale
@@ -218,7 +231,7 @@ impl Ball {
     /// About 45 floating-point operations and a single division, instead of a general 3x3
     /// solve or a division per `A_i` (BENCHMARKS.md). `D det A` is of the size of `A_i^6`:
     /// finite and normal for `A_i` between 1e-50 and 1e50. The form for numbers (`f64`, dual
-    /// numbers, lanes); series take [`Ball::angular_velocity_by_quotients`].
+    /// numbers, lanes); series take [`Ball::angular_velocity_by_determinant`].
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
         let r = self.contact_vector(gamma);
@@ -235,65 +248,96 @@ impl Ball {
     }
 
     /// The same `omega = I_Q^{-1} M` as [`Ball::angular_velocity`], by Sherman-Morrison with
-    /// a quotient by each `A_i`:
+    /// the coupling cleared of its denominators:
     ///
-    /// `omega_i = (M_i + q r_i) / A_i`, `q = m (r, A^{-1} M) / (1 - m (r, A^{-1} r))`
+    /// `omega_i = (M_i + q r_i) / A_i`, `q = m (r, A^{-1} M) / (1 - m (r, A^{-1} r)) = N / D`,
     ///
-    /// (the denominator is `D / det A > 0`), where the two sums over `i` divide once per
-    /// distinct `A_i`: `(r, A^{-1} M) = sum_G (sum_{i in G} r_i M_i) / A_G` over the groups `G`
-    /// of equal moments of inertia (`I_1 = I_2` on the Routh sphere: `{1, 2}` and `{3}`), and
-    /// `(r, A^{-1} r)` likewise with the squares `r_i^2`, whose sums also make `r^2`. The form
-    /// for truncated power series (the Taylor method's tape), where a quotient costs one
-    /// convolution, as a product does: 17 convolutions on the Routh sphere's tape (three
-    /// squares, three products, eight quotients, three fused products) against 29 for the
-    /// cofactors and 21 for the reciprocals `1 / A_i` times `r_i` and `M_i` (the form before,
-    /// BENCHMARKS.md, "Omega by quotients"); the whole field's 32 against 44 and 36. In `f64` its
-    /// divisions in a row cost more than the products they save, hence two forms
-    /// ([`crate::field`]); they agree to round-off (`tests/field_identities.rs`). Each
-    /// quotient is finite for `A_i` between 1e-300 and 1e300.
+    /// `A_i = I_i + rho`, `rho = m r^2`, both parts of `q` multiplied by `prod_G A_G` over the
+    /// groups `G` of equal moments (`I_1 = I_2` on the Routh sphere: `{1, 2}` and `{3}`, so
+    /// `n = 2` groups). With `x_G = m sum_{i in G} r_i^2` (so `rho = sum_G x_G`),
+    /// `t_G = sum_{i in G} r_i M_i` and `e_k(I_{-G})` the elementary symmetric polynomials of
+    /// the other groups' moments:
+    ///
+    /// `N = m sum_{j=0}^{n-1} rho^j sum_G t_G e_{n-1-j}(I_{-G})`,
+    /// `D = e_n(I) + sum_{j=0}^{n-2} rho^j sum_G x_G I_G e_{n-2-j}(I_{-G})`
+    ///
+    /// (the top power `rho^n` of `prod_G A_G` cancels against `sum_G x_G prod_{H != G} A_H`,
+    /// and the rest of that sum against the lower powers: `D = det I_Q / prod_G A_G^(|G| - 1)`,
+    /// a sum of positive terms, so no cancellation; for the Routh sphere
+    /// `D = I_1 I_3 + x_1 I_1 + x_3 I_3`, for a ball of one moment `D = I`). Both are
+    /// polynomials in `rho` evaluated by Horner, with coefficients that are sums of `x_G` and
+    /// `t_G` by constants: on a truncated power series (the Taylor method's tape, where a
+    /// product or a quotient of two series costs one convolution and a product by a constant
+    /// none) `n - 1` products for `N`, `max(n - 2, 0)` for `D`, one quotient for `q`, and per
+    /// component one product and one quotient: on the Routh sphere's tape 14 products and
+    /// quotients of series in 12 convolutions (`r_1^2 + r_2^2` and `r_1 M_1 + r_2 M_2` fused
+    /// in pairs), against 17 in 15 for the quotients of `(r, A^{-1} r)` and `(r, A^{-1} M)` by
+    /// each group's `A_G` (the form before, BENCHMARKS.md, "Omega by the determinant"). In `f64` its
+    /// divisions cost more than the cofactors' one, hence two forms ([`crate::field`]); they
+    /// agree to round-off (`tests/field_identities.rs`).
     #[inline(always)]
-    pub fn angular_velocity_by_quotients<D: Scalar>(
+    pub fn angular_velocity_by_determinant<D: Scalar>(
         &self,
         gamma: &[D; 3],
         m_vec: &[D; 3],
     ) -> [D; 3] {
         let r = self.contact_vector(gamma);
-        // The groups of equal moments: the first index of each, and each index's group.
+        // The groups of equal moments, by their first index.
         let first: [usize; 3] = std::array::from_fn(|i| {
             (0..i)
                 .find(|&j| self.inertia[j] == self.inertia[i])
                 .unwrap_or(i)
         });
-        let in_group = |g: usize| (0..3).filter(move |&i| first[i] == g);
-        // sum_{i in G} u_i v_i, one fused sum per group (`None` for an index that is not the
-        // first of its group).
-        let group_sums = |u: &[D; 3], v: &[D; 3]| -> [Option<D>; 3] {
-            std::array::from_fn(|g| {
-                in_group(g).fold(None, |acc: Option<D>, i| {
+        let groups: Vec<usize> = (0..3).filter(|&g| first[g] == g).collect();
+        let n = groups.len();
+        // sum_{i in G} u_i v_i, fused.
+        let group_sum = |g: usize, u: &[D; 3], v: &[D; 3]| {
+            (0..3)
+                .filter(|&i| first[i] == g)
+                .fold(None, |acc: Option<D>, i| {
                     Some(match acc {
                         None => u[i] * v[i],
                         Some(a) => u[i].mul_add(v[i], a),
                     })
                 })
-            })
+                .expect("a group has its first index")
         };
-        // The sum of the groups' terms (the group of index 0 is never empty).
-        let total = |terms: [Option<D>; 3]| {
-            terms
-                .into_iter()
-                .flatten()
-                .reduce(|acc, v| acc + v)
-                .expect("the group of the first index")
+        let x: Vec<D> = groups
+            .iter()
+            .map(|&g| group_sum(g, &r, &r) * self.m)
+            .collect();
+        let t: Vec<D> = groups.iter().map(|&g| group_sum(g, &r, m_vec)).collect();
+        let rho = x[1..].iter().fold(x[0], |acc, &v| acc + v);
+        // e_k of the moments of the groups other than the one at `skip`.
+        let e = |k: usize, skip: usize| -> f64 {
+            let others: Vec<f64> = (0..n)
+                .filter(|&h| h != skip)
+                .map(|h| self.inertia[groups[h]])
+                .collect();
+            elementary_symmetric(&others, k)
         };
-        let squares = group_sums(&r, &r);
-        let mr2 = total(squares) * self.m;
-        let a: [D; 3] = std::array::from_fn(|i| mr2 + self.inertia[first[i]]);
-        let over_a =
-            |sums: [Option<D>; 3]| total(std::array::from_fn(|g| sums[g].map(|v| v / a[g])));
-        let rar = over_a(squares);
-        let ram = over_a(group_sums(&r, m_vec));
-        let q = ram * self.m / (D::from_f64(1.0) - rar * self.m);
-        std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / a[i])
+        // sum_G w_G c_G, the sum of series by constants (plain products: no convolution).
+        let combine = |w: &[D], c: &dyn Fn(usize) -> f64| {
+            (1..n).fold(w[0] * c(0), |acc, g| acc + w[g] * c(g))
+        };
+        // Horner in rho over the coefficients 0 ..= top.
+        let horner = |top: usize, coefficient: &dyn Fn(usize) -> D| {
+            (0..top)
+                .rev()
+                .fold(coefficient(top), |acc, j| acc.mul_add(rho, coefficient(j)))
+        };
+        let numerator = horner(n - 1, &|j| combine(&t, &|g| e(n - 1 - j, g))) * self.m;
+        let all: Vec<f64> = groups.iter().map(|&g| self.inertia[g]).collect();
+        let constant = D::from_f64(elementary_symmetric(&all, n));
+        let denominator = if n < 2 {
+            constant
+        } else {
+            horner(n - 2, &|j| {
+                combine(&x, &|g| self.inertia[groups[g]] * e(n - 2 - j, g))
+            }) + constant
+        };
+        let q = numerator / denominator;
+        std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / (rho + self.inertia[first[i]]))
     }
 
     /// `det I_Q` of (om-m) (the `D` of [`Ball::angular_velocity`]).
@@ -322,5 +366,29 @@ impl Ball {
     pub fn potential_gradient<D: Scalar>(&self, gamma: &[D; 3]) -> [D; 3] {
         let k = self.m * self.gravity;
         std::array::from_fn(|i| gamma[i] * (2.0 * self.radius * k) - self.com[i] * k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elementary_symmetric;
+
+    /// `e_k` against the sums of products written out: exact in binary (small integers), so
+    /// tolerance zero; `e_0 = 1` and `e_k = 0` beyond the number of values.
+    #[test]
+    fn elementary_symmetric_polynomials_are_the_sums_of_products() {
+        let v = [2.0, 3.0, 5.0];
+        let want = [
+            1.0,
+            2.0 + 3.0 + 5.0,
+            2.0 * 3.0 + 2.0 * 5.0 + 3.0 * 5.0,
+            30.0,
+            0.0,
+        ];
+        for (k, w) in want.into_iter().enumerate() {
+            assert_eq!(elementary_symmetric(&v, k), w, "e_{k}");
+        }
+        assert_eq!(elementary_symmetric(&[], 0), 1.0);
+        assert_eq!(elementary_symmetric(&[7.0], 1), 7.0);
     }
 }

@@ -40,11 +40,12 @@
 //!
 //! `omega = I_Q^{-1} M` has two closed forms ([`OmegaForm`]), the same function: by cofactors
 //! with one division ([`Ball::angular_velocity`], for numbers: `f64`, dual numbers, lanes) and
-//! by a quotient by each `I_i + m r^2` ([`Ball::angular_velocity_by_quotients`], for the Taylor
-//! method's tape, where a quotient of series costs one convolution as a product does). The
-//! tape of the default case then has 32 convolutions instead of 44 (BENCHMARKS.md, "Omega by
-//! quotients"; DOP853 keeps the cofactors, with which it is 12 % faster one run at a time:
-//! "Omega by reciprocals"). The two agree to round-off, values and Jacobians
+//! by the coupling `q = N / D` of Sherman-Morrison as two polynomials in `m r^2` and a quotient
+//! by each `I_i + m r^2` ([`Ball::angular_velocity_by_determinant`], for the Taylor method's
+//! tape, where a quotient of series costs one convolution as a product does). The tape of the
+//! default case then has 29 convolutions instead of 44 (BENCHMARKS.md, "Omega by quotients"
+//! and "Omega by the determinant"; DOP853 keeps the cofactors, with which it is 12 % faster one
+//! run at a time: "Omega by reciprocals"). The two agree to round-off, values and Jacobians
 //! (`tests/field_identities.rs`); each integrator's numbers are those of its own form, bit for
 //! bit across lanes and threads.
 
@@ -64,10 +65,9 @@ pub fn vector_field<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
 pub enum OmegaForm {
     /// [`Ball::angular_velocity`]: one division (numbers: `f64`, dual numbers, lanes).
     Cofactors,
-    /// [`Ball::angular_velocity_by_quotients`]: fewer convolutions, a division for each
-    /// distinct moment of inertia and component (truncated power series: the Taylor method's
-    /// tape).
-    Quotients,
+    /// [`Ball::angular_velocity_by_determinant`]: fewer convolutions, a division for the
+    /// coupling and one for each component (truncated power series: the Taylor method's tape).
+    Determinant,
 }
 
 /// [`vector_field`] with `omega` in the form `form`.
@@ -88,7 +88,7 @@ fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6], form: OmegaForm) -> [D; 6] {
     let (gamma, m_vec) = split(x);
     let omega = match form {
         OmegaForm::Cofactors => ball.angular_velocity(&gamma, &m_vec),
-        OmegaForm::Quotients => ball.angular_velocity_by_quotients(&gamma, &m_vec),
+        OmegaForm::Determinant => ball.angular_velocity_by_determinant(&gamma, &m_vec),
     };
     let gamma_dot = cross(&gamma, &omega);
     // Identity 1: m R dgamma/dt x (omega x r) = s omega, s = (dgamma/dt, -m R com).

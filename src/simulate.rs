@@ -527,9 +527,9 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
     }
 
     /// The same field with `omega` in the form for series
-    /// ([`OmegaForm::Quotients`](crate::field::OmegaForm)): fewer convolutions per order.
+    /// ([`OmegaForm::Determinant`](crate::field::OmegaForm)): fewer convolutions per order.
     fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
         use crate::field::{vector_field_in, OmegaForm};
-        Some(vector_field_in(OmegaForm::Quotients, self.0, y))
+        Some(vector_field_in(OmegaForm::Determinant, self.0, y))
     }
 }

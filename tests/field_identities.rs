@@ -28,7 +28,7 @@
 //! 64 eps for the roundings of the dual parts on top.
 //!
 //! The two closed forms of `omega` ([`Ball::angular_velocity`] for numbers,
-//! [`Ball::angular_velocity_by_quotients`] for the Taylor tape) are compared the same way,
+//! [`Ball::angular_velocity_by_determinant`] for the Taylor tape) are compared the same way,
 //! values and Jacobians, with a bound scaled by the condition of `I_Q`.
 
 use routh::ball::Ball;
@@ -116,7 +116,7 @@ fn term_size(ball: &Ball, x: &[f64; 6]) -> f64 {
 }
 
 /// The Jacobian of omega (its rows 0 to 2; the others zero) at `x`, by dual numbers through
-/// one of its closed forms (`Ball::angular_velocity` or `Ball::angular_velocity_by_quotients`).
+/// one of its closed forms (`Ball::angular_velocity` or `Ball::angular_velocity_by_determinant`).
 fn omega_jacobian(
     ball: &Ball,
     x: &[f64; 6],
@@ -176,6 +176,10 @@ fn balls() -> Vec<(&'static str, Ball)> {
         (
             "Chaplygin",
             Ball::new(1.0, 1.0, [0.3, 0.4, 0.5], [0.0, 0.0, 0.0], 9.81).unwrap(),
+        ),
+        (
+            "equal moments (one group)",
+            Ball::new(1.0, 1.0, [0.4, 0.4, 0.4], [0.0, 0.0, -0.3], 9.81).unwrap(),
         ),
         (
             "small heavy ball",
@@ -336,15 +340,14 @@ fn the_sphere_only_form_agrees_in_value_on_the_sphere() {
 
 #[test]
 fn the_two_forms_of_omega_agree_to_round_off() {
-    // `omega = I_Q^{-1} M` by cofactors (numbers) and by quotients (the Taylor tape): the
+    // `omega = I_Q^{-1} M` by cofactors (numbers) and by the determinant (the Taylor tape): the
     // same solution of `I_Q omega = M`, each rounded a few ulp backward. `I_Q = I + m (r^2 E
     // - r r^T)` has its eigenvalues between `I_min` and `I_max + m r^2`, so either form is
     // within `c eps kappa |M| / I_min` of the exact one, `kappa = (I_max + m r^2) / I_min`
-    // (the one division by `1 - m (r, A^{-1} r)`, about `I_min / (m r^2)` where `r` is long,
-    // loses `kappa` to cancellation). Bound `64 eps kappa |M| / I_min`, the observed maximum
+    // (the solution's sensitivity to a relative error in `I_Q`). Bound `64 eps kappa |M| / I_min`, the observed maximum
     // printed; the dual parts (the Jacobian of omega) the same with the sizes differentiated
     // (`|d M| = 1` in a momentum column, `d (m r^2) = 2 m R |r|` in a gamma column).
-    // Negative controls: `I_2` taken for `I_1` in the quotients is caught where the moments
+    // Negative controls: `I_2` taken for `I_1` in the determinant form is caught where the moments
     // differ, and `I_3` changed by 1e-10 relative (on every ball) at a third of the points or
     // more: the bound is tight to that.
     let points = points(1500);
@@ -365,16 +368,16 @@ fn the_two_forms_of_omega_agree_to_round_off() {
             let kappa = (i_max + mr2) / i_min;
             let size = kappa * norm(&m_vec) / i_min;
             let by_cofactors = ball.angular_velocity(&gamma, &m_vec);
-            let by_quotients = ball.angular_velocity_by_quotients(&gamma, &m_vec);
+            let by_determinant = ball.angular_velocity_by_determinant(&gamma, &m_vec);
             assert!(
-                by_quotients.iter().all(|v| v.is_finite()),
+                by_determinant.iter().all(|v| v.is_finite()),
                 "{name} at {x:?}"
             );
-            let d = discrepancy(&by_cofactors, &by_quotients, size);
+            let d = discrepancy(&by_cofactors, &by_determinant, size);
             assert!(d <= 64.0, "{name} at {x:?}: {d} eps of {size}");
             worst = worst.max(d);
             let jc = omega_jacobian(&ball, x, Ball::angular_velocity);
-            let jr = omega_jacobian(&ball, x, Ball::angular_velocity_by_quotients);
+            let jr = omega_jacobian(&ball, x, Ball::angular_velocity_by_determinant);
             for j in 0..6 {
                 let dm = if j < 3 { 0.0 } else { 1.0 };
                 let dmr2 = if j < 3 {
@@ -396,13 +399,13 @@ fn the_two_forms_of_omega_agree_to_round_off() {
             }
             let mut swapped = ball;
             swapped.inertia[0] = ball.inertia[1];
-            let wrong = swapped.angular_velocity_by_quotients(&gamma, &m_vec);
+            let wrong = swapped.angular_velocity_by_determinant(&gamma, &m_vec);
             if discrepancy(&wrong, &by_cofactors, size) > 64.0 {
                 caught += 1;
             }
             let mut nudged = ball;
             nudged.inertia[2] *= 1.0 + 1e-10;
-            let wrong = nudged.angular_velocity_by_quotients(&gamma, &m_vec);
+            let wrong = nudged.angular_velocity_by_determinant(&gamma, &m_vec);
             if discrepancy(&wrong, &by_cofactors, size) > 64.0 {
                 nudge_caught += 1;
             }

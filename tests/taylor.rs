@@ -109,9 +109,9 @@ fn tape_reproduces_the_f64_field_bit_for_bit() {
                 scale * rng.next(-1.0, 1.0),
             ];
             let from_tape = tape.evaluate(0.0, &x);
-            // The tape records omega in the form for series (`OmegaForm::Quotients`): the
+            // The tape records omega in the form for series (`OmegaForm::Determinant`): the
             // f64 field in that form, bit for bit.
-            let direct = vector_field_in::<f64>(OmegaForm::Quotients, ball, &x);
+            let direct = vector_field_in::<f64>(OmegaForm::Determinant, ball, &x);
             assert_eq!(from_tape, direct, "at {x:?}");
         }
     }
@@ -120,7 +120,7 @@ fn tape_reproduces_the_f64_field_bit_for_bit() {
     let mut other = Tape::record(&ReducedSystem(&free), 0).unwrap();
     assert_ne!(
         other.evaluate(0.0, &x),
-        vector_field_in::<f64>(OmegaForm::Quotients, &case.ball, &x)
+        vector_field_in::<f64>(OmegaForm::Determinant, &case.ball, &x)
     );
 }
 
