@@ -10,7 +10,7 @@
 //! * `taylor`: one run after the other with [`Taylor`];
 //! * `taylor4`, `taylor8`: the batched Taylor method of [`routh::batch::taylor`] with 4 or 8
 //!   lanes (the instruction set, AVX-512 or AVX2, chosen at run time; `routh sweep` takes 8
-//!   lanes with AVX-512, else 4);
+//!   lanes with AVX-512 or AVX2, else 4);
 //! * `vern9`: one run after the other with [`Vern9`] (for the reference at 1e-15).
 //!
 //! `batch_throughput states N`: prints the N initial states of the benchmark, one a line: the

@@ -10,10 +10,11 @@ tilts spread evenly over (0.05, 1.5), to t = 10 (the initial states come from ro
 * routh taylor: our Taylor method (src/integrate/taylor), one run after the other;
 * routh taylor4, taylor8: the batched Taylor method (src/batch/taylor.rs) with 4 and 8 lanes,
   the instruction set (AVX-512 or AVX2) chosen at run time; each lane bitwise the one-at-a-time
-  Taylor run, whose order and steps are heyoka's rules (so its errors are heyoka's);
+  Taylor run (Jorba-Zou's order and step with u = 1.5 from tol 1e-12 up: taylor::step_exponent);
 * heyoka ensemble: `ensemble_propagate_until` with one worker thread (a copy of the
   integrator per run, as heyoka does it);
-* heyoka batch: `taylor_adaptive_batch` with heyoka's recommended SIMD width, the runs fed
+* heyoka batch: `taylor_adaptive_batch` with heyoka's recommended SIMD width (or
+  --heyoka-simd), the runs fed
   batch by batch, timed in --heyoka-processes fresh processes (default 4) and the fastest kept:
   its speed is one of two (at 1e-12 about 26,000 or 36,000 runs/s here), fixed for the life
   of a process, which one by chance;
@@ -86,6 +87,10 @@ def main():
     # core): it is timed in this many fresh processes and the fastest is kept.
     ap.add_argument("--heyoka-processes", type=int, default=4)
     ap.add_argument("--heyoka-batch-only", type=float, default=None, help=argparse.SUPPRESS)
+    # heyoka's batch size: its recommended SIMD width by default (4 with AVX2, 8 with AVX-512);
+    # on the AVX2 Zen 3 of 2026-11-27 a batch of 8 (two registers, as our taylor8) was slower.
+    ap.add_argument("--heyoka-simd", type=int, default=None,
+                    help="heyoka's batch size (default: hy.recommended_simd_size())")
     ap.add_argument("--equal-error-tols", default="1e-10,1e-13,1e-14,1e-15",
                     help="our lanes8 alone at these tolerances, for the comparison at equal error")
     args = ap.parse_args()
@@ -104,7 +109,7 @@ def main():
     x0 = np.array(states).T.copy()  # (6, runs)
     xs = hy.make_vars("g1", "g2", "g3", "M1", "M2", "M3")
     field = list(zip(xs, model.field(p, xs)))
-    simd = hy.recommended_simd_size()
+    simd = args.heyoka_simd or hy.recommended_simd_size()
     n_batches = -(-args.runs // simd)
     padded = np.concatenate([x0, np.repeat(x0[:, -1:], n_batches * simd - args.runs, axis=1)], axis=1)
 
@@ -149,7 +154,8 @@ def main():
         runs = []
         for _ in range(args.heyoka_processes):
             out = subprocess.run([str(venv / "bin" / "python"), __file__, "--runs", str(args.runs),
-                                  "--repeat", str(args.repeat), "--heyoka-batch-only", repr(tol)],
+                                  "--repeat", str(args.repeat), "--heyoka-batch-only", repr(tol),
+                                  "--heyoka-simd", str(simd)],
                                  capture_output=True, text=True, check=True).stdout
             runs.append(json.loads(out.splitlines()[-1]))
         best = min(runs, key=lambda r: r["time_s"])

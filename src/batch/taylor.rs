@@ -34,9 +34,14 @@ struct TaylorLanes<const N: usize, const L: usize> {
 }
 
 /// The number of lanes [`integrate`] uses on this CPU: 8 with AVX-512 (one register of
-/// doubles), 4 otherwise (AVX2, or two SSE2 registers).
+/// doubles) and with AVX2 (two registers: two independent chains of operations in flight,
+/// taylor8 1.15x taylor4 on an AVX2 Zen 3, BENCHMARKS.md "Sweeps"), 4 with the baseline (two
+/// SSE2 registers; eight lanes would be four registers an operation of its sixteen).
 pub fn lanes() -> usize {
-    Isa::detect().doubles().max(4)
+    match Isa::detect() {
+        Isa::Baseline => 4,
+        Isa::Avx2Fma | Isa::Avx512 => 8,
+    }
 }
 
 /// Integrates the runs of `queue` with the Taylor method (`opts` as for
