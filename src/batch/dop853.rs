@@ -21,9 +21,34 @@ use crate::integrate::{
 };
 use crate::scalar::Scalar;
 
-/// The default number of lanes: two AVX2 registers (four SSE2 registers) of doubles, which
-/// keeps two independent chains of vector operations in flight (BENCHMARKS.md).
+/// The most lanes the batched methods take ([`lanes`], [`super::taylor::lanes`]): the size of
+/// a queue's table of lanes.
 pub const LANES: usize = 8;
+
+/// The number of lanes [`integrate_in_lanes`] uses on this CPU: 8 with AVX-512 (one register
+/// of doubles), 4 otherwise (one AVX2 register, two SSE2 registers): on an AVX2 Zen 3 the
+/// 8 lanes of two registers spill and take 1.17x (1e-12) and 1.09x (1e-8) the time of 4 on
+/// the throughput benchmark, as 4 lanes were faster in the SSE2 build too (BENCHMARKS.md,
+/// "Sweeps"); with AVX-512, 8 lanes 1.02x faster than 4.
+pub fn lanes() -> usize {
+    match Isa::detect() {
+        Isa::Avx512 => 8,
+        Isa::Avx2Fma | Isa::Baseline => 4,
+    }
+}
+
+/// [`integrate`] in [`lanes`] lanes.
+pub fn integrate_in_lanes<F: Field<N>, Q: Queue<N>, const N: usize>(
+    field: &F,
+    opts: &Options,
+    queue: &mut Q,
+) -> Result<(), IntegrateError> {
+    if lanes() == 8 {
+        integrate::<F, Q, N, 8>(field, opts, queue)
+    } else {
+        integrate::<F, Q, N, 4>(field, opts, queue)
+    }
+}
 
 /// The stages of a step: 0..=11, the derivative at the step end (12), the three stages of
 /// the dense output (13..=15).

@@ -427,7 +427,7 @@ impl Sweep {
     }
 
     /// The runs `runs` (on this thread), in their order, the runs of each body together in
-    /// lanes of the batched DOP853 ([`LANES`]) or Taylor method ([`batch::taylor::lanes`]):
+    /// lanes of the batched DOP853 ([`batch::lanes`]) or Taylor method ([`batch::taylor::lanes`]):
     /// each row bitwise the row of [`Sweep::run`].
     /// Once `stop` is set no run starts. Should the batch panic, its runs are run one at a
     /// time (where a panicking run is a failed row).
@@ -465,7 +465,7 @@ impl Sweep {
                 let sys = ReducedSystem(body);
                 match self.settings.method {
                     Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
-                    _ => batch::integrate::<_, _, 6, LANES>(&sys, &opts, &mut queue)?,
+                    _ => batch::integrate_in_lanes(&sys, &opts, &mut queue)?,
                 }
             }
             Ok::<_, AppError>(rows.into_iter().flatten().collect())
