@@ -308,12 +308,10 @@ impl Ball {
             .collect();
         let t: Vec<D> = groups.iter().map(|&g| group_sum(g, &r, m_vec)).collect();
         let rho = x[1..].iter().fold(x[0], |acc, &v| acc + v);
-        // e_k of the moments of the groups other than the one at `skip`.
+        // The moment of each group, and e_k of those of the groups other than the one at `skip`.
+        let moments: Vec<f64> = groups.iter().map(|&g| self.inertia[g]).collect();
         let e = |k: usize, skip: usize| -> f64 {
-            let others: Vec<f64> = (0..n)
-                .filter(|&h| h != skip)
-                .map(|h| self.inertia[groups[h]])
-                .collect();
+            let others: Vec<f64> = (0..n).filter(|&h| h != skip).map(|h| moments[h]).collect();
             elementary_symmetric(&others, k)
         };
         // sum_G w_G c_G, the sum of series by constants (plain products: no convolution).
@@ -327,14 +325,11 @@ impl Ball {
                 .fold(coefficient(top), |acc, j| acc.mul_add(rho, coefficient(j)))
         };
         let numerator = horner(n - 1, &|j| combine(&t, &|g| e(n - 1 - j, g))) * self.m;
-        let all: Vec<f64> = groups.iter().map(|&g| self.inertia[g]).collect();
-        let constant = D::from_f64(elementary_symmetric(&all, n));
+        let constant = D::from_f64(elementary_symmetric(&moments, n));
         let denominator = if n < 2 {
             constant
         } else {
-            horner(n - 2, &|j| {
-                combine(&x, &|g| self.inertia[groups[g]] * e(n - 2 - j, g))
-            }) + constant
+            horner(n - 2, &|j| combine(&x, &|g| moments[g] * e(n - 2 - j, g))) + constant
         };
         let q = numerator / denominator;
         std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / (rho + self.inertia[first[i]]))

@@ -27,9 +27,9 @@ pub const LANES: usize = 8;
 
 /// The number of lanes [`integrate_in_lanes`] uses on this CPU: 8 with AVX-512 (one register
 /// of doubles), 4 otherwise (one AVX2 register, two SSE2 registers): on an AVX2 Zen 3 the
-/// 8 lanes of two registers spill and take 1.17x (1e-12) and 1.09x (1e-8) the time of 4 on
-/// the throughput benchmark, as 4 lanes were faster in the SSE2 build too (BENCHMARKS.md,
-/// "Sweeps"); with AVX-512, 8 lanes 1.02x faster than 4.
+/// 8 lanes of two registers took 1.17x (1e-12) and 1.09x (1e-8) the time of 4 on the
+/// throughput benchmark, as 4 lanes were faster in the SSE2 build too (BENCHMARKS.md,
+/// "Sweeps"); with AVX-512, 8 lanes were 1.02x faster than 4 (2026-11-25).
 pub fn lanes() -> usize {
     match Isa::detect() {
         Isa::Avx512 => 8,
