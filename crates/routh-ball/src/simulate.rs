@@ -1,0 +1,546 @@
+//! Integration of a case along the field (mg-eq), with the integrals (int-g), (raus-int)
+//! tracked at every step, dense-output samples, and optional projection onto their level set.
+
+use crate::ball::AsBall;
+use crate::body::Body;
+use crate::error::{Result, RouthError};
+use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrate::taylor::Var;
+use crate::integrate::{
+    check_samples, drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem,
+    OnSample, Options, Projection, Stepper, Stop,
+};
+use crate::projection::LevelSet;
+use crate::state::State;
+use serde::Serialize;
+use std::cell::RefCell;
+use std::time::Instant;
+
+/// Settings of one simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Settings {
+    /// The integrator.
+    pub method: Method,
+    /// Final time (the start is t = 0).
+    pub t_end: f64,
+    /// Relative tolerance (DOP853).
+    pub rtol: f64,
+    /// Absolute tolerance (DOP853).
+    pub atol: f64,
+    /// Project onto the level set of the integrals after each step.
+    pub project: bool,
+    /// With `project`, project after every `project_every`-th accepted step only (at least
+    /// 1: every step). The drift of the integrals between two projections is that of as many
+    /// steps, so every 10th step keeps nearly all of the accuracy that projection gains, at a
+    /// tenth of its cost (BENCHMARKS.md, "Work-precision"). Samples are
+    /// projected whatever the step.
+    pub project_every: usize,
+    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),
+    /// at most [`MAX_SAMPLES`].
+    pub samples: usize,
+    /// Most steps DOP853 may attempt (accepted and rejected), and most steps of RK4.
+    pub max_steps: usize,
+}
+
+/// The largest number of samples of one run (their times take 8 bytes each in memory, the
+/// CSV about 300 bytes each on disk: 3 GB).
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// The default limit of steps of one integration (`--max-steps`, `max_steps` in
+/// `[integration]`): about 40 s of DOP853 on this machine; a run that needs more is stopped
+/// with a message naming the limit.
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
+
+/// The drift of one integral along the trajectory.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Drift {
+    /// Value at t = 0.
+    pub initial: f64,
+    /// Value at t_end.
+    #[serde(rename = "final")]
+    pub last: f64,
+    /// `max_t |H(t) - H(0)| / |H(0)|` over all step ends and samples (absolute if H(0) = 0).
+    pub max_rel_drift: f64,
+}
+
+/// What a simulation reports.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    /// The method, as `dop853` or `rk4:<steps>`.
+    pub method: String,
+    /// Final time.
+    pub t_end: f64,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Evaluations of the field.
+    pub rhs_evals: usize,
+    /// Whether states were projected onto the level set of the integrals.
+    pub projected: bool,
+    /// Projected after every how many steps ([`Settings::project_every`]).
+    pub project_every: usize,
+    /// The initial state.
+    pub initial_state: State,
+    /// The state at t_end.
+    pub final_state: State,
+    /// Drift of each integral of the ball's model, by name (H1, H2, H3, H4, K, MM, Mgamma;
+    /// see [`Integrals`]).
+    pub integrals: std::collections::BTreeMap<&'static str, Drift>,
+    /// Wall time of the integration in seconds, measured with [`std::time::Instant`] inside
+    /// [`run`]: the steps, the tracking of the integrals, the projections and the samples
+    /// (including the time spent in `on_sample`), without process start-up or case parsing.
+    pub elapsed_s: f64,
+}
+
+/// The drift of the integrals along a run: their values at the start, at the last state seen,
+/// and the largest relative change (the `integrals` of a [`Summary`]).
+pub struct DriftTracker {
+    initial: [Option<f64>; 7],
+    max: [f64; 7],
+    last: [Option<f64>; 7],
+}
+
+impl DriftTracker {
+    /// Starts at `x0`.
+    pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+        let initial = Integrals::at(body, x0).all();
+        DriftTracker {
+            initial,
+            max: [0.0; 7],
+            last: initial,
+        }
+    }
+
+    /// Looks at the state `x`.
+    pub fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
+        self.last = Integrals::at(body, x).all();
+        for i in 0..7 {
+            if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
+                let scale = if h0 == 0.0 { 1.0 } else { h0.abs() };
+                self.max[i] = self.max[i].max((h - h0).abs() / scale);
+            }
+        }
+    }
+
+    /// The drift of each integral so far.
+    pub fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
+        (0..7)
+            .filter_map(|i| {
+                Some((
+                    ALL_INTEGRAL_NAMES[i],
+                    Drift {
+                        initial: self.initial[i]?,
+                        last: self.last[i]?,
+                        max_rel_drift: self.max[i],
+                    },
+                ))
+            })
+            .collect()
+    }
+}
+
+/// The reduced phase-space part `(gamma, M)` of a (possibly extended) state.
+pub fn reduced<const N: usize>(y: &[f64; N]) -> [f64; 6] {
+    std::array::from_fn(|i| y[i])
+}
+
+/// Project the reduced part of a (possibly extended) state onto `level`, if given.
+pub fn project_onto<const N: usize>(level: Option<&LevelSet>, y: &mut [f64; N]) {
+    if let Some(level) = level {
+        let mut x = reduced(y);
+        level.project(&mut x);
+        y[..6].copy_from_slice(&x);
+    }
+}
+
+/// The projection of the step ends of a run: [`project_onto`] `level` after every
+/// `every`-th call (the calls counted from 1; every call for `every = 1`, none without a
+/// level). [`Settings::project_every`].
+pub fn project_every<const N: usize>(
+    level: Option<&LevelSet>,
+    every: usize,
+) -> impl Fn(&mut [f64; N]) + '_ {
+    let calls = std::cell::Cell::new(0usize);
+    move |y: &mut [f64; N]| {
+        calls.set(calls.get() + 1);
+        if calls.get() % every.max(1) == 0 {
+            project_onto(level, y);
+        }
+    }
+}
+
+impl Default for Settings {
+    /// The one set of defaults of the library, the CLI and Python: DOP853 at
+    /// rtol = atol = 1e-12 over [0, 100], no projection, no samples.
+    fn default() -> Self {
+        Settings {
+            method: Method::Dop853,
+            t_end: 100.0,
+            rtol: 1e-12,
+            atol: 1e-12,
+            project: false,
+            project_every: 1,
+            samples: 0,
+            max_steps: DEFAULT_MAX_STEPS,
+        }
+    }
+}
+
+/// The one validation of the time span and tolerances (used by [`validate`] and by case
+/// files): t_end finite and >= 0; rtol, atol finite and > 0. Each violation names the option.
+pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
+    let bad = |name: &'static str, value: f64, rule: &'static str| {
+        Err(RouthError::Option {
+            name,
+            value: value.to_string(),
+            rule,
+        })
+    };
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return bad("t_end", t_end, "must be finite and >= 0");
+    }
+    if !(rtol.is_finite() && rtol > 0.0) {
+        return bad("rtol", rtol, "must be finite and > 0");
+    }
+    if !(atol.is_finite() && atol > 0.0) {
+        return bad("atol", atol, "must be finite and > 0");
+    }
+    Ok(())
+}
+
+/// Validate the settings ([`validate_span`] and the sample count); each violation names the
+/// option.
+pub fn validate(settings: &Settings) -> Result<()> {
+    validate_span(settings.t_end, settings.rtol, settings.atol)?;
+    if settings.samples > MAX_SAMPLES {
+        return Err(RouthError::Option {
+            name: "samples",
+            value: settings.samples.to_string(),
+            rule: "must be at most 10000000 (MAX_SAMPLES)",
+        });
+    }
+    if settings.project_every == 0 {
+        return Err(RouthError::Option {
+            name: "project_every",
+            value: "0".into(),
+            rule: "must be at least 1 (project after every step)",
+        });
+    }
+    if let Method::Rk4 { steps } = settings.method {
+        if steps > settings.max_steps {
+            return Err(RouthError::Option {
+                name: "method rk4:<steps>",
+                value: steps.to_string(),
+                rule: "must not exceed max_steps (--max-steps, default 10000000)",
+            });
+        }
+    }
+    if settings.samples == 1 {
+        return Err(RouthError::Option {
+            name: "samples",
+            value: "1".into(),
+            rule: "must be 0 or >= 2 (the samples include both ends)",
+        });
+    }
+    Ok(())
+}
+
+/// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`
+/// (further components, such as the orientation of the full motion, follow it), from
+/// `y0` over `[0, t_end]`. `on_sample(t, y)` receives the equally spaced samples; the
+/// integrals are tracked on the reduced part at every step end and sample. A failed
+/// integration is an error ([`RouthError::Integrate`]); [`integrate_observed`] tells more
+/// (and takes a callback with an error of its own, one that writes a file, say).
+pub fn run<S: OdeSystem<N>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    y0: [f64; N],
+    settings: &Settings,
+    on_sample: &mut dyn FnMut(f64, &[f64; N]) -> Result<()>,
+) -> Result<Summary> {
+    integrate_observed(body, sys, y0, settings, None, on_sample, &mut |_| {})?.summary()
+}
+
+/// What [`integrate_observed`] and [`integrate_span`] return: the summary, how the run
+/// stopped, the time and state reached, and the integrator's failure (then the summary holds
+/// the state reached).
+#[derive(Debug, Clone)]
+pub struct Observed<const N: usize> {
+    /// The summary of the run (up to the failure, if any).
+    pub summary: Summary,
+    /// How the driver stopped (meaningless after a failure).
+    pub stop: Stop<N>,
+    /// The time reached.
+    pub t: f64,
+    /// The (whole, possibly extended) state reached.
+    pub y: [f64; N],
+    /// The integrator's error, if it failed.
+    pub failure: Option<IntegrateError>,
+}
+
+impl<const N: usize> Observed<N> {
+    /// The summary of a run that reached its end, or the integrator's failure as an error.
+    pub fn summary(self) -> Result<Summary> {
+        match self.failure {
+            Some(e) => Err(e.into()),
+            None => Ok(self.summary),
+        }
+    }
+}
+
+/// The interval and the sample times of [`integrate_span`].
+#[derive(Debug, Clone, Copy)]
+pub struct Span<'a, const N: usize> {
+    /// Start time.
+    pub t0: f64,
+    /// The state at `t0`.
+    pub y0: [f64; N],
+    /// End time (before `t0`: backward in time).
+    pub t1: f64,
+    /// Times where the state is reported, strictly monotone from `t0` towards `t1`, within
+    /// the span.
+    pub samples: &'a [f64],
+}
+
+/// What the per-step observer of [`integrate_span`] asks for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Next<const N: usize> {
+    /// Go on.
+    Continue,
+    /// Stop after this step.
+    Stop,
+    /// Stop at the time `t` within this step, with the state `y` there (an event the
+    /// observer located): the samples after `t` are not reported and the run ends at `(t, y)`.
+    StopAt {
+        /// The time within the step.
+        t: f64,
+        /// The state there.
+        y: [f64; N],
+    },
+}
+
+/// The per-step observer of [`integrate_span`]: `on_step(t, y, stepper)` after each accepted
+/// step, with the (projected) step end and the stepper (for its dense output on the step).
+pub type StepObserver<'a, E, const N: usize> =
+    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> std::result::Result<Next<N>, E> + 'a;
+
+/// Why the driver stopped early inside [`integrate_span`]: the integrator failed (reported in
+/// [`Observed::failure`]) or a callback returned its error `E` (returned as is).
+enum Halt<E> {
+    Integrate(IntegrateError),
+    Callback(E),
+}
+
+impl<E> From<IntegrateError> for Halt<E> {
+    fn from(e: IntegrateError) -> Self {
+        Halt::Integrate(e)
+    }
+}
+
+/// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: [`integrate_span`]
+/// over `[0, settings.t_end]` with `settings.samples` equally spaced samples, `on_step(stepper)`
+/// called after each step. `E` is the error type of `on_sample`, as in [`integrate_span`].
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    y0: [f64; N],
+    settings: &Settings,
+    event: Option<EventFn<'_, N>>,
+    on_sample: &mut OnSample<'_, E, N>,
+    on_step: &mut dyn FnMut(&dyn Stepper<N>),
+) -> std::result::Result<Observed<N>, E> {
+    validate(settings)?;
+    let times: Vec<f64> = (0..settings.samples)
+        .map(|i| {
+            if i + 1 == settings.samples {
+                settings.t_end
+            } else {
+                settings.t_end * i as f64 / (settings.samples - 1) as f64
+            }
+        })
+        .collect();
+    let span = Span {
+        t0: 0.0,
+        y0,
+        t1: settings.t_end,
+        samples: &times,
+    };
+    integrate_span(
+        body,
+        sys,
+        &span,
+        settings,
+        event,
+        on_sample,
+        &mut |_, _, stepper| {
+            on_step(stepper);
+            Ok(Next::Continue)
+        },
+    )
+}
+
+/// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`, over
+/// `span` (either direction) with the method, tolerances, projection and step limit of
+/// `settings` (its `t_end` and `samples` are not used): the one use of the library's driver
+/// [`drive`] by `simulate`, [`crate::problem::Problem`], the sweep and Python.
+///
+/// After each accepted step, in this order: a non-finite state ends the run with
+/// [`IntegrateError::NonFinite`]; `on_step(t, y, stepper)` sees the (projected) step end and
+/// may stop the run, possibly at a time within the step ([`Next::StopAt`]); the samples up to
+/// the end (projected, with `settings.project`) go to `on_sample`; the integrals are tracked at
+/// the samples and the step end. `event` stops the run at its first sign change (as in
+/// [`drive`]). Invalid settings or samples and errors of the callbacks are errors; a failure of
+/// the integrator is reported in [`Observed::failure`] with the state reached. The callbacks'
+/// error type `E` (the library's [`RouthError`], or one holding it, such as the front ends'
+/// `AppError`) is the error type of the result.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
+    body: &impl AsBall,
+    sys: &S,
+    span: &Span<'_, N>,
+    settings: &Settings,
+    event: Option<EventFn<'_, N>>,
+    on_sample: &mut OnSample<'_, E, N>,
+    on_step: &mut StepObserver<'_, E, N>,
+) -> std::result::Result<Observed<N>, E> {
+    let Span {
+        t0,
+        y0,
+        t1,
+        samples,
+    } = *span;
+    validate(&Settings {
+        t_end: (t1 - t0).abs(),
+        samples: 0,
+        ..*settings
+    })?;
+    check_samples(t0, t1, samples).map_err(RouthError::from)?;
+    let start = Instant::now();
+    let dir = if t1 >= t0 { 1.0 } else { -1.0 };
+    let x0 = reduced(&y0);
+    let level = settings.project.then(|| LevelSet::through(body, &x0));
+    let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
+    let project_step = project_every(level.as_ref(), settings.project_every);
+    let opts = Options {
+        rtol: settings.rtol,
+        atol: settings.atol,
+        max_steps: settings.max_steps,
+        ..Options::default()
+    };
+    let method = settings
+        .method
+        .resolve_projected(settings.rtol.min(settings.atol), settings.project);
+    let mut stepper = stepper(method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
+    let plan = Drive {
+        samples,
+        project: level
+            .is_some()
+            .then_some(&project_step as Projection<'_, N>),
+        event,
+    };
+    let drift = RefCell::new(DriftTracker::new(body, &x0));
+    // The samples of a step wait for the observer, which may end the run within the step.
+    let pending: RefCell<Vec<(f64, [f64; N])>> = RefCell::new(Vec::new());
+    let mut report = |until: f64| -> std::result::Result<(), E> {
+        let mut pending = pending.borrow_mut();
+        for (s, mut y) in pending.drain(..) {
+            if (s - until) * dir <= 0.0 {
+                project(&mut y);
+                drift.borrow_mut().observe(body, &reduced(&y));
+                on_sample(s, &y)?;
+            }
+        }
+        Ok(())
+    };
+    let mut stopped_at = None;
+    let mut last_good = t0;
+    let outcome = drive(
+        stepper.as_mut(),
+        &plan,
+        &mut |t, y| {
+            pending.borrow_mut().push((t, *y));
+            Ok(())
+        },
+        &mut |t, y, stepper| {
+            if y.iter().any(|v| !v.is_finite()) {
+                return Err(Halt::Integrate(IntegrateError::NonFinite { t }));
+            }
+            last_good = t;
+            let next = on_step(t, y, stepper).map_err(Halt::Callback)?;
+            let (until, y_last) = match next {
+                Next::StopAt { t, y } => (t, y),
+                Next::Continue | Next::Stop => (t, *y),
+            };
+            report(until).map_err(Halt::Callback)?;
+            drift.borrow_mut().observe(body, &reduced(&y_last));
+            Ok(match next {
+                Next::Continue => Control::Continue,
+                Next::Stop => Control::Stop,
+                Next::StopAt { t, y } => {
+                    stopped_at = Some((t, y));
+                    Control::Stop
+                }
+            })
+        },
+    );
+    let (stop, t, y_end, failure) = match outcome {
+        Ok(o) => match stopped_at {
+            Some((t, y)) => (Stop::Stopped { t }, t, y, None),
+            None => (o.stop, o.t, o.y, None),
+        },
+        Err(Halt::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
+        Err(Halt::Callback(e)) => return Err(e),
+    };
+    report(if failure.is_some() { last_good } else { t })?;
+    let stats = stepper.stats();
+    Ok(Observed {
+        summary: Summary {
+            method: method.to_string(),
+            t_end: t1,
+            steps: stats.steps,
+            rejected: stats.rejected,
+            rhs_evals: stats.rhs_evals,
+            projected: settings.project,
+            project_every: settings.project_every,
+            initial_state: State::from_array(&x0),
+            final_state: State::from_array(&reduced(&y_end)),
+            integrals: drift.into_inner().report(),
+            elapsed_s: start.elapsed().as_secs_f64(),
+        },
+        stop,
+        t,
+        y: y_end,
+        failure,
+    })
+}
+
+/// The reduced field (mg-eq) of a body as an [`OdeSystem`].
+#[derive(Debug, Clone, Copy)]
+pub struct ReducedSystem<'a, B = Body>(pub &'a B);
+
+impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
+    type Kernels = crate::kernels::BallKernels;
+
+    #[inline(always)]
+    fn rhs(&self, _t: f64, y: &[f64; 6]) -> [f64; 6] {
+        crate::field::vector_field(self.0, y)
+    }
+
+    /// The same field with `omega` in the form for series
+    /// ([`OmegaForm::Determinant`](crate::field::OmegaForm)): fewer convolutions per order.
+    fn record(&self, _t: Var, y: &[Var; 6]) -> Option<[Var; 6]> {
+        use crate::field::{vector_field_in, OmegaForm};
+        Some(vector_field_in(OmegaForm::Determinant, self.0, y))
+    }
+}
+
+/// The reduced field (mg-eq) for the batched integrator: the one generic
+/// [`crate::field::vector_field`], on lanes or on `f64`.
+impl<B: AsBall> crate::batch::Field<6> for ReducedSystem<'_, B> {
+    #[inline(always)]
+    fn eval<D: crate::scalar::Scalar>(&self, y: &[D; 6]) -> [D; 6] {
+        crate::field::vector_field(self.0, y)
+    }
+}

@@ -1,0 +1,370 @@
+//! Cases: a body, an initial state and integration settings, read from a TOML file.
+//!
+//! Schema (commands may add tables of their own, listed in [`COMMAND_TABLES`]):
+//!
+//! ```toml
+//! [body]
+//! m = 1.0
+//! R = 1.0
+//! a = 0.3         # or com = [x, y, z], exactly one of the two (a is com = [0, 0, -a])
+//! I1 = 0.4
+//! I3 = 0.5        # I2 optional, defaults to I1
+//! G = 9.81
+//! [initial]
+//! gamma = [0.29552020666133955, 0.0, 0.955336489125606]
+//! omega = [0.5, 0.2, 8.0]   # or M = [...], exactly one of the two
+//! normalize = false         # optional: rescale gamma to unit length
+//! [integration]     # optional, and so is each key (these are the defaults)
+//! t_end = 100.0
+//! rtol = 1e-12
+//! atol = 1e-12
+//! max_steps = 10000000
+//! ```
+//!
+//! `G` is optional (default 9.81). Unknown keys and tables anywhere (at the top level, in a
+//! table) and missing fields are errors that name the key, the table and the file.
+
+use crate::ball::{AsBall, Ball};
+use crate::body::Body;
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
+use crate::state::{Normalise, State};
+use serde::Deserialize;
+use std::path::Path;
+
+/// The built-in default case, `cases/default.toml`.
+pub const DEFAULT_CASE: &str = include_str!("../../../cases/default.toml");
+
+/// Integration settings of a case, table `[integration]`: optional, and so is each key
+/// (defaults: [`Integration::default`]).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Integration {
+    /// Final time.
+    pub t_end: f64,
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance.
+    pub atol: f64,
+    /// Most steps (accepted and rejected) an adaptive integration may attempt, and most
+    /// steps of a fixed-step one.
+    pub max_steps: usize,
+}
+
+/// Default final time of a case without `t_end`.
+pub const DEFAULT_T_END: f64 = 100.0;
+/// Default relative and absolute tolerance of a case without `rtol` or `atol`.
+pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+pub use crate::simulate::DEFAULT_MAX_STEPS;
+/// The largest relative tolerance accepted: above it the integrals drift by whole percents
+/// (rtol = 1 lets H2 drift by 40 % over the default case) and the run is not a solution.
+pub const MAX_RTOL: f64 = 1e-2;
+/// The smallest relative tolerance accepted, 100 machine epsilons (2.2e-14): the rounding
+/// of each step's update is of the order of a few epsilons of the state, so a smaller local
+/// error target is not what the controller can verify.
+pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+
+impl Default for Integration {
+    fn default() -> Self {
+        Integration {
+            t_end: DEFAULT_T_END,
+            rtol: DEFAULT_TOLERANCE,
+            atol: DEFAULT_TOLERANCE,
+            max_steps: DEFAULT_MAX_STEPS,
+        }
+    }
+}
+
+impl Integration {
+    /// Check the settings: t_end, rtol, atol by the library's one validation
+    /// ([`crate::simulate::validate_span`]), the tolerances' range by [`check_tolerances`],
+    /// max_steps >= 1.
+    pub fn validate(&self) -> crate::Result<()> {
+        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)?;
+        check_tolerances(self.rtol, self.atol)?;
+        check_max_steps(self.max_steps)
+    }
+}
+
+/// The rule for the tolerances a user asks for (a case file or the command line): rtol
+/// finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`], [`MAX_RTOL`]); atol finite and
+/// > 0. The library's own `Settings` accept any finite positive values.
+pub fn check_tolerances(rtol: f64, atol: f64) -> crate::Result<()> {
+    check_option(
+        "rtol",
+        rtol,
+        rtol.is_finite() && rtol > 0.0,
+        "must be finite and > 0",
+    )?;
+    check_option(
+        "rtol",
+        rtol,
+        rtol < MAX_RTOL,
+        "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents",
+    )?;
+    check_option(
+        "rtol",
+        rtol,
+        rtol >= MIN_RTOL,
+        "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
+         the error the controller asks for",
+    )?;
+    check_option(
+        "atol",
+        atol,
+        atol.is_finite() && atol > 0.0,
+        "must be finite and > 0",
+    )
+}
+
+/// `max_steps` must be at least 1.
+pub fn check_max_steps(max_steps: usize) -> crate::Result<()> {
+    if max_steps == 0 {
+        return Err(RouthError::Option {
+            name: "max_steps",
+            value: "0".into(),
+            rule: "must be >= 1",
+        });
+    }
+    Ok(())
+}
+
+/// Fail with [`RouthError::Option`] unless `ok`.
+pub fn check_option(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    rule: &'static str,
+) -> crate::Result<()> {
+    if ok {
+        Ok(())
+    } else {
+        Err(RouthError::Option {
+            name,
+            value: value.to_string(),
+            rule,
+        })
+    }
+}
+
+/// A validated case: body, initial state, integration settings, and the raw TOML document
+/// for the tables that other commands read.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// Where it came from (a path or `<built-in default>`).
+    pub source: String,
+    /// The ball (the model: any moments, any centre of mass).
+    pub ball: Ball,
+    /// The initial state.
+    pub initial: State,
+    /// The integration settings.
+    pub integration: Integration,
+    /// The whole document, for command-specific tables.
+    pub document: toml::Table,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BodyTable {
+    m: f64,
+    #[serde(rename = "R")]
+    radius: f64,
+    a: Option<f64>,
+    com: Option<[f64; 3]>,
+    #[serde(rename = "I1")]
+    i1: f64,
+    #[serde(rename = "I2")]
+    i2: Option<f64>,
+    #[serde(rename = "I3")]
+    i3: f64,
+    #[serde(rename = "G", default = "standard_gravity")]
+    gravity: f64,
+}
+
+/// The gravitational acceleration of a case without `G`: 9.81 (the units of the case are
+/// then metres and seconds).
+pub const DEFAULT_G: f64 = 9.81;
+
+fn standard_gravity() -> f64 {
+    DEFAULT_G
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InitialTable {
+    gamma: [f64; 3],
+    omega: Option<[f64; 3]>,
+    #[serde(rename = "M")]
+    m: Option<[f64; 3]>,
+    #[serde(default)]
+    normalize: bool,
+}
+
+/// The tables this module owns.
+const OWN_TABLES: [&str; 3] = ["body", "initial", "integration"];
+
+/// Top-level tables of the commands that read their own (by [`Case::extra_table`]); any
+/// other top-level key or table is refused.
+pub const COMMAND_TABLES: [&str; 1] = ["sweep"];
+
+impl Case {
+    /// The built-in default case.
+    pub fn default_case() -> Result<Self> {
+        Self::parse(DEFAULT_CASE, "<built-in default>")
+    }
+
+    /// Read and validate a case file.
+    pub fn from_file(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|e| FileError::Case {
+            file: path.display().to_string(),
+            message: format!("cannot read: {e}"),
+        })?;
+        Self::parse(&text, &path.display().to_string())
+    }
+
+    /// The case in `path`, or the built-in default when `None`.
+    pub fn load(path: Option<&Path>) -> Result<Self> {
+        match path {
+            Some(p) => Self::from_file(p),
+            None => Self::default_case(),
+        }
+    }
+
+    /// Parse and validate case text; `source` names the file in error messages.
+    pub fn parse(text: &str, source: &str) -> Result<Self> {
+        let document: toml::Table = text.parse().map_err(|e: toml::de::Error| FileError::Case {
+            file: source.to_string(),
+            message: format!("malformed TOML: {e}"),
+        })?;
+        Self::from_document(document, source)
+    }
+
+    /// Validate a parsed case document (as [`Case::parse`] does with text); `source` names
+    /// the file in error messages.
+    pub fn from_document(document: toml::Table, source: &str) -> Result<Self> {
+        Self::from_document_unlabelled(document, source).map_err(|e| match e {
+            AppError::File(FileError::Case { .. }) => e,
+            other => FileError::Case {
+                file: source.to_string(),
+                message: other.to_string(),
+            }
+            .into(),
+        })
+    }
+
+    fn from_document_unlabelled(document: toml::Table, source: &str) -> Result<Self> {
+        let err = |message: String| FileError::Case {
+            file: source.to_string(),
+            message,
+        };
+        reject_unknown_keys(&document).map_err(&err)?;
+        let body: BodyTable = table(&document, "body").map_err(&err)?;
+        let initial: InitialTable = table(&document, "initial").map_err(&err)?;
+        let integration: Integration = match document.get("integration") {
+            None => Integration::default(),
+            Some(_) => table(&document, "integration").map_err(&err)?,
+        };
+        let inertia = [body.i1, body.i2.unwrap_or(body.i1), body.i3];
+        let ball = match (body.a, body.com) {
+            (Some(a), None) => Body::new(
+                body.m,
+                body.radius,
+                a,
+                inertia[0],
+                inertia[1],
+                inertia[2],
+                body.gravity,
+            )?
+            .ball(),
+            (None, Some(com)) => Ball::new(body.m, body.radius, inertia, com, body.gravity)?,
+            _ => {
+                return Err(
+                    err("[body] needs exactly one of the keys `a` and `com`".into()).into(),
+                );
+            }
+        };
+        let normalise = if initial.normalize {
+            Normalise::Rescale
+        } else {
+            Normalise::Reject
+        };
+        let state = match (initial.omega, initial.m) {
+            (Some(omega), None) => State::from_omega(&ball, initial.gamma, omega, normalise)?,
+            (None, Some(m)) => State::new(initial.gamma, m, normalise)?,
+            _ => {
+                return Err(
+                    err("[initial] needs exactly one of the keys `omega` and `M`".into()).into(),
+                );
+            }
+        };
+        crate::range::check_body(&ball)?;
+        crate::range::check_state(&ball, &state)?;
+        integration.validate()?;
+        Ok(Case {
+            source: source.to_string(),
+            ball,
+            initial: state,
+            integration,
+            document,
+        })
+    }
+
+    /// The ball as a [`Body`] (the paper's parameters, centre of mass on e3); an
+    /// [`RouthError::OffAxis`] naming `what` for a centre of mass off the axis.
+    pub fn body(&self, what: &'static str) -> crate::Result<Body> {
+        self.ball.axial_body(what)
+    }
+
+    /// A command's own table `[name]`, if present, deserialised with unknown keys rejected
+    /// by the target type.
+    pub fn extra_table<T: serde::de::DeserializeOwned>(&self, name: &str) -> Result<Option<T>> {
+        match self.document.get(name) {
+            None => Ok(None),
+            Some(_) => table(&self.document, name).map(Some).map_err(|message| {
+                FileError::Case {
+                    file: self.source.clone(),
+                    message,
+                }
+                .into()
+            }),
+        }
+    }
+}
+
+/// Refuse a top-level key that is not one of the known tables: a key such as `t_end` written
+/// above the first table, or an unknown table such as `[extra]`.
+fn reject_unknown_keys(document: &toml::Table) -> std::result::Result<(), String> {
+    for (key, value) in document {
+        let known = OWN_TABLES.contains(&key.as_str()) || COMMAND_TABLES.contains(&key.as_str());
+        if known && value.is_table() {
+            continue;
+        }
+        let hint = if value.is_table() {
+            format!("unknown table [{key}]")
+        } else if known {
+            format!("`{key}` must be a table [{key}]")
+        } else {
+            format!(
+                "unknown key `{key}` at the top level, outside any table (keys belong in \
+                 [body], [initial] or [integration], after the table's header)"
+            )
+        };
+        return Err(format!(
+            "{hint}; known tables: {}",
+            OWN_TABLES.map(|t| format!("[{t}]")).join(", ")
+        ));
+    }
+    Ok(())
+}
+
+fn table<T: serde::de::DeserializeOwned>(
+    document: &toml::Table,
+    name: &str,
+) -> std::result::Result<T, String> {
+    let value = document
+        .get(name)
+        .ok_or_else(|| format!("missing table [{name}]"))?;
+    value
+        .clone()
+        .try_into()
+        .map_err(|e: toml::de::Error| format!("in [{name}]: {}", e.message()))
+}

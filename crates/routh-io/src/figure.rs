@@ -1,0 +1,365 @@
+//! The figures of the diagram (PNG and SVG, through [`crate::plot::render_figure`]):
+//!
+//! * [`EnergyMomentum`]: the plane (K, H1) at fixed H3, regions shaded by the number of tori,
+//!   critical curves coloured by stability type, the vertical spins and focus–focus points,
+//!   the monodromy loop and the marked values;
+//! * [`SleepingTopFigure`]: the plane (H3, K) with the lines of vertical spins, coloured where
+//!   they are stable and where not (Routh's criterion), the thresholds marked;
+//! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop.
+
+use routh_sphere::diagram::energy_momentum::{Diagram, SleepingTop};
+use routh_sphere::diagram::monodromy::Monodromy;
+use routh_sphere::diagram::relative_equilibria::Value;
+use routh_sphere::diagram::stability::StabilityType;
+use crate::plot::{tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA, Y_LABEL_AREA};
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The colour of a stability type.
+pub fn stability_colour(kind: StabilityType) -> RGBColor {
+    match kind {
+        StabilityType::Elliptic => RGBColor(31, 119, 180),
+        StabilityType::Hyperbolic => RGBColor(214, 39, 40),
+        StabilityType::FocusFocus => RGBColor(148, 0, 211),
+        StabilityType::Degenerate => RGBColor(0, 0, 0),
+    }
+}
+
+/// The shade of a region with `tori` tori (`None`: critical).
+fn region_colour(tori: Option<usize>) -> RGBColor {
+    match tori {
+        Some(0) => RGBColor(255, 255, 255),
+        Some(1) => RGBColor(222, 235, 247),
+        Some(2) => RGBColor(199, 233, 192),
+        Some(_) => RGBColor(253, 208, 162),
+        None => RGBColor(190, 190, 190),
+    }
+}
+
+/// A chart with linear axes in f64.
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+type Drawn<DB> = std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+
+fn mesh<'a, DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    x: (f64, f64),
+    y: (f64, f64),
+    labels: (&str, &str),
+) -> std::result::Result<Chart<'a, DB>, DrawingAreaErrorKind<DB::ErrorType>> {
+    area.fill(&WHITE)?;
+    let (top, body) = area.split_vertically(TITLE_HEIGHT);
+    top.titled(title, ("sans-serif", 24))?;
+    let mut chart = ChartBuilder::on(&body)
+        .margin(MARGIN)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(Y_LABEL_AREA)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)?;
+    let (sx, sy) = (x.1 - x.0, y.1 - y.0);
+    chart
+        .configure_mesh()
+        .x_desc(labels.0)
+        .y_desc(labels.1)
+        .x_label_formatter(&|v| tick_label(*v, sx))
+        .y_label_formatter(&|v| tick_label(*v, sy))
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 18))
+        .disable_mesh()
+        .draw()?;
+    Ok(chart)
+}
+
+/// A marked value: a black triangle with its label.
+fn mark<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    label: &str,
+    at: (f64, f64),
+) -> Drawn<DB> {
+    chart.draw_series(std::iter::once(
+        EmptyElement::at(at)
+            + TriangleMarker::new((0, 0), 8, BLACK.filled())
+            + Text::new(label.to_string(), (10, -22), ("sans-serif", 16)),
+    ))?;
+    Ok(())
+}
+
+/// The legend box at `position`.
+fn legend<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    position: SeriesLabelPosition,
+) -> Drawn<DB> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .label_font(("sans-serif", 15))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+}
+
+/// The (K, H1) plane of a [`Diagram`], with the values to mark (label, value).
+pub struct EnergyMomentum<'a> {
+    /// The diagram.
+    pub diagram: &'a Diagram,
+    /// Values marked with a star and a label (the case's own).
+    pub marks: Vec<(String, Value)>,
+}
+
+impl Figure for EnergyMomentum<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        let d = self.diagram;
+        let title = format!("Energy-momentum diagram at Jellett H3 = {:.6}", d.h3);
+        let mut chart = mesh(
+            root,
+            &title,
+            d.window.k,
+            d.window.h1,
+            ("Routh's K", "energy H1"),
+        )?;
+        let (grid, ks, hs) = (&d.tori.tori, &d.tori.k, &d.tori.h1);
+        let half = |v: &[f64]| 0.5 * (v[v.len() - 1] - v[0]) / (v.len() - 1) as f64;
+        let (dk, dh) = (half(ks), half(hs));
+        // One rectangle per run of equal cells in a row (a small SVG).
+        let mut cells = vec![];
+        for (row, &h) in grid.iter().zip(hs) {
+            let mut start = 0;
+            for i in 1..=row.len() {
+                if i == row.len() || row[i] != row[start] {
+                    let corners = [(ks[start] - dk, h - dh), (ks[i - 1] + dk, h + dh)];
+                    cells.push(Rectangle::new(corners, region_colour(row[start]).filled()));
+                    start = i;
+                }
+            }
+        }
+        chart.draw_series(cells)?;
+        for n in 0..=3 {
+            let label = match n {
+                3 => "3 or more tori".to_string(),
+                1 => "1 torus".to_string(),
+                _ => format!("{n} tori"),
+            };
+            if grid
+                .iter()
+                .flatten()
+                .any(|&c| c.map(|c| c.min(3)) == Some(n))
+            {
+                let colour = region_colour(Some(n));
+                chart
+                    .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
+                    .label(label)
+                    .legend(move |(x, y)| {
+                        Rectangle::new([(x, y - 6), (x + 20, y + 6)], colour.filled())
+                    });
+            }
+        }
+        let inside = |v: &Value| {
+            v.k >= d.window.k.0
+                && v.k <= d.window.k.1
+                && v.h1 >= d.window.h1.0
+                && v.h1 <= d.window.h1.1
+        };
+        let mut legend_done = vec![];
+        for curve in &d.critical_curves {
+            let colour = stability_colour(curve.stability);
+            // Only the runs of points inside the window (plotters would clamp the others onto
+            // its border).
+            let runs = curve
+                .points
+                .split(|p| !inside(&p.value))
+                .filter(|run| run.len() > 1);
+            let mut series = None;
+            for run in runs {
+                series = Some(chart.draw_series(LineSeries::new(
+                    run.iter().map(|p| (p.value.k, p.value.h1)),
+                    colour.stroke_width(3),
+                ))?);
+            }
+            let Some(series) = series else {
+                continue;
+            };
+            if !legend_done.contains(&curve.stability) {
+                legend_done.push(curve.stability);
+                series
+                    .label(format!("steady precessions, {}", curve.stability.name()))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(3))
+                    });
+            }
+        }
+        if let Some(m) = &d.monodromy {
+            let grey = RGBColor(90, 90, 90);
+            chart
+                .draw_series(LineSeries::new(
+                    m.points.iter().map(|p| (p.value.k, p.value.h1)),
+                    grey.stroke_width(2),
+                ))?
+                .label("monodromy loop")
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(2))
+                });
+        }
+        for spin in d.vertical_spins.iter().filter(|s| inside(&s.value)) {
+            let colour = stability_colour(spin.stability);
+            let name = if spin.stability == StabilityType::FocusFocus {
+                "focus-focus".to_string()
+            } else {
+                format!("vertical spin ({})", spin.stability.name())
+            };
+            let label = format!("{name}, gamma3 = {:+}", spin.state.gamma[2].round());
+            // Labels of points in the right half go to their left.
+            let right = spin.value.k > 0.5 * (d.window.k.0 + d.window.k.1);
+            let offset = if right {
+                (-12 - 8 * label.len() as i32, 6)
+            } else {
+                (12, 6)
+            };
+            chart.draw_series(std::iter::once(
+                EmptyElement::at((spin.value.k, spin.value.h1))
+                    + Cross::new((0, 0), 9, colour.stroke_width(3))
+                    + Circle::new((0, 0), 9, colour.stroke_width(2))
+                    + Text::new(label, offset, ("sans-serif", 16)),
+            ))?;
+        }
+        for (label, value) in self.marks.iter().filter(|(_, v)| inside(v)) {
+            mark(&mut chart, label, (value.k, value.h1))?;
+        }
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)
+    }
+}
+
+/// The plane (H3, K) of the sleeping tops, with the marked values (label, (H3, K)).
+pub struct SleepingTopFigure<'a> {
+    /// The two lines.
+    pub lines: &'a [SleepingTop],
+    /// Values marked with a star and a label.
+    pub marks: Vec<(String, (f64, f64))>,
+    /// The H3 of the energy–momentum diagram (drawn as a vertical line).
+    pub h3: f64,
+}
+
+impl Figure for SleepingTopFigure<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        let points = || self.lines.iter().flat_map(|l| &l.spins);
+        let fold = |f: fn(&routh_sphere::diagram::RelativeEquilibrium) -> f64| {
+            points()
+                .map(f)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                    (a.min(v), b.max(v))
+                })
+        };
+        let (x, y) = (fold(|p| p.value.h3), fold(|p| p.value.k));
+        let pad = |(a, b): (f64, f64)| (a - 0.05 * (b - a), b + 0.05 * (b - a));
+        let mut chart = mesh(
+            root,
+            "Sleeping tops: stable (elliptic) or not (focus-focus), Routh's criterion",
+            pad(x),
+            pad(y),
+            ("Jellett H3", "Routh's K"),
+        )?;
+        let mut legend_done = vec![];
+        for line in self.lines {
+            for pair in line.spins.windows(2) {
+                let kind = pair[0].stability.max(pair[1].stability);
+                let colour = stability_colour(kind);
+                let series = chart.draw_series(LineSeries::new(
+                    pair.iter().map(|p| (p.value.h3, p.value.k)),
+                    colour.stroke_width(3),
+                ))?;
+                if !legend_done.contains(&kind) {
+                    legend_done.push(kind);
+                    series
+                        .label(format!("vertical spins, {}", kind.name()))
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(3))
+                        });
+                }
+            }
+            let end = &line.spins[line.spins.len() - 1];
+            chart.draw_series(std::iter::once(
+                EmptyElement::at((end.value.h3, end.value.k))
+                    + Text::new(
+                        format!("gamma3 = {:+}", line.pole),
+                        (-110, 10),
+                        ("sans-serif", 16),
+                    ),
+            ))?;
+            if let Some(t) = line.threshold_h3 {
+                let slope = end.value.k / end.value.h3;
+                for h3 in [-t, t] {
+                    chart.draw_series(std::iter::once(
+                        EmptyElement::at((h3, slope * h3))
+                            + Circle::new((0, 0), 6, BLACK.filled())
+                            + Text::new("Routh's threshold", (8, 8), ("sans-serif", 15)),
+                    ))?;
+                }
+            }
+        }
+        let grey = RGBColor(120, 120, 120);
+        chart
+            .draw_series(LineSeries::new(
+                [(self.h3, y.0), (self.h3, y.1)],
+                grey.stroke_width(1),
+            ))?
+            .label(format!("H3 = {:.4} of the diagram", self.h3))
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(1))
+            });
+        for (label, point) in &self.marks {
+            mark(&mut chart, label, *point)?;
+        }
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)
+    }
+}
+
+/// The rotation number along the monodromy loop.
+pub struct RotationNumberFigure<'a> {
+    /// The monodromy.
+    pub monodromy: &'a Monodromy,
+}
+
+impl Figure for RotationNumberFigure<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        let m = self.monodromy;
+        let w = m.points.iter().map(|p| p.rotation_number);
+        let lo = w.clone().fold(0.0_f64, f64::min).floor();
+        let hi = w.fold(1.0_f64, f64::max).ceil();
+        let title = format!(
+            "Rotation number W along the loop around the focus-focus value: change {}",
+            m.winding
+        );
+        let mut chart = mesh(
+            root,
+            &title,
+            (0.0, 2.0 * std::f64::consts::PI),
+            (lo - 0.05, hi + 0.05),
+            (
+                "loop angle phi (counter-clockwise in the (K, H1) plane)",
+                "W = Theta / (2 pi)",
+            ),
+        )?;
+        let blue = stability_colour(StabilityType::Elliptic);
+        chart
+            .draw_series(LineSeries::new(
+                m.points.iter().map(|p| (p.phi, p.rotation_number)),
+                blue.stroke_width(3),
+            ))?
+            .label("W followed continuously")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(3))
+            });
+        let orange = RGBColor(255, 127, 14);
+        chart
+            .draw_series(m.points.iter().map(|p| {
+                Circle::new(
+                    (p.phi, p.advance / (2.0 * std::f64::consts::PI)),
+                    3,
+                    orange.filled(),
+                )
+            }))?
+            .label("Theta / (2 pi) from the quadrature, in [0, 1)")
+            .legend(move |(x, y)| Circle::new((x + 10, y), 4, orange.filled()));
+        legend(&mut chart, SeriesLabelPosition::LowerLeft)
+    }
+}

@@ -1,0 +1,26 @@
+//! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]),
+//! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
+//! 3D viewer ([`animate`]) and sweeps ([`sweep`]). The command-line tool and the Python module
+//! are built on it; the model and the mathematics are the layers below (`routh-ball`,
+//! `routh-sphere`).
+#![warn(missing_docs)]
+// Checks are written `!(x <= limit)` on purpose, so that a NaN fails them too.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod animate;
+pub mod case;
+pub mod error;
+#[cfg(feature = "plot")]
+pub mod figure;
+pub mod output;
+#[cfg(feature = "plot")]
+pub mod plot;
+#[cfg(feature = "sweep")]
+pub mod sweep;
+pub mod table;
+
+pub use error::{AppError, AppResult, FileError};
+
+pub(crate) use routh_ball::{ball, body, integrals, motion, range, simulate, state, Result};
+pub(crate) use routh_integrate::{self as integrate, batch, sampling};
+pub(crate) use routh_sphere::quadrature;

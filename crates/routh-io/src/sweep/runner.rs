@@ -1,0 +1,536 @@
+//! Running a sweep: the case of each run, one run as `routh simulate` does it plus the
+//! nutation from events and from the quadrature, and many runs on a pool of threads,
+//! handed to a writer chunk by chunk. With DOP853 or the Taylor method the runs of one body
+//! are integrated together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the
+//! one-at-a-time integrator: the rows are the same, bit for bit, only faster.
+
+use super::design::Design;
+use super::record::{NutationQuadrature, Row, RunSettings, Status};
+use super::spec::{refuse, Quantity, Refusal, Spec};
+use super::turning::{NutationEvents, TurningPoints};
+use crate::batch::{self, Job, LaneEnd, Queue, LANES};
+use crate::body::Body;
+use crate::case::Case;
+use crate::error::{AppError, AppResult as Result, FileError, RouthError};
+use crate::integrate::{Method, Options, Stepper};
+use crate::quadrature::{ExactSolution, Motion};
+use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
+use crate::state::State;
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+/// A sweep ready to run: the base case, the design, the settings of every run.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    /// The case file's text (stored in the output's metadata).
+    pub case_text: String,
+    source: String,
+    base: toml::Table,
+    design: Design,
+    /// The settings of every run.
+    pub settings: Settings,
+    /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
+    /// method is DOP853 or Taylor (the default, `true`); `false` runs them one at a time. The rows are
+    /// the same, bit for bit: only the speed differs.
+    pub batch: bool,
+}
+
+/// A run waiting for a lane: its place among the rows, its number, case and initial state.
+struct Pending {
+    slot: usize,
+    k: u64,
+    case: Case,
+    x0: [f64; 6],
+}
+
+/// A run in a lane: what [`integrate_observed`] tracks along a run (the drift of the
+/// integrals, the turning points, the wall time).
+struct InLane<'b> {
+    run: &'b Pending,
+    drift: DriftTracker,
+    turning: TurningPoints<'b>,
+    start: Instant,
+}
+
+/// The runs of one body fed to the batched integrator, each reduced to its row as
+/// [`Sweep::run`] does it.
+struct LaneQueue<'b, I> {
+    sweep: &'b Sweep,
+    body: &'b Body,
+    pending: I,
+    lanes: [Option<InLane<'b>>; LANES],
+    rows: &'b mut [Option<Row>],
+    stop: &'b AtomicBool,
+}
+
+impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
+    fn next(&mut self, lane: usize) -> Option<Job<6>> {
+        if self.stop.load(Ordering::Relaxed) {
+            return None;
+        }
+        let run = self.pending.next()?;
+        self.lanes[lane] = Some(InLane {
+            run,
+            drift: DriftTracker::new(self.body, &run.x0),
+            turning: TurningPoints::new(self.body, &run.x0),
+            start: Instant::now(),
+        });
+        Some(Job {
+            t0: 0.0,
+            y0: run.x0,
+            t_end: self.sweep.settings.t_end,
+        })
+    }
+
+    /// As the observer of [`Sweep::run`]: the drift at the step end, then the turning points.
+    fn step(&mut self, lane: usize, step: &dyn Stepper<6>) {
+        if let Some(run) = self.lanes[lane].as_mut() {
+            run.drift.observe(self.body, step.y());
+            run.turning.observe(step);
+        }
+    }
+
+    fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+        let Some(done) = self.lanes[lane].take() else {
+            return;
+        };
+        let (sweep, run) = (self.sweep, done.run);
+        self.rows[run.slot] = Some(match end.failure {
+            Some(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
+            None => {
+                let summary = Summary {
+                    method: sweep.settings.method.to_string(),
+                    t_end: sweep.settings.t_end,
+                    steps: end.stats.steps,
+                    rejected: end.stats.rejected,
+                    rhs_evals: end.stats.rhs_evals,
+                    projected: false,
+                    project_every: 1,
+                    initial_state: State::from_array(&run.x0),
+                    final_state: State::from_array(&end.y),
+                    integrals: done.drift.report(),
+                    elapsed_s: done.start.elapsed().as_secs_f64(),
+                };
+                sweep.finished(run.k, self.body, &run.case, summary, done.turning.summary())
+            }
+        });
+    }
+}
+
+/// The settings given beside the case file (on the command line or in Python); those left
+/// `None` come from the case's `[integration]` table.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Overrides {
+    /// The integrator.
+    pub method: Method,
+    /// Final time.
+    pub t_end: Option<f64>,
+    /// Relative tolerance.
+    pub rtol: Option<f64>,
+    /// Absolute tolerance.
+    pub atol: Option<f64>,
+    /// The most steps of one run (`--max-steps`).
+    pub max_steps: Option<usize>,
+}
+
+/// How [`Sweep::execute`] ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Completion {
+    /// Every requested run was done.
+    Finished,
+    /// Stopped on request; the runs done so far were handed to the writer.
+    Stopped,
+}
+
+/// What `routh sweep --method auto` runs: `(tol_min, method)` rows, the first with
+/// `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not [`crate::integrate::AUTO_TABLE`],
+/// which is for one run), from the throughput benchmark of the lanes (BENCHMARKS.md, "Sweeps"):
+/// at equal error the Taylor lanes are about 5x faster than the DOP853 lanes at 2e-12 and at
+/// par at 1.5e-8 (looser tolerances were not measured), and at a given tolerance their error
+/// is hundreds of times smaller.
+pub const SWEEP_AUTO_TABLE: [(f64, Method); 1] = [(0.0, Method::Taylor)];
+
+/// The method a sweep runs for `method` at the tolerance `tol`: [`SWEEP_AUTO_TABLE`] for
+/// [`Method::Auto`] (the rows then name the method that ran, and `routh simulate` with that
+/// method gives the same numbers), the method itself otherwise.
+pub fn resolve(method: Method, tol: f64) -> Method {
+    method.resolve_in(tol, &SWEEP_AUTO_TABLE)
+}
+
+/// Set `path` (`table.key` or `table.key[i]`) of a case document to `value`.
+fn set(
+    doc: &mut toml::Table,
+    table: &str,
+    key: &str,
+    index: Option<usize>,
+    value: f64,
+) -> std::result::Result<(), String> {
+    let t = doc
+        .get_mut(table)
+        .and_then(|t| t.as_table_mut())
+        .ok_or_else(|| format!("the case has no [{table}] table"))?;
+    match index {
+        None => {
+            t.insert(key.to_string(), value.into());
+        }
+        Some(i) => {
+            let v = t
+                .get_mut(key)
+                .and_then(|v| v.as_array_mut())
+                .filter(|a| a.len() == 3)
+                .ok_or_else(|| format!("needs `{key} = [x, y, z]` in [{table}]"))?;
+            v[i] = value.into();
+        }
+    }
+    Ok(())
+}
+
+impl Sweep {
+    /// A sweep of the case `text` (read from `source`), whose `[sweep]` table is checked, with
+    /// every run's case built and validated before any run starts: a bad table or a value
+    /// that makes a body or a state invalid is refused, naming the key and the value.
+    pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
+        let case = Case::parse(text, source)?;
+        let tol = overrides
+            .rtol
+            .unwrap_or(case.integration.rtol)
+            .min(overrides.atol.unwrap_or(case.integration.atol));
+        let settings = Settings {
+            method: resolve(overrides.method, tol),
+            t_end: overrides.t_end.unwrap_or(case.integration.t_end),
+            rtol: overrides.rtol.unwrap_or(case.integration.rtol),
+            atol: overrides.atol.unwrap_or(case.integration.atol),
+            project: false,
+            project_every: 1,
+            samples: 0,
+            max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
+        };
+        crate::simulate::validate(&settings)?;
+        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
+            file: source.to_string(),
+            message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
+        })?;
+        let refused = |e: Refusal| FileError::Case {
+            file: source.to_string(),
+            message: e.to_string(),
+        };
+        let design = Spec::parse(&table).and_then(Design::new).map_err(refused)?;
+        let mut base = case.document;
+        base.remove("sweep");
+        let sweep = Sweep {
+            case_text: text.to_string(),
+            source: source.to_string(),
+            base,
+            design,
+            settings,
+            batch: true,
+        };
+        (0..sweep.runs())
+            .into_par_iter()
+            .try_for_each(|k| sweep.case_of(k).map(|_| ()))
+            .map_err(refused)?;
+        Ok(sweep)
+    }
+
+    /// The number of runs.
+    pub fn runs(&self) -> u64 {
+        self.design.runs()
+    }
+
+    /// The names of the swept quantities (their columns).
+    pub fn names(&self) -> Vec<String> {
+        self.design.spec().names()
+    }
+
+    /// The design.
+    pub fn design(&self) -> &Design {
+        &self.design
+    }
+
+    /// The settings as written in each row.
+    pub fn run_settings(&self) -> RunSettings {
+        RunSettings {
+            t_end: self.settings.t_end,
+            rtol: self.settings.rtol,
+            atol: self.settings.atol,
+            method: self.settings.method.to_string(),
+        }
+    }
+
+    /// The case document of run `k`: the base case with the swept values put in.
+    pub fn document_of(&self, k: u64) -> std::result::Result<toml::Table, Refusal> {
+        let values = self.design.point(k);
+        let mut doc = self.base.clone();
+        for (axis, &v) in self.design.spec().axes.iter().zip(&values) {
+            let done = match axis.quantity {
+                Quantity::Body(key) => set(&mut doc, "body", key, None, v),
+                Quantity::Tilt => set(&mut doc, "initial", "gamma", Some(0), v.sin())
+                    .and_then(|_| set(&mut doc, "initial", "gamma", Some(1), 0.0))
+                    .and_then(|_| set(&mut doc, "initial", "gamma", Some(2), v.cos())),
+                Quantity::Spin => set(&mut doc, "initial", "omega", Some(2), v),
+                Quantity::Omega(i) => set(&mut doc, "initial", "omega", Some(i), v),
+                Quantity::Gamma(i) => set(&mut doc, "initial", "gamma", Some(i), v),
+            };
+            done.map_err(|rule| refuse(&axis.name, v, &rule))?;
+        }
+        Ok(doc)
+    }
+
+    /// The validated case of run `k`; an invalid one is refused naming the swept values.
+    pub fn case_of(&self, k: u64) -> std::result::Result<Case, Refusal> {
+        let doc = self.document_of(k)?;
+        Case::from_document(doc, &self.source).map_err(|e| {
+            let named: Vec<String> = self
+                .names()
+                .iter()
+                .zip(self.design.point(k))
+                .map(|(n, v)| format!("{n} = {v}"))
+                .collect();
+            refuse(
+                &named.join(", "),
+                format!("(run {k})"),
+                &format!("makes the case invalid: {e}"),
+            )
+        })
+    }
+
+    /// A row of run `k` that could not be done, with the reason.
+    fn failed(&self, k: u64, message: String) -> Row {
+        Row {
+            run: k,
+            values: self.design.point(k),
+            status: Status::Failed,
+            message,
+            summary: None,
+            events: None,
+            quadrature: None,
+        }
+    }
+
+    /// The case of run `k`, its body and its initial state `(gamma, M)`.
+    fn start(&self, k: u64) -> Result<(Case, Body, [f64; 6])> {
+        let case = self.case_of(k).map_err(|e| FileError::Case {
+            file: self.source.clone(),
+            message: e.to_string(),
+        })?;
+        let body = case.body("routh sweep")?;
+        let x0 = case.initial.to_array();
+        Ok((case, body, x0))
+    }
+
+    /// The row of run `k` whose integration gave `summary` and `events`: with the quadrature's
+    /// nutation when the body is a Routh sphere.
+    fn finished(
+        &self,
+        k: u64,
+        body: &Body,
+        case: &Case,
+        summary: Summary,
+        events: NutationEvents,
+    ) -> Row {
+        let (quadrature, message) = if body.is_symmetric() {
+            match ExactSolution::new(body, &case.initial) {
+                Ok(exact) => {
+                    let precession = match &exact.motion {
+                        Motion::Nutation(n) => Some(n.advance),
+                        Motion::Steady { .. } => None,
+                    };
+                    (
+                        Some(NutationQuadrature {
+                            period: exact.period(),
+                            precession,
+                        }),
+                        String::new(),
+                    )
+                }
+                Err(e) => (None, format!("no quadrature: {e}")),
+            }
+        } else {
+            (
+                None,
+                "no quadrature: the body is not a Routh sphere (I1 != I2)".into(),
+            )
+        };
+        Row {
+            run: k,
+            values: self.design.point(k),
+            status: Status::Ok,
+            message,
+            summary: Some(summary),
+            events: Some(events),
+            quadrature,
+        }
+    }
+
+    /// Run number `k`: the integration of `routh simulate` on the run's case (the same
+    /// numbers, bit for bit), the turning points along it, and the quadrature when the body
+    /// is a Routh sphere. A failure (or a panic) becomes a row with status `failed`.
+    pub fn run(&self, k: u64) -> Row {
+        let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            let (case, body, x0) = self.start(k)?;
+            let mut turning = TurningPoints::new(&body, &x0);
+            let observed = integrate_observed(
+                &body,
+                &ReducedSystem(&body),
+                x0,
+                &self.settings,
+                None,
+                &mut |_, _| Ok::<_, AppError>(()),
+                &mut |step| turning.observe(step),
+            )?;
+            match observed.failure {
+                Some(e) => Err(e.into()),
+                None => Ok::<_, AppError>(self.finished(
+                    k,
+                    &body,
+                    &case,
+                    observed.summary,
+                    turning.summary(),
+                )),
+            }
+        }));
+        match attempt {
+            Ok(Ok(row)) => row,
+            Ok(Err(e)) => self.failed(k, e.to_string()),
+            Err(panic) => self.failed(
+                k,
+                format!(
+                    "internal error (panic): {}",
+                    panic
+                        .downcast_ref::<String>()
+                        .cloned()
+                        .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                        .unwrap_or_default()
+                ),
+            ),
+        }
+    }
+
+    /// Whether the runs go through the batched integrator ([`crate::batch`]): asked for
+    /// ([`Sweep::batch`]), DOP853 or Taylor, and a time span to integrate.
+    fn in_lanes(&self) -> bool {
+        self.batch
+            && matches!(self.settings.method, Method::Dop853 | Method::Taylor)
+            && self.settings.t_end > 0.0
+    }
+
+    /// The runs `runs` (on this thread), in their order, the runs of each body together in
+    /// lanes of the batched DOP853 ([`batch::lanes`]) or Taylor method ([`batch::taylor::lanes`]):
+    /// each row bitwise the row of [`Sweep::run`].
+    /// Once `stop` is set no run starts. Should the batch panic, its runs are run one at a
+    /// time (where a panicking run is a failed row).
+    fn run_in_lanes(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+        let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            let mut rows: Vec<Option<Row>> = vec![None; runs.len()];
+            let mut bodies: Vec<(Body, Vec<Pending>)> = Vec::new();
+            for (slot, &k) in runs.iter().enumerate() {
+                match self.start(k) {
+                    Err(e) => rows[slot] = Some(self.failed(k, e.to_string())),
+                    Ok((case, body, x0)) => {
+                        let run = Pending { slot, k, case, x0 };
+                        match bodies.iter_mut().find(|(b, _)| *b == body) {
+                            Some((_, group)) => group.push(run),
+                            None => bodies.push((body, vec![run])),
+                        }
+                    }
+                }
+            }
+            let opts = Options {
+                rtol: self.settings.rtol,
+                atol: self.settings.atol,
+                max_steps: self.settings.max_steps,
+                ..Options::default()
+            };
+            for (body, group) in &bodies {
+                let mut queue = LaneQueue {
+                    sweep: self,
+                    body,
+                    pending: group.iter(),
+                    lanes: std::array::from_fn(|_| None),
+                    rows: &mut rows,
+                    stop,
+                };
+                let sys = ReducedSystem(body);
+                match self.settings.method {
+                    Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
+                    _ => batch::integrate_in_lanes(&sys, &opts, &mut queue)?,
+                }
+            }
+            Ok::<_, AppError>(rows.into_iter().flatten().collect())
+        }));
+        let one_at_a_time = || {
+            runs.iter()
+                .filter(|_| !stop.load(Ordering::Relaxed))
+                .map(|&k| self.run(k))
+                .collect()
+        };
+        match attempt {
+            Ok(Ok(rows)) => rows,
+            _ => one_at_a_time(),
+        }
+    }
+
+    /// The rows of `runs` in their order, on the current rayon pool: in lanes
+    /// ([`Sweep::run_in_lanes`], in pieces of a few hundred runs) or one run at a time. Once
+    /// `stop` is set no run starts.
+    fn run_many(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+        if self.in_lanes() {
+            let piece = (runs.len() / (4 * rayon::current_num_threads())).clamp(4 * LANES, 512);
+            runs.par_chunks(piece)
+                .flat_map_iter(|part| self.run_in_lanes(part, stop))
+                .collect()
+        } else {
+            runs.par_iter()
+                .filter_map(|&k| (!stop.load(Ordering::Relaxed)).then(|| self.run(k)))
+                .collect()
+        }
+    }
+
+    /// Run the runs `todo` (in chunks of `chunk` runs, each chunk's runs in parallel on the
+    /// current rayon pool), handing each chunk's rows, in the order of `todo`, to `write`.
+    /// Between runs `stop` is polled: once it is set no new run starts, the rows done are
+    /// written, and the result is [`Completion::Stopped`].
+    pub fn execute(
+        &self,
+        todo: &[u64],
+        chunk: usize,
+        stop: &AtomicBool,
+        write: &mut dyn FnMut(&[Row]) -> Result<()>,
+    ) -> Result<Completion> {
+        for part in todo.chunks(chunk.max(1)) {
+            let rows = self.run_many(part, stop);
+            if !rows.is_empty() {
+                write(&rows)?;
+            }
+            if stop.load(Ordering::Relaxed) {
+                return Ok(Completion::Stopped);
+            }
+        }
+        Ok(Completion::Finished)
+    }
+
+    /// The rows of the runs `start <= run < stop`, in order, computed on a pool of `threads`
+    /// threads (0: one per core).
+    pub fn rows(&self, start: u64, stop: u64, threads: usize) -> Result<Vec<Row>> {
+        if start > stop || stop > self.runs() {
+            return Err(RouthError::Option {
+                name: "start, stop",
+                value: format!("{start}, {stop}"),
+                rule: "need 0 <= start <= stop <= the number of runs",
+            }
+            .into());
+        }
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| RouthError::Option {
+                name: "threads",
+                value: format!("{threads} ({e})"),
+                rule: "the thread pool must start",
+            })?;
+        let todo: Vec<u64> = (start..stop).collect();
+        let never = AtomicBool::new(false);
+        Ok(pool.install(|| self.run_many(&todo, &never)))
+    }
+}
