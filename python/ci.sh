@@ -50,7 +50,7 @@ PY
 "$venv/bin/python" -m mypy --ignore-missing-imports "$root/python/examples/nutation.py"
 # The audit test compares with the command-line tool's JSON; the sweep test reads its Parquet
 # output back, so the binary keeps the `parquet` feature that .ci/run built it with.
-(cd "$root" && cargo build --release --bin routh --features parquet)
+(cd "$root" && cargo build --release --bin routh --features routh-cli/parquet)
 status=0
 (cd "$root" && "$venv/bin/python" -m pytest -p no:cacheprovider -q python/tests) || status=$?
 if [ "$status" -eq 5 ]; then

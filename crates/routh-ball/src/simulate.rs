@@ -187,32 +187,70 @@ impl Default for Settings {
     }
 }
 
-/// The one validation of the time span and tolerances (used by [`validate`] and by case
-/// files): t_end finite and >= 0; rtol, atol finite and > 0. Each violation names the option.
+/// The largest relative tolerance accepted: above it the integrals drift by whole percents
+/// (rtol = 1 lets H2 drift by 40 % over the default case) and the run is not a solution.
+pub const MAX_RTOL: f64 = 1e-2;
+/// The smallest relative tolerance accepted, 100 machine epsilons (2.2e-14): the rounding
+/// of each step's update is of the order of a few epsilons of the state, so a smaller local
+/// error target is not what the controller can verify.
+pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+
+/// The one validation of the time span and tolerances (used by [`validate`], and so by every
+/// command, the sweep, case files and Python): t_end finite and >= 0; the tolerances by
+/// [`check_tolerances`]. Each violation names the option.
 pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
-    let bad = |name: &'static str, value: f64, rule: &'static str| {
-        Err(RouthError::Option {
-            name,
-            value: value.to_string(),
-            rule,
-        })
-    };
     if !(t_end.is_finite() && t_end >= 0.0) {
-        return bad("t_end", t_end, "must be finite and >= 0");
+        return Err(RouthError::Option {
+            name: "t_end",
+            value: t_end.to_string(),
+            rule: "must be finite and >= 0",
+        });
     }
-    if !(rtol.is_finite() && rtol > 0.0) {
-        return bad("rtol", rtol, "must be finite and > 0");
-    }
-    if !(atol.is_finite() && atol > 0.0) {
-        return bad("atol", atol, "must be finite and > 0");
-    }
-    Ok(())
+    check_tolerances(rtol, atol)
+}
+
+/// The rule of the tolerances: rtol finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`],
+/// [`MAX_RTOL`]); atol finite and > 0.
+pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
+    let rule = |name: &'static str, value: f64, ok: bool, rule: &'static str| {
+        if ok {
+            Ok(())
+        } else {
+            Err(RouthError::Option {
+                name,
+                value: value.to_string(),
+                rule,
+            })
+        }
+    };
+    rule("rtol", rtol, rtol.is_finite() && rtol > 0.0, "must be finite and > 0")?;
+    rule(
+        "rtol",
+        rtol,
+        rtol < MAX_RTOL,
+        "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents",
+    )?;
+    rule(
+        "rtol",
+        rtol,
+        rtol >= MIN_RTOL,
+        "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
+         the error the controller asks for",
+    )?;
+    rule("atol", atol, atol.is_finite() && atol > 0.0, "must be finite and > 0")
 }
 
 /// Validate the settings ([`validate_span`] and the sample count); each violation names the
 /// option.
 pub fn validate(settings: &Settings) -> Result<()> {
     validate_span(settings.t_end, settings.rtol, settings.atol)?;
+    if settings.max_steps == 0 {
+        return Err(RouthError::Option {
+            name: "max_steps",
+            value: "0".into(),
+            rule: "must be >= 1",
+        });
+    }
     if settings.samples > MAX_SAMPLES {
         return Err(RouthError::Option {
             name: "samples",

@@ -55,13 +55,7 @@ pub const DEFAULT_T_END: f64 = 100.0;
 /// Default relative and absolute tolerance of a case without `rtol` or `atol`.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
 pub use crate::simulate::DEFAULT_MAX_STEPS;
-/// The largest relative tolerance accepted: above it the integrals drift by whole percents
-/// (rtol = 1 lets H2 drift by 40 % over the default case) and the run is not a solution.
-pub const MAX_RTOL: f64 = 1e-2;
-/// The smallest relative tolerance accepted, 100 machine epsilons (2.2e-14): the rounding
-/// of each step's update is of the order of a few epsilons of the state, so a smaller local
-/// error target is not what the controller can verify.
-pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+pub use crate::simulate::{check_tolerances, MAX_RTOL, MIN_RTOL};
 
 impl Default for Integration {
     fn default() -> Self {
@@ -76,44 +70,11 @@ impl Default for Integration {
 
 impl Integration {
     /// Check the settings: t_end, rtol, atol by the library's one validation
-    /// ([`crate::simulate::validate_span`]), the tolerances' range by [`check_tolerances`],
-    /// max_steps >= 1.
+    /// ([`crate::simulate::validate_span`]), max_steps >= 1.
     pub fn validate(&self) -> crate::Result<()> {
         crate::simulate::validate_span(self.t_end, self.rtol, self.atol)?;
-        check_tolerances(self.rtol, self.atol)?;
         check_max_steps(self.max_steps)
     }
-}
-
-/// The rule for the tolerances a user asks for (a case file or the command line): rtol
-/// finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`], [`MAX_RTOL`]); atol finite and
-/// > 0. The library's own `Settings` accept any finite positive values.
-pub fn check_tolerances(rtol: f64, atol: f64) -> crate::Result<()> {
-    check_option(
-        "rtol",
-        rtol,
-        rtol.is_finite() && rtol > 0.0,
-        "must be finite and > 0",
-    )?;
-    check_option(
-        "rtol",
-        rtol,
-        rtol < MAX_RTOL,
-        "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents",
-    )?;
-    check_option(
-        "rtol",
-        rtol,
-        rtol >= MIN_RTOL,
-        "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
-         the error the controller asks for",
-    )?;
-    check_option(
-        "atol",
-        atol,
-        atol.is_finite() && atol > 0.0,
-        "must be finite and > 0",
-    )
 }
 
 /// `max_steps` must be at least 1.

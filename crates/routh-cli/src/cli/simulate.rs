@@ -66,8 +66,8 @@ pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
-/// The settings of a case with the command-line overrides applied, checked (the tolerances
-/// by the rule of [`routh::case::check_tolerances`]).
+/// The settings of a case with the command-line overrides applied, checked by the library's
+/// one validation ([`routh::simulate::validate`]).
 pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
     let settings = Settings {
         method: args.method,
@@ -79,8 +79,6 @@ pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
         samples,
         max_steps: args.max_steps.unwrap_or(case.integration.max_steps),
     };
-    routh::case::check_tolerances(settings.rtol, settings.atol)?;
-    routh::case::check_max_steps(settings.max_steps)?;
     routh::simulate::validate(&settings)?;
     Ok(settings)
 }

@@ -218,7 +218,7 @@ fn the_routh_sphere_as_a_ball_keeps_its_integrals_and_measure() {
 #[test]
 fn routh_sphere_mathematics_refuses_other_balls() {
     let case = Case::parse(
-        &std::fs::read_to_string("cases/chaplygin.toml")
+        &std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))
             .unwrap()
             .replace("com = [0.0, 0.0, 0.0]", "com = [0.1, 0.0, 0.0]"),
         "off-axis",
@@ -227,7 +227,7 @@ fn routh_sphere_mathematics_refuses_other_balls() {
     let err = case.body("the quadrature").unwrap_err();
     assert!(matches!(err, RouthError::OffAxis { .. }), "{err}");
     assert!(err.to_string().contains("the quadrature"), "{err}");
-    let chaplygin = Case::from_file(std::path::Path::new("cases/chaplygin.toml")).unwrap();
+    let chaplygin = Case::from_file(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))).unwrap();
     let body = chaplygin.body("the quadrature").unwrap();
     let err = routh::quadrature::ExactSolution::new(&body, &chaplygin.initial).unwrap_err();
     assert!(matches!(err, RouthError::NotSymmetric { .. }), "{err}");
@@ -235,7 +235,7 @@ fn routh_sphere_mathematics_refuses_other_balls() {
 
 #[test]
 fn case_files_take_exactly_one_of_a_and_com_inside_the_ball() {
-    let text = std::fs::read_to_string("cases/chaplygin.toml").unwrap();
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml")).unwrap();
     for (edit, key) in [
         (
             "com = [0.0, 0.0, 0.0]\na = 0.1",
@@ -255,7 +255,7 @@ fn case_files_take_exactly_one_of_a_and_com_inside_the_ball() {
 /// The largest relative drift of the integrals of the Chaplygin case over [0, t_end], and the
 /// summary of the run.
 fn chaplygin_drift(t_end: f64, tol: f64, project: bool) -> (f64, routh::simulate::Summary) {
-    let case = Case::from_file(std::path::Path::new("cases/chaplygin.toml")).unwrap();
+    let case = Case::from_file(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))).unwrap();
     assert_eq!(case.ball.model(), Model::Chaplygin);
     let settings = Settings {
         method: Method::Dop853,

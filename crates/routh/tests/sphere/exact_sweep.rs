@@ -2,8 +2,7 @@
 //! initial conditions and agrees with DOP853 at t = 10 to 1e-8 (a subset of 240 of the 2,000
 //! cases of `benches/exact_sweep.rs`, with the same generator).
 
-#[path = "common/exact_sweep.rs"]
-mod exact_sweep;
+use crate::sweep_cases as exact_sweep;
 
 use exact_sweep::{cases, distance, dop853, quadrature, Outcome, AGREEMENT, T};
 

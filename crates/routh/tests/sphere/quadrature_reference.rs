@@ -10,8 +10,7 @@
 
 // Only the generator of the states is used here.
 #[allow(dead_code)]
-#[path = "common/exact_sweep.rs"]
-mod exact_sweep;
+use crate::sweep_cases as exact_sweep;
 
 use routh::body::Body;
 use routh::quadrature::{ExactSolution, Motion, Reduction};

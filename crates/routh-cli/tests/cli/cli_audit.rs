@@ -1,10 +1,11 @@
 //! The `routh audit` command: JSON output with the documented keys, the markdown report, and
 //! exit code 0 although some printed claims fail.
 
+use crate::common;
 use std::process::Command;
 
 fn routh() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
+    common::command()
 }
 
 #[test]

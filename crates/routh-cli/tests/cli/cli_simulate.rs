@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 use std::process::Output;
 
-mod common;
+use crate::common;
 use common::{assert_exit_2, routh};
 
 fn scratch(name: &str) -> PathBuf {

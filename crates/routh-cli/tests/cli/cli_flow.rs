@@ -1,7 +1,7 @@
 //! `routh exact --flow`: the JSON keys of `routh exact` where they apply, the state agreeing
 //! with the library's quadrature (to round-off: the state passes through `State`), the CSV of samples, and bad input with exit code 2.
 
-mod common;
+use crate::common;
 
 use common::{assert_exit_2, routh};
 use routh::case::Case;

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-mod common;
+use crate::common;
 
 const DEFAULT: &str = routh::case::DEFAULT_CASE;
 
@@ -16,7 +16,7 @@ fn binary() -> String {
 }
 
 fn routh(args: &[&str]) -> Output {
-    Command::new(binary())
+    common::at_root(Command::new(binary()))
         .args(args)
         .output()
         .expect("the binary runs")
@@ -164,7 +164,7 @@ fn send(signal: &str, pid: u32) {
 fn interrupted_run_leaves_nothing(signal: &str, test: &str) {
     let dir = scratch(test);
     let out = dir.join("x.csv");
-    let mut child = Command::new(binary())
+    let mut child = common::at_root(Command::new(binary()))
         .args([
             "simulate",
             "--t-end",
@@ -490,7 +490,7 @@ fn plain_text_to_a_closed_pipe_ends_quietly() {
     // before, "failed printing to stdout: Broken pipe").
     let dir = scratch("closed-pipe");
     for args in printing_commands(&dir) {
-        let mut command = Command::new(binary());
+        let mut command = common::at_root(Command::new(binary()));
         command.args(&args);
         let out = common::with_closed_stdout(command);
         let err = text(&out.stderr);
@@ -516,7 +516,7 @@ fn plain_text_to_a_full_device_exits_2() {
             .write(true)
             .open("/dev/full")
             .unwrap();
-        let out = Command::new(binary())
+        let out = common::at_root(Command::new(binary()))
             .args(&args)
             .stdout(full)
             .output()
@@ -543,7 +543,7 @@ fn running_sweep(dir: &Path) -> (String, PathBuf, PathBuf, std::process::Child) 
         ),
     );
     let target = dir.join("stopped.csv");
-    let child = Command::new(binary())
+    let child = common::at_root(Command::new(binary()))
         .args(["sweep", "--case", &case, "--threads", "1", "--out"])
         .arg(&target)
         .stdout(Stdio::null())

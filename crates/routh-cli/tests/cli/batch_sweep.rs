@@ -4,7 +4,7 @@
 //! grid that mixes bodies (runs of one body share lanes), fails some runs (max steps) and
 //! has more runs than lanes. Tolerance zero: the lanes do the one-at-a-time arithmetic.
 
-mod common;
+use crate::common;
 use common::routh;
 
 fn sweep_rows(case: &str, extra: &[&str]) -> Vec<serde_json::Value> {

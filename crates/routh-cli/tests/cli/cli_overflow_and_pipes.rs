@@ -3,15 +3,15 @@
 
 use std::process::Command;
 
-mod common;
+use crate::common;
 
 fn routh() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
+    common::command()
 }
 
 /// The default case with one line replaced, written to a temporary file.
 fn case_with(name: &str, from: &str, to: &str) -> std::path::PathBuf {
-    let text = std::fs::read_to_string("cases/default.toml").unwrap();
+    let text = std::fs::read_to_string(format!("{}/cases/default.toml", common::ROOT)).unwrap();
     let line = text
         .lines()
         .find(|l| l.starts_with(from))

@@ -5,8 +5,7 @@
 
 // The DOP853 reference and the distance of the sweep of issue 14.
 #[allow(dead_code)]
-#[path = "common/exact_sweep.rs"]
-mod exact_sweep;
+use crate::sweep_cases as exact_sweep;
 
 use exact_sweep::{distance, dop853_at};
 use routh::body::Body;

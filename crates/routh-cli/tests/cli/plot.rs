@@ -6,7 +6,7 @@ use routh::table::{simulate_full, Table};
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
-mod common;
+use crate::common;
 use common::{assert_exit_2, routh};
 
 /// The figure size promised by `routh::plot::SIZE`.

@@ -5,9 +5,24 @@
 
 use std::process::{Command, Output, Stdio};
 
+/// The repository's root: the working directory of every run of the binary, so that the
+/// paths of the README (`cases/default.toml`) work as a user types them.
+pub const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
+/// `command` run from the repository's root ([`ROOT`]).
+pub fn at_root(mut command: Command) -> Command {
+    command.current_dir(ROOT);
+    command
+}
+
+/// The `routh` binary of this build, to be run from the repository's root.
+pub fn command() -> Command {
+    at_root(Command::new(env!("CARGO_BIN_EXE_routh")))
+}
+
 /// Run `routh` with `args` and collect its output.
 pub fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
+    command()
         .args(args)
         .output()
         .expect("the binary runs")

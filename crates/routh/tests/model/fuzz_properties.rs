@@ -3,7 +3,7 @@
 //! reader, arbitrary numbers to the field, the integrals, the exact solution and the steady
 //! motions. No panic, and no NaN in what an accepted input gives.
 
-mod properties;
+use crate::properties;
 
 use proptest::prelude::*;
 

@@ -3,7 +3,7 @@
 
 use std::process::Output;
 
-mod common;
+use crate::common;
 use common::{assert_exit_2, routh};
 
 fn json(out: &Output) -> serde_json::Value {

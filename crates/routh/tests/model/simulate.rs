@@ -290,7 +290,7 @@ fn error_at_1000(settings: &Settings) -> f64 {
     let case = Case::default_case().unwrap();
     let text = std::fs::read_to_string(
         std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("bench/work_precision/reference.json"),
+            .join("../../bench/work_precision/reference.json"),
     )
     .unwrap();
     let json: serde_json::Value = serde_json::from_str(&text).unwrap();

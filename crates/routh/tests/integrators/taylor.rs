@@ -27,6 +27,8 @@ fn kepler<D: Scalar>(y: &[D; 4]) -> [D; 4] {
 struct Kepler;
 
 impl OdeSystem<4> for Kepler {
+    type Kernels = routh::integrate::taylor::Interpreted;
+
     fn rhs(&self, _t: f64, y: &[f64; 4]) -> [f64; 4] {
         kepler(y)
     }
@@ -142,6 +144,8 @@ fn recording_folds_constants_and_shares_subexpressions() {
     // Common subexpressions: y0 * y0 recorded twice is one operation.
     struct Square;
     impl OdeSystem<1> for Square {
+        type Kernels = routh::integrate::taylor::Interpreted;
+
         fn rhs(&self, _t: f64, y: &[f64; 1]) -> [f64; 1] {
             [y[0] * y[0] + y[0] * y[0]]
         }
@@ -205,6 +209,8 @@ fn the_step_is_the_radius_of_convergence_over_e_to_the_u() {
     // powers and roots round), with u = 1.5 at tol >= 1e-12 and Jorba-Zou's 2 below.
     struct Square;
     impl OdeSystem<1> for Square {
+        type Kernels = routh::integrate::taylor::Interpreted;
+
         fn rhs(&self, _t: f64, y: &[f64; 1]) -> [f64; 1] {
             [y[0] * y[0]]
         }

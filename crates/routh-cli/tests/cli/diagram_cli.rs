@@ -1,7 +1,7 @@
 //! `routh diagram` run as a user would: the JSON keys, the files written, exit code 2 with a
 //! message on bad input.
 
-mod common;
+use crate::common;
 use common::{assert_exit_2, routh};
 
 /// Run `routh diagram` with `args`, `--out dir` and `--json`; the parsed JSON.

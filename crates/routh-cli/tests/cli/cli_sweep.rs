@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-mod common;
+use crate::common;
 use common::{assert_exit_2, routh};
 
 fn scratch(name: &str) -> PathBuf {
@@ -274,7 +274,7 @@ fn an_interrupted_sweep_is_readable_and_resume_completes_it() {
     );
     let case = case.to_str().unwrap();
     let stopped = scratch("stopped.csv");
-    let child = Command::new(env!("CARGO_BIN_EXE_routh"))
+    let child = common::command()
         .args([
             "sweep",
             "--case",
@@ -346,4 +346,28 @@ fn an_interrupted_sweep_is_readable_and_resume_completes_it() {
         ],
         "cannot resume",
     );
+}
+
+/// Settings are validated once, by the library: `sweep` refuses a tolerance exactly as
+/// `simulate` does (the same message, exit code 2), on both sides of the accepted range
+/// (issue 32). Control: a tolerance inside the range is not refused by that rule.
+#[test]
+fn sweep_refuses_tolerances_as_simulate_does() {
+    for rtol in ["1", "1e-20"] {
+        let simulate = common::routh(&["simulate", "--rtol", rtol]);
+        let sweep = common::routh(&["sweep", "--case", "cases/sweep.toml", "--rtol", rtol]);
+        assert_eq!(simulate.status.code(), Some(2), "simulate --rtol {rtol}");
+        assert_eq!(sweep.status.code(), Some(2), "sweep --rtol {rtol}");
+        let message = |out: &std::process::Output| {
+            String::from_utf8_lossy(&out.stderr)
+                .lines()
+                .find(|l| l.contains("rtol"))
+                .map(str::to_string)
+        };
+        let (a, b) = (message(&simulate), message(&sweep));
+        assert!(a.is_some(), "simulate names rtol: {a:?}");
+        assert_eq!(a, b, "--rtol {rtol}");
+    }
+    let ok = common::routh(&["simulate", "--rtol", "1e-8", "--t-end", "0.1"]);
+    assert_eq!(ok.status.code(), Some(0));
 }

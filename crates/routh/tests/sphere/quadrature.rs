@@ -3,8 +3,7 @@
 
 // The DOP853 reference of the sweep of issue 14.
 #[allow(dead_code)]
-#[path = "common/exact_sweep.rs"]
-mod exact_sweep;
+use crate::sweep_cases as exact_sweep;
 
 use exact_sweep::dop853_at;
 use routh::body::Body;
