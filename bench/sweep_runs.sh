@@ -11,7 +11,7 @@ runs="${1:-100000}"
 shift || true
 spins=20
 tilts=$((runs / spins))
-cargo build --release --features parquet --quiet
+cargo build --release --features routh-cli/parquet --quiet
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 sed '/^\[sweep\]/,$d' cases/sweep.toml > "$dir/case.toml"

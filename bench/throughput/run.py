@@ -6,9 +6,9 @@ from the repository root. The ensemble: RUNS runs of the default body, omega = (
 tilts spread evenly over (0.05, 1.5), to t = 10 (the initial states come from routh:
 `batch_throughput states N`). On one core, in one interleaved run, for each tolerance:
 * routh one at a time: DOP853, one run after the other (the sweep's `--no-batch` loop);
-* routh lanes4, lanes8: the batched DOP853 (src/batch) with 4 and 8 lanes;
-* routh taylor: our Taylor method (src/integrate/taylor), one run after the other;
-* routh taylor4, taylor8: the batched Taylor method (src/batch/taylor.rs) with 4 and 8 lanes,
+* routh lanes4, lanes8: the batched DOP853 (crates/routh-integrate/src/batch) with 4 and 8 lanes;
+* routh taylor: our Taylor method (crates/routh-integrate/src/taylor), one run after the other;
+* routh taylor4, taylor8: the batched Taylor method (crates/routh-integrate/src/batch/taylor.rs) with 4 and 8 lanes,
   the instruction set (AVX-512 or AVX2) chosen at run time; each lane bitwise the one-at-a-time
   Taylor run (Jorba-Zou's order and step with u = 1.5 from tol 1e-12 up: taylor::step_exponent);
 * heyoka ensemble: `ensemble_propagate_until` with one worker thread (a copy of the

@@ -3,7 +3,7 @@
     bench/work_precision/.venv/bin/python bench/work_precision/field_forms.py [--repeat 5]
 
 from the repository root, with the venv of run.py (heyoka). `model.field` is (mg-eq)
-shortened by two exact identities (as routh's src/field.rs), `model.field_literal` the same
+shortened by two exact identities (as routh's crates/routh-ball/src/field.rs), `model.field_literal` the same
 function term by term as the paper prints it (model.py's documentation).
 
 1. check: both forms against routh's field (`work_precision eval`, the benchmark binary of

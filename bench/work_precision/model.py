@@ -11,7 +11,7 @@ r = R gamma + a e3; U = m G (r, gamma); dgamma/dt = gamma x omega;
 dM/dt = M x omega + m dr/dt x (omega x r) + gamma x dU/dgamma (mg-eq): `field_literal`.
 
 `field` is the same function of x (on all of R^6, not only on |gamma| = 1) written shorter by
-two exact identities, as routh's src/field.rs writes it (a fair comparison needs the same
+two exact identities, as routh's crates/routh-ball/src/field.rs writes it (a fair comparison needs the same
 formula): a x (b x c) = b (a, c) - c (a, b) with (dgamma/dt, omega) = (dgamma/dt, gamma) = 0
 gives m dr/dt x (omega x r) = -m R (dgamma/dt, com) omega = m R a (dgamma/dt)_3 omega
 (com = -a e3); dU/dgamma = m G (2 R gamma + a e3) and gamma x gamma = 0 give

@@ -1,4 +1,4 @@
-"""Generate src/integrate/vern9_tableau.rs from the exact Verner 9(8) coefficients.
+"""Generate crates/routh-integrate/src/vern9_tableau.rs from the exact Verner 9(8) coefficients.
 
 Source of the coefficients: J. H. Verner, "Numerically optimal Runge-Kutta pairs with
 interpolants", Numer. Algorithms 53 (2010) 383-396, and the "most efficient" 9(8) pair with
@@ -7,7 +7,7 @@ and 40-digit decimals for the interpolant) in OrdinaryDiffEq.jl (MIT licence),
 lib/OrdinaryDiffEqVerner/src/verner_tableaus.jl, the generic-type methods of
 `Vern9Tableau`, `Vern9ExtraStages` and `Vern9InterpolationCoefficients`.
 
-Usage: python3 vern9_tableau.py verner_tableaus.jl > src/integrate/vern9_tableau.rs
+Usage: python3 vern9_tableau.py verner_tableaus.jl > crates/routh-integrate/src/vern9_tableau.rs
 
 Every value is evaluated at 60 significant digits with mpmath and printed with 36, so the
 f64 literals are correctly rounded. The script checks that the nodes are the row sums.
