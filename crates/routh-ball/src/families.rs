@@ -30,7 +30,10 @@ pub fn families() -> Vec<(&'static str, Ball)> {
         ("routh_general", general(9.81)),
         ("routh_general_free", general(0.0)),
         ("chaplygin", ball(1.0, 1.0, [0.3, 0.4, 0.5], [0.0; 3], 0.0)),
-        ("ball", ball(2.0, 1.5, [0.7, 0.9, 1.1], [0.1, -0.2, 0.3], 9.81)),
+        (
+            "ball",
+            ball(2.0, 1.5, [0.7, 0.9, 1.1], [0.1, -0.2, 0.3], 9.81),
+        ),
     ]
 }
 
@@ -73,10 +76,10 @@ impl<S: routh_integrate::OdeSystem<6>> routh_integrate::OdeSystem<6> for Interpr
 #[cfg(test)]
 mod tests {
     use super::{families, kernels_source, KERNELS, REGENERATE};
+    use crate::kernels::BallKernels;
     use crate::simulate::ReducedSystem;
     use routh_integrate::batch::Lanes;
     use routh_integrate::taylor::tape::{Coefficient, Isa, PAD, STRIDE};
-    use crate::kernels::BallKernels;
     use routh_integrate::taylor::{Kernels, Tape};
 
     /// The checked-in kernels are what the generator makes of the tapes of [`families`],
@@ -97,12 +100,17 @@ mod tests {
             .collect();
         tapes.remove(0);
         let named: Vec<_> = tapes.iter().map(|(name, tape)| (*name, tape)).collect();
-        let without_one = routh_integrate::taylor::codegen::source("BallKernels", &named, REGENERATE);
+        let without_one =
+            routh_integrate::taylor::codegen::source("BallKernels", &named, REGENERATE);
         assert_ne!(without_one, checked_in);
     }
 
     /// A tape's coefficients `y^[0..=p]` in lane `l` after an expansion, as bits.
-    fn series_bits<T: Coefficient, K: Kernels>(tape: &Tape<6, T, K>, p: usize, l: usize) -> Vec<u64> {
+    fn series_bits<T: Coefficient, K: Kernels>(
+        tape: &Tape<6, T, K>,
+        p: usize,
+        l: usize,
+    ) -> Vec<u64> {
         (0..6)
             .flat_map(|i| (0..=p).map(move |k| tape.state_coefficient(i, k).lane(l).to_bits()))
             .collect()

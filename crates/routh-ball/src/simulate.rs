@@ -223,7 +223,12 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
             })
         }
     };
-    rule("rtol", rtol, rtol.is_finite() && rtol > 0.0, "must be finite and > 0")?;
+    rule(
+        "rtol",
+        rtol,
+        rtol.is_finite() && rtol > 0.0,
+        "must be finite and > 0",
+    )?;
     rule(
         "rtol",
         rtol,
@@ -237,7 +242,12 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
         "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
          the error the controller asks for",
     )?;
-    rule("atol", atol, atol.is_finite() && atol > 0.0, "must be finite and > 0")
+    rule(
+        "atol",
+        atol,
+        atol.is_finite() && atol > 0.0,
+        "must be finite and > 0",
+    )
 }
 
 /// Validate the settings ([`validate_span`] and the sample count); each violation names the

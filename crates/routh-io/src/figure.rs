@@ -7,14 +7,14 @@
 //!   they are stable and where not (Routh's criterion), the thresholds marked;
 //! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop.
 
-use routh_sphere::diagram::energy_momentum::{Diagram, SleepingTop};
-use routh_sphere::diagram::monodromy::Monodromy;
-use routh_sphere::diagram::relative_equilibria::Value;
-use routh_sphere::diagram::stability::StabilityType;
 use crate::plot::{tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA, Y_LABEL_AREA};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use routh_sphere::diagram::energy_momentum::{Diagram, SleepingTop};
+use routh_sphere::diagram::monodromy::Monodromy;
+use routh_sphere::diagram::relative_equilibria::Value;
+use routh_sphere::diagram::stability::StabilityType;
 
 /// The colour of a stability type.
 pub fn stability_colour(kind: StabilityType) -> RGBColor {

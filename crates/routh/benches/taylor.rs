@@ -11,6 +11,7 @@ use routh::batch::Lanes;
 use routh::case::Case;
 use routh::integrate::taylor::tape::Isa;
 use routh::integrate::taylor::Tape;
+use routh::kernels::BallKernels;
 use routh::simulate::ReducedSystem;
 use std::hint::black_box;
 use std::time::Duration;
@@ -54,8 +55,8 @@ fn expansion_in_lanes(c: &mut Criterion) {
     for p in ORDERS {
         // Recorded for order p, as the integrator records it (the layout depends on it).
         let tape = Tape::record(&sys, p).expect("the reduced system records");
-        let mut four: Tape<6, Lanes<4>> = tape.with_coefficients();
-        let mut eight: Tape<6, Lanes<8>> = tape.with_coefficients();
+        let mut four: Tape<6, Lanes<4>, BallKernels> = tape.with_coefficients();
+        let mut eight: Tape<6, Lanes<8>, BallKernels> = tape.with_coefficients();
         group.bench_with_input(BenchmarkId::new("4 lanes", p), &p, |b, &p| {
             let y = x.map(Lanes::splat);
             b.iter(|| {

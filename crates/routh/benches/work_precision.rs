@@ -240,7 +240,7 @@ fn plot(results: &str, stem: &str) {
     plotters::style::register_font(
         "sans-serif",
         FontStyle::Normal,
-        include_bytes!("../assets/DejaVuSans.ttf"),
+        include_bytes!("../../../assets/DejaVuSans.ttf"),
     )
     .unwrap_or_else(|_| panic!("the shipped DejaVu Sans parses"));
     let text = std::fs::read_to_string(results).expect("results file is readable");

@@ -39,7 +39,8 @@ pub use routh_integrate as integrate;
 pub use routh_integrate::{batch, differential, sampling, scalar};
 
 pub use routh_ball::{
-    ball, body, error, field, integrals, motion, problem, projection, range, simulate, state,
+    ball, body, error, families, field, integrals, kernels, motion, problem, projection, range,
+    simulate, state,
 };
 pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
 
@@ -48,14 +49,14 @@ pub use routh_sphere::{audit, poisson, quadrature, steady};
 /// The energy-momentum diagram (`routh-sphere`), and with the feature `plot` its figures
 /// (`routh-io`).
 pub mod diagram {
-    pub use routh_sphere::diagram::*;
     #[cfg(feature = "plot")]
     pub use routh_io::figure;
+    pub use routh_sphere::diagram::*;
 }
 
+#[cfg(feature = "sweep")]
+pub use routh_io::sweep;
 #[cfg(feature = "io")]
 pub use routh_io::{animate, case, output, table, AppError, AppResult, FileError};
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};
-#[cfg(feature = "sweep")]
-pub use routh_io::sweep;

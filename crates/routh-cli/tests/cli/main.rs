@@ -2,8 +2,6 @@
 //!
 //! One test binary of several modules (issue 32: few binaries, each named after what it proves).
 
-#[path = "../common/mod.rs"]
-mod common;
 mod batch_sweep;
 mod cli_audit;
 mod cli_exact_steady;
@@ -11,5 +9,7 @@ mod cli_flow;
 mod cli_overflow_and_pipes;
 mod cli_simulate;
 mod cli_sweep;
+#[path = "../common/mod.rs"]
+mod common;
 mod diagram_cli;
 mod plot;

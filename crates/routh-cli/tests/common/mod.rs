@@ -22,10 +22,7 @@ pub fn command() -> Command {
 
 /// Run `routh` with `args` and collect its output.
 pub fn routh(args: &[&str]) -> Output {
-    command()
-        .args(args)
-        .output()
-        .expect("the binary runs")
+    command().args(args).output().expect("the binary runs")
 }
 
 /// Run `routh` with `args` and check that it fails as bad input should: exit code 2, a

@@ -14,12 +14,12 @@ use std::cell::Cell;
 use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Field, Job, Lanes};
+use crate::scalar::Scalar;
 use crate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
 use crate::taylor::tape::Isa;
 use crate::{
     rk_start, scaled_error, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper,
 };
-use crate::scalar::Scalar;
 
 /// The most lanes the batched methods take ([`lanes`], [`super::taylor::lanes`]): the size of
 /// a queue's table of lanes.

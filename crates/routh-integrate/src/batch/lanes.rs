@@ -10,8 +10,8 @@
 //! implementation (fused where the target has a fused multiply-add instruction, else a
 //! product and a sum), so that this holds in every build.
 
-use crate::taylor::tape::Coefficient;
 use crate::scalar::Scalar;
+use crate::taylor::tape::Coefficient;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// `L` doubles, one per trajectory of a batch (structure of arrays: a state of dimension `N`

@@ -723,4 +723,3 @@ fn kernel<const N: usize, K: Kernels>(w: &mut String, name: &str, tape: &Tape<N,
     )
     .expect("writing to a String");
 }
-

@@ -59,7 +59,14 @@ impl Kernels for Interpreted {
         unreachable!("Interpreted has no kernel")
     }
 
-    fn pass<T: Coefficient, const FMA: bool>(_: usize, _: &mut [T], _: usize, _: usize, _: &[T], _: &[f64]) {
+    fn pass<T: Coefficient, const FMA: bool>(
+        _: usize,
+        _: &mut [T],
+        _: usize,
+        _: usize,
+        _: &[T],
+        _: &[f64],
+    ) {
         unreachable!("Interpreted has no kernel")
     }
 

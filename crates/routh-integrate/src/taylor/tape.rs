@@ -47,13 +47,13 @@ use std::collections::HashMap;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::convolution::{self, History};
-use super::recurrence;
 use super::codegen;
+use super::convolution::{self, History};
 use super::kernels::{Interpreted, Kernels};
-use std::marker::PhantomData;
-use crate::OdeSystem;
+use super::recurrence;
 use crate::scalar::Scalar;
+use crate::OdeSystem;
+use std::marker::PhantomData;
 
 /// A recorded operation; constants as their bits (so that nodes can be hashed for
 /// common-subexpression elimination).
@@ -464,7 +464,10 @@ impl<const N: usize, K: Kernels> Tape<N, f64, K> {
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
     /// coefficients up to order `max_order`, run by the kernel of its shape among the system's
     /// [`OdeSystem::Kernels`] if there is one. `None` if the system cannot be recorded.
-    pub fn record<S: OdeSystem<N, Kernels = K> + ?Sized>(sys: &S, max_order: usize) -> Option<Self> {
+    pub fn record<S: OdeSystem<N, Kernels = K> + ?Sized>(
+        sys: &S,
+        max_order: usize,
+    ) -> Option<Self> {
         RECORDERS.with(|r| r.borrow_mut().push(Recorder::default()));
         let inputs: [Var; N] = std::array::from_fn(|i| record(Node::Input(i as u32)));
         let time = record(Node::Time);
@@ -1058,8 +1061,8 @@ fn operands(node: &Node) -> impl Iterator<Item = u32> {
 mod tests {
     use super::{Tape, Var};
     use crate::batch::Lanes;
-    use crate::OdeSystem;
     use crate::scalar::Scalar;
+    use crate::OdeSystem;
 
     /// `y' = 1 / y`: not finite at `y = 0`.
     struct Inverse;

@@ -218,16 +218,23 @@ fn the_routh_sphere_as_a_ball_keeps_its_integrals_and_measure() {
 #[test]
 fn routh_sphere_mathematics_refuses_other_balls() {
     let case = Case::parse(
-        &std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))
-            .unwrap()
-            .replace("com = [0.0, 0.0, 0.0]", "com = [0.1, 0.0, 0.0]"),
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../cases/chaplygin.toml"
+        ))
+        .unwrap()
+        .replace("com = [0.0, 0.0, 0.0]", "com = [0.1, 0.0, 0.0]"),
         "off-axis",
     )
     .unwrap();
     let err = case.body("the quadrature").unwrap_err();
     assert!(matches!(err, RouthError::OffAxis { .. }), "{err}");
     assert!(err.to_string().contains("the quadrature"), "{err}");
-    let chaplygin = Case::from_file(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))).unwrap();
+    let chaplygin = Case::from_file(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../cases/chaplygin.toml"
+    )))
+    .unwrap();
     let body = chaplygin.body("the quadrature").unwrap();
     let err = routh::quadrature::ExactSolution::new(&body, &chaplygin.initial).unwrap_err();
     assert!(matches!(err, RouthError::NotSymmetric { .. }), "{err}");
@@ -235,7 +242,11 @@ fn routh_sphere_mathematics_refuses_other_balls() {
 
 #[test]
 fn case_files_take_exactly_one_of_a_and_com_inside_the_ball() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../cases/chaplygin.toml"
+    ))
+    .unwrap();
     for (edit, key) in [
         (
             "com = [0.0, 0.0, 0.0]\na = 0.1",
@@ -255,7 +266,11 @@ fn case_files_take_exactly_one_of_a_and_com_inside_the_ball() {
 /// The largest relative drift of the integrals of the Chaplygin case over [0, t_end], and the
 /// summary of the run.
 fn chaplygin_drift(t_end: f64, tol: f64, project: bool) -> (f64, routh::simulate::Summary) {
-    let case = Case::from_file(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../../cases/chaplygin.toml"))).unwrap();
+    let case = Case::from_file(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../cases/chaplygin.toml"
+    )))
+    .unwrap();
     assert_eq!(case.ball.model(), Model::Chaplygin);
     let settings = Settings {
         method: Method::Dop853,

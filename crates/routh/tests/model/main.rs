@@ -2,8 +2,6 @@
 //!
 //! One test binary of several modules (issue 32: few binaries, each named after what it proves).
 
-#[path = "../support/properties.rs"]
-mod properties;
 mod ball;
 mod case_file;
 mod field_identities;
@@ -11,4 +9,6 @@ mod fuzz_properties;
 mod model_integrals;
 mod motion;
 mod problem;
+#[path = "../support/properties.rs"]
+mod properties;
 mod simulate;

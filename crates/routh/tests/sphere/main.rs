@@ -2,8 +2,6 @@
 //!
 //! One test binary of several modules (issue 32: few binaries, each named after what it proves).
 
-#[path = "../support/exact_sweep.rs"]
-mod sweep_cases;
 mod audit_claims;
 mod audit_constructions;
 mod diagram;
@@ -15,3 +13,5 @@ mod quadrature;
 mod quadrature_reference;
 mod schouten;
 mod steady;
+#[path = "../support/exact_sweep.rs"]
+mod sweep_cases;
