@@ -2,7 +2,7 @@
 //! with and without projection, and time reversal.
 //!
 //! These run the integrator for 1000 time units (~1e5 steps): run the suite with
-//! `cargo test --release` (the README's test command), where each takes well under a second.
+//! `cargo test` (the README's test command, optimised), where each takes well under a second.
 
 use routh::case::Case;
 use routh::integrate::Method;

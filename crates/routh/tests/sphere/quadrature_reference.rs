@@ -6,7 +6,7 @@
 //! The data file `tests/data/quadrature_reference.csv` was written by this test in its write
 //! mode on commit 1276152 (before the quadrature was made cheaper, issue 13, and before the
 //! field was written with exact identities, issue 12):
-//! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test --release --test quadrature_reference`.
+//! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test sphere quadrature_reference`.
 
 // Only the generator of the states is used here.
 #[allow(dead_code)]
