@@ -1,7 +1,7 @@
 //! The case parser on arbitrary text: no panic; a case it accepts is finite everywhere.
 #![no_main]
 
-#[path = "../../tests/properties/mod.rs"]
+#[path = "../../crates/routh/tests/support/properties.rs"]
 mod properties;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {

@@ -2,7 +2,7 @@
 //! be drawn (finite, at least two rows, increasing t) and the figures and page are built.
 #![no_main]
 
-#[path = "../../tests/properties/mod.rs"]
+#[path = "../../crates/routh/tests/support/properties.rs"]
 mod properties;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {

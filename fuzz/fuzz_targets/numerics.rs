@@ -2,7 +2,7 @@
 //! arbitrary f64 bodies and states: no panic, no NaN in what an accepted input gives.
 #![no_main]
 
-#[path = "../../tests/properties/mod.rs"]
+#[path = "../../crates/routh/tests/support/properties.rs"]
 mod properties;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
