@@ -19,7 +19,8 @@
 use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Job, Lanes};
-use crate::taylor::tape::{Coefficient, Isa};
+use crate::taylor::coefficient::Coefficient;
+use crate::taylor::tape::Isa;
 use crate::taylor::{max_norm, taylor_order, Kernels, SeriesRule, Tape};
 use crate::{IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
 

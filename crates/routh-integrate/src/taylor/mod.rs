@@ -36,6 +36,7 @@
 //! order).
 
 pub mod codegen;
+pub mod coefficient;
 mod convolution;
 mod elementary;
 pub mod kernels;
