@@ -39,7 +39,7 @@ pub mod vern9_tableau;
 use std::fmt;
 use std::str::FromStr;
 
-pub use control::{Law, StepControl};
+pub use control::{Clock, Law, StepControl};
 pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
 pub(crate) use dop853::{rk_start, scaled_error};
 pub use event::brent;
@@ -382,14 +382,9 @@ pub trait Stepper<const N: usize> {
     /// Performs one accepted step (rejected attempts are repeated inside); `Ok(true)` when
     /// the step reached `t_end` (then further calls do nothing and return `Ok(true)`).
     fn step(&mut self) -> Result<bool, IntegrateError>;
-    /// Current time (the end of the last step).
-    fn t(&self) -> f64;
-    /// The end of the integration interval.
-    fn t_end(&self) -> f64;
-    /// Start of the last accepted step (`t0` before the first step).
-    fn t_prev(&self) -> f64;
-    /// Size of the last accepted step (signed).
-    fn h(&self) -> f64;
+    /// The run's clock: its time, its end, its last step and its work counters (for the
+    /// adaptive methods, their [`StepControl::clock`]).
+    fn clock(&self) -> Clock;
     /// Current state (after [`Stepper::set_state`], if called).
     fn y(&self) -> &[f64; N];
     /// The dense output of the last accepted step `[t_prev, t]` at `t` (the step as
@@ -397,8 +392,27 @@ pub trait Stepper<const N: usize> {
     fn dense(&self, t: f64) -> [f64; N];
     /// Replaces the current state after a step (a projection).
     fn set_state(&mut self, y: [f64; N]);
+
+    /// Current time (the end of the last step).
+    fn t(&self) -> f64 {
+        self.clock().t
+    }
+    /// The end of the integration interval.
+    fn t_end(&self) -> f64 {
+        self.clock().t_end
+    }
+    /// Start of the last accepted step (`t0` before the first step).
+    fn t_prev(&self) -> f64 {
+        self.clock().t_prev
+    }
+    /// Size of the last accepted step (signed).
+    fn h(&self) -> f64 {
+        self.clock().h
+    }
     /// Work counters so far.
-    fn stats(&self) -> Stats;
+    fn stats(&self) -> Stats {
+        self.clock().stats
+    }
 }
 
 /// The sample callback of [`drive`]: `on_sample(t, y)` at each requested sample time.
