@@ -79,7 +79,8 @@ mod tests {
     use crate::kernels::BallKernels;
     use crate::simulate::ReducedSystem;
     use routh_integrate::batch::Lanes;
-    use routh_integrate::taylor::tape::{Coefficient, Isa, PAD, STRIDE};
+    use routh_integrate::taylor::coefficient::Coefficient;
+    use routh_integrate::taylor::tape::{Isa, PAD, STRIDE};
     use routh_integrate::taylor::{Kernels, Tape};
 
     /// The checked-in kernels are what the generator makes of the tapes of [`families`],

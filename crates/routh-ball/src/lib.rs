@@ -4,7 +4,8 @@
 //! generic over [`Scalar`](routh_integrate::scalar::Scalar) ([`field`]), the integrals and the
 //! invariant measure ([`integrals`]), the motion in space ([`motion`]), the validated states
 //! ([`state`]), the projection onto the level set of the integrals ([`projection`]) and runs
-//! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]).
+//! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]; the method that
+//! `auto` runs: [`auto`]).
 //!
 //! Equation labels, such as (m-eq), are those of Bizyaev and Tsiganov, "On the Routh sphere
 //! problem".
@@ -12,6 +13,7 @@
 // Checks are written `!(x <= limit)` on purpose, so that a NaN fails them too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod auto;
 pub mod ball;
 pub mod body;
 pub mod error;

@@ -1,6 +1,7 @@
 //! Integration of a case along the field (mg-eq), with the integrals (int-g), (raus-int)
 //! tracked at every step, dense-output samples, and optional projection onto their level set.
 
+use crate::auto;
 use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
@@ -477,9 +478,11 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         max_steps: settings.max_steps,
         ..Options::default()
     };
-    let method = settings
-        .method
-        .resolve_projected(settings.rtol.min(settings.atol), settings.project);
+    let method = auto::resolve(
+        settings.method,
+        settings.rtol.min(settings.atol),
+        settings.project,
+    );
     let mut stepper = stepper(method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
     let plan = Drive {
         samples,

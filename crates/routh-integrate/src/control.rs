@@ -79,6 +79,31 @@ pub(crate) fn fixed_step_options(
     })
 }
 
+/// The clock of a run as its stepper shows it ([`Stepper`](super::Stepper)): the time, the
+/// end, the last step and the work counters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Clock {
+    /// Current time (the end of the last step).
+    pub t: f64,
+    /// Start of the last accepted step (`t0` before the first step).
+    pub t_prev: f64,
+    /// The end of the integration interval.
+    pub t_end: f64,
+    /// Size of the last accepted step (signed; `0` before the first).
+    pub h: f64,
+    /// Work counters so far.
+    pub stats: Stats,
+}
+
+impl Clock {
+    /// The same clock with `n` more evaluations of the field (those of a dense output, which
+    /// the step control does not count).
+    pub fn with_evals(mut self, n: usize) -> Clock {
+        self.stats.rhs_evals += n;
+        self
+    }
+}
+
 /// The step control of one run (see the module documentation).
 #[derive(Debug, Clone, Copy)]
 pub struct StepControl {
@@ -185,6 +210,18 @@ impl StepControl {
     /// [`StepControl::count_evals`]).
     pub fn stats(&self) -> Stats {
         self.stats
+    }
+
+    /// The clock of the run: [`StepControl::t`], [`StepControl::t_prev`],
+    /// [`StepControl::t_end`], [`StepControl::h_last`] and [`StepControl::stats`].
+    pub fn clock(&self) -> Clock {
+        Clock {
+            t: self.t,
+            t_prev: self.t_prev,
+            t_end: self.t_end,
+            h: self.h_last,
+            stats: self.stats,
+        }
     }
 
     /// Counts `n` evaluations of the field.

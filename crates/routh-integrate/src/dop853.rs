@@ -4,11 +4,9 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::control::{fixed_step_options, Law, StepControl};
+use super::control::{fixed_step_options, Clock, Law, StepControl};
 use super::tableau::{dense_at, dense_rows, A, B, BHH, C, ER};
-use super::{
-    check_start, drive, Control, Drive, IntegrateError, OdeSystem, Options, Stats, Stepper,
-};
+use super::{check_start, drive, Control, Drive, IntegrateError, OdeSystem, Options, Stepper};
 
 /// Stage buffer: stages 0..=12 of a step and the three dense-output stages.
 type Stages<const N: usize> = [[f64; N]; 16];
@@ -382,22 +380,8 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
         Dop853::step(self)
     }
 
-    /// Current time.
-    fn t(&self) -> f64 {
-        self.ctl.t()
-    }
-
-    fn t_end(&self) -> f64 {
-        self.ctl.t_end()
-    }
-
-    /// Start time of the last accepted step (`t0` before the first step).
-    fn t_prev(&self) -> f64 {
-        self.ctl.t_prev()
-    }
-
-    fn h(&self) -> f64 {
-        self.ctl.h_last()
+    fn clock(&self) -> Clock {
+        self.ctl.clock().with_evals(self.dense_evals.get())
     }
 
     /// Current state.
@@ -437,13 +421,6 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
         self.carry = [0.0; N];
         self.f = self.sys.rhs(self.ctl.t(), &self.y);
         self.ctl.count_evals(1);
-    }
-
-    /// Work counters so far.
-    fn stats(&self) -> Stats {
-        let mut stats = self.ctl.stats();
-        stats.rhs_evals += self.dense_evals.get();
-        stats
     }
 }
 

@@ -39,7 +39,7 @@ pub mod vern9_tableau;
 use std::fmt;
 use std::str::FromStr;
 
-pub use control::{Law, StepControl};
+pub use control::{Clock, Law, StepControl};
 pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
 pub(crate) use dop853::{rk_start, scaled_error};
 pub use event::brent;
@@ -93,7 +93,8 @@ pub enum Method {
     /// Taylor series of adaptive order and step (see [`Taylor`]); needs a system that can be
     /// recorded ([`OdeSystem::record`]).
     Taylor,
-    /// The fastest of the above for the requested tolerance ([`Method::resolve`]).
+    /// The fastest of the above for the requested tolerance, by a table that the model
+    /// measured ([`Method::resolve_in`]); resolved before [`stepper`] is called.
     Auto,
     /// Classical Runge–Kutta of order 4 with a fixed number of equal steps.
     Rk4 {
@@ -102,53 +103,7 @@ pub enum Method {
     },
 }
 
-/// What `auto` picks: `(tol_min, method)` rows, the first with `tol >= tol_min` wins.
-///
-/// From the work–precision benchmark (BENCHMARKS.md, section "Work-precision", run of
-/// 2026-11-24 09:59 UTC, three cases to t = 1000, plain integration): at each tolerance, the
-/// method that reaches the error the other reaches there in less time. At tol 1e-12 and below
-/// the Taylor method is both faster and 7 to 20x more accurate than Vern9 (default: 12.2 ms
-/// for 2.3e-9 against 12.6 ms for 4.9e-8); at 1e-11 Vern9's error (4.8e-7 default, 6.7e-8
-/// tilted) costs the Taylor method about as much or more (default 9.7 against 9.3 ms,
-/// nogravity a tie, tilted less), and at 1e-10 and above Vern9 is the faster (its errors there,
-/// 1e-6 and above, are where its low cost per step wins). Hence Vern9 for tol >= 5e-12 and
-/// the Taylor method below.
-pub const AUTO_TABLE: [(f64, Method); 2] = [(5e-12, Method::Vern9), (0.0, Method::Taylor)];
-
-/// What `auto` picks for a run projected onto the level set of the integrals
-/// ([`crate::simulate::Settings::project`]): `(tol_min, method)` rows as [`AUTO_TABLE`]'s.
-///
-/// From the same run, the rows "+proj/10" (projection after every 10th step): at tol 1e-11
-/// the Taylor method with projection is faster than Vern9 with projection and more accurate
-/// on the three cases (default 10.1 ms for 3.5e-10 at its tol 1e-10 against Vern9's 10.5 ms
-/// for 6.0e-10 at 1e-11; tilted 5.8 against 7.5 ms); at tol 1e-10 Vern9's error (5.5e-9 to
-/// 6.0e-9) costs the Taylor method more on default and nogravity (about 9.7 against 8.0 ms)
-/// and about the same on tilted; above, Vern9. Projection moves the crossing up by a decade:
-/// it makes the Taylor method's larger steps as accurate over long times as Vern9's, and its
-/// cost is a smaller part of a Taylor step than of a Vern9 step. Hence Vern9 for tol >= 5e-11.
-pub const AUTO_TABLE_PROJECTED: [(f64, Method); 2] =
-    [(5e-11, Method::Vern9), (0.0, Method::Taylor)];
-
 impl Method {
-    /// The method that runs for the tolerance `tol = min(rtol, atol)`: [`AUTO_TABLE`] for
-    /// [`Method::Auto`], the method itself otherwise.
-    pub fn resolve(self, tol: f64) -> Method {
-        self.resolve_projected(tol, false)
-    }
-
-    /// [`Method::resolve`] for a run that is `projected` onto the level set of the integrals
-    /// or not: [`AUTO_TABLE_PROJECTED`] or [`AUTO_TABLE`] for [`Method::Auto`].
-    pub fn resolve_projected(self, tol: f64, projected: bool) -> Method {
-        self.resolve_in(
-            tol,
-            if projected {
-                &AUTO_TABLE_PROJECTED
-            } else {
-                &AUTO_TABLE
-            },
-        )
-    }
-
     /// The method that runs for the tolerance `tol` by the `table` of `(tol_min, method)`
     /// rows (the first with `tol >= tol_min` wins; the Taylor method below the last) for
     /// [`Method::Auto`], the method itself otherwise.
@@ -214,8 +169,9 @@ impl fmt::Display for Method {
 }
 
 /// The stepper of `method` for `sys` from `(t0, y0)` towards `t_end` with the tolerances and
-/// limits of `opts` ([`Method::Auto`] resolved for `min(rtol, atol)`; RK4 takes its equal steps
-/// and ignores `opts`). Errors of the stepper's constructor.
+/// limits of `opts` (RK4 takes its equal steps and ignores `opts`). Errors of the stepper's
+/// constructor, and [`IntegrateError::UnresolvedAuto`] for [`Method::Auto`], which names no
+/// method until the caller's table resolves it ([`Method::resolve_in`]).
 pub fn stepper<'a, S: OdeSystem<N>, const N: usize>(
     method: Method,
     sys: &'a S,
@@ -224,10 +180,11 @@ pub fn stepper<'a, S: OdeSystem<N>, const N: usize>(
     t_end: f64,
     opts: &Options,
 ) -> Result<Box<dyn Stepper<N> + 'a>, IntegrateError> {
-    Ok(match method.resolve(opts.rtol.min(opts.atol)) {
+    Ok(match method {
         Method::Dop853 => Box::new(Dop853::new(sys, t0, y0, t_end, opts)?),
         Method::Vern9 => Box::new(Vern9::new(sys, t0, y0, t_end, opts)?),
-        Method::Taylor | Method::Auto => Box::new(Taylor::new(sys, t0, y0, t_end, opts)?),
+        Method::Taylor => Box::new(Taylor::new(sys, t0, y0, t_end, opts)?),
+        Method::Auto => return Err(IntegrateError::UnresolvedAuto),
         Method::Rk4 { steps } => Box::new(Rk4::new(sys, t0, y0, t_end, steps)),
     })
 }
@@ -346,6 +303,12 @@ pub enum IntegrateError {
         /// Time at which it was detected.
         t: f64,
     },
+    /// [`Method::Auto`] was given to [`stepper`] unresolved: which method runs is the
+    /// model's choice, by its measured table ([`Method::resolve_in`]).
+    #[error(
+        "method auto names no integrator until the model's table resolves it (Method::resolve_in)"
+    )]
+    UnresolvedAuto,
     /// The method cannot integrate this system.
     #[error("method {method} cannot integrate this system: {reason}")]
     Unsupported {
@@ -382,14 +345,9 @@ pub trait Stepper<const N: usize> {
     /// Performs one accepted step (rejected attempts are repeated inside); `Ok(true)` when
     /// the step reached `t_end` (then further calls do nothing and return `Ok(true)`).
     fn step(&mut self) -> Result<bool, IntegrateError>;
-    /// Current time (the end of the last step).
-    fn t(&self) -> f64;
-    /// The end of the integration interval.
-    fn t_end(&self) -> f64;
-    /// Start of the last accepted step (`t0` before the first step).
-    fn t_prev(&self) -> f64;
-    /// Size of the last accepted step (signed).
-    fn h(&self) -> f64;
+    /// The run's clock: its time, its end, its last step and its work counters (for the
+    /// adaptive methods, their [`StepControl::clock`]).
+    fn clock(&self) -> Clock;
     /// Current state (after [`Stepper::set_state`], if called).
     fn y(&self) -> &[f64; N];
     /// The dense output of the last accepted step `[t_prev, t]` at `t` (the step as
@@ -397,8 +355,27 @@ pub trait Stepper<const N: usize> {
     fn dense(&self, t: f64) -> [f64; N];
     /// Replaces the current state after a step (a projection).
     fn set_state(&mut self, y: [f64; N]);
+
+    /// Current time (the end of the last step).
+    fn t(&self) -> f64 {
+        self.clock().t
+    }
+    /// The end of the integration interval.
+    fn t_end(&self) -> f64 {
+        self.clock().t_end
+    }
+    /// Start of the last accepted step (`t0` before the first step).
+    fn t_prev(&self) -> f64 {
+        self.clock().t_prev
+    }
+    /// Size of the last accepted step (signed).
+    fn h(&self) -> f64 {
+        self.clock().h
+    }
     /// Work counters so far.
-    fn stats(&self) -> Stats;
+    fn stats(&self) -> Stats {
+        self.clock().stats
+    }
 }
 
 /// The sample callback of [`drive`]: `on_sample(t, y)` at each requested sample time.

@@ -2,7 +2,7 @@
 //! (Butcher tableau and continuous extension) and a [`Stepper`].
 
 use super::compensated::compensated_add;
-use super::{IntegrateError, OdeSystem, Stats, Stepper};
+use super::{Clock, IntegrateError, OdeSystem, Stats, Stepper};
 
 /// Nodes `c_i` of the classical Runge–Kutta method.
 pub const RK4_C: [f64; 4] = [0.0, 0.5, 0.5, 1.0];
@@ -110,20 +110,14 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
         Ok(self.done_steps == self.steps)
     }
 
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn t_end(&self) -> f64 {
-        self.t_end
-    }
-
-    fn t_prev(&self) -> f64 {
-        self.t_prev
-    }
-
-    fn h(&self) -> f64 {
-        self.t - self.t_prev
+    fn clock(&self) -> Clock {
+        Clock {
+            t: self.t,
+            t_prev: self.t_prev,
+            t_end: self.t_end,
+            h: self.t - self.t_prev,
+            stats: self.stats,
+        }
     }
 
     fn y(&self) -> &[f64; N] {
@@ -148,10 +142,6 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.carry = [0.0; N];
-    }
-
-    fn stats(&self) -> Stats {
-        self.stats
     }
 }
 

@@ -15,10 +15,10 @@
 use std::cell::Cell;
 
 use super::compensated::compensated_add;
-use super::control::{Law, StepControl};
+use super::control::{Clock, Law, StepControl};
 use super::dop853::{rk_start, RkStart, RungeKutta};
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
-use super::{IntegrateError, OdeSystem, Options, Stats, Stepper};
+use super::{IntegrateError, OdeSystem, Options, Stepper};
 
 /// Stage derivatives `k_0 .. k_25`.
 type Stages<const N: usize> = [[f64; N]; STAGES];
@@ -194,34 +194,13 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
         self.advance()
     }
 
-    fn t_end(&self) -> f64 {
-        self.ctl.t_end()
-    }
-
-    fn h(&self) -> f64 {
-        self.ctl.h_last()
-    }
-
-    /// Current time.
-    fn t(&self) -> f64 {
-        self.ctl.t()
+    fn clock(&self) -> Clock {
+        self.ctl.clock().with_evals(self.dense_evals.get())
     }
 
     /// Current state.
     fn y(&self) -> &[f64; N] {
         &self.y
-    }
-
-    /// Start time of the last accepted step (`t0` before the first step).
-    fn t_prev(&self) -> f64 {
-        self.ctl.t_prev()
-    }
-
-    /// Work counters so far.
-    fn stats(&self) -> Stats {
-        let mut stats = self.ctl.stats();
-        stats.rhs_evals += self.dense_evals.get();
-        stats
     }
 
     /// Evaluates the 9th-order interpolant of the last accepted step `[t_prev, t]` at `t`.

@@ -39,8 +39,8 @@ pub use routh_integrate as integrate;
 pub use routh_integrate::{batch, differential, sampling, scalar};
 
 pub use routh_ball::{
-    ball, body, error, families, field, integrals, kernels, motion, problem, projection, range,
-    simulate, state,
+    auto, ball, body, error, families, field, integrals, kernels, motion, problem, projection,
+    range, simulate, state,
 };
 pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
 

@@ -168,7 +168,7 @@ fn projection_every_nth_step_is_reported_and_holds_the_integrals() {
 }
 
 /// `--method auto` resolves by the tolerance and by whether the run projects
-/// (`integrate::AUTO_TABLE` and `AUTO_TABLE_PROJECTED`): at tol 1e-11 Vern9 plain and the
+/// (`auto::AUTO_TABLE` and `AUTO_TABLE_PROJECTED`): at tol 1e-11 Vern9 plain and the
 /// Taylor method projected; at 1e-10 Vern9 either way, at 1e-12 the Taylor method either way.
 /// The JSON names the method that ran.
 #[test]

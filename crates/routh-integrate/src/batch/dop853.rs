@@ -18,7 +18,8 @@ use crate::scalar::Scalar;
 use crate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
 use crate::taylor::tape::Isa;
 use crate::{
-    rk_start, scaled_error, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper,
+    rk_start, scaled_error, Clock, IntegrateError, Law, OdeSystem, Options, Stats, StepControl,
+    Stepper,
 };
 
 /// The most lanes the batched methods take ([`lanes`], [`super::taylor::lanes`]): the size of
@@ -345,20 +346,8 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
         Ok(self.control.done())
     }
 
-    fn t(&self) -> f64 {
-        self.control.t()
-    }
-
-    fn t_end(&self) -> f64 {
-        self.control.t_end()
-    }
-
-    fn t_prev(&self) -> f64 {
-        self.control.t_prev()
-    }
-
-    fn h(&self) -> f64 {
-        self.control.h_last()
+    fn clock(&self) -> Clock {
+        self.control.clock().with_evals(self.dense_evals.get())
     }
 
     fn y(&self) -> &[f64; N] {
@@ -383,11 +372,5 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
     /// project).
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
-    }
-
-    fn stats(&self) -> Stats {
-        let mut stats = self.control.stats();
-        stats.rhs_evals += self.dense_evals.get();
-        stats
     }
 }

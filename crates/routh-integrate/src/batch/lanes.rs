@@ -11,7 +11,7 @@
 //! product and a sum), so that this holds in every build.
 
 use crate::scalar::Scalar;
-use crate::taylor::tape::Coefficient;
+use crate::taylor::coefficient::Coefficient;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// `L` doubles, one per trajectory of a batch (structure of arrays: a state of dimension `N`

@@ -19,9 +19,10 @@
 use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Job, Lanes};
-use crate::taylor::tape::{Coefficient, Isa};
+use crate::taylor::coefficient::Coefficient;
+use crate::taylor::tape::Isa;
 use crate::taylor::{max_norm, taylor_order, Kernels, SeriesRule, Tape};
-use crate::{IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
+use crate::{Clock, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
 
 /// The Taylor method in lanes: the tape with the coefficients of every lane and each lane's
 /// order; the lanes' states and step control are `Runs`'.
@@ -280,20 +281,8 @@ impl<const N: usize, const L: usize, K: Kernels> Stepper<N> for LaneStep<'_, N, 
         Ok(self.control.done())
     }
 
-    fn t(&self) -> f64 {
-        self.control.t()
-    }
-
-    fn t_end(&self) -> f64 {
-        self.control.t_end()
-    }
-
-    fn t_prev(&self) -> f64 {
-        self.control.t_prev()
-    }
-
-    fn h(&self) -> f64 {
-        self.control.h_last()
+    fn clock(&self) -> Clock {
+        self.control.clock()
     }
 
     fn y(&self) -> &[f64; N] {
@@ -316,9 +305,5 @@ impl<const N: usize, const L: usize, K: Kernels> Stepper<N> for LaneStep<'_, N, 
     /// project).
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
-    }
-
-    fn stats(&self) -> Stats {
-        self.control.stats()
     }
 }

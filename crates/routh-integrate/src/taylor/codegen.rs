@@ -26,11 +26,11 @@
 //! With 16 (AVX2, SSE2) the sums of two orders do not fit, and the loops sum one order at a
 //! time in the same order of the terms.
 //!
-//! A kernel is keyed by the **shape** of its tape ([`shape`]): the operations with their
+//! A kernel is keyed by the **shape** of its tape ([`Tape::shape`]): the operations with their
 //! operand slots, the constants left out. The constants that recording folded (the body's
 //! parameters, such as `m R` or `2 R m G`) are data: the constant slots of the tape's storage,
 //! and the inline constants of the instructions, which the kernel takes as an array
-//! ([`constants`]). The shape therefore depends on the model family (which
+//! (the constants of [`Tape::record`]). The shape therefore depends on the model family (which
 //! parameters vanish or equal 1, which constants coincide), not on the parameter values: a
 //! tape recorded from another body of the family finds the same kernel ([`Tape::record`] looks
 //! its shape up), and any other tape runs in the interpreter.
@@ -47,65 +47,6 @@ use super::kernels::Kernels;
 
 use super::tape::PAD;
 use super::tape::{Instr, Tape};
-
-/// The operation of an instruction, its operand slots and whether it has an inline constant.
-fn parts(instr: &Instr) -> (&'static str, Vec<u32>, bool) {
-    match *instr {
-        Instr::Add(a, b) => ("add", vec![a, b], false),
-        Instr::Sub(a, b) => ("sub", vec![a, b], false),
-        Instr::Mul(a, b) => ("mul", vec![a, b], false),
-        Instr::Div(a, b) => ("div", vec![a, b], false),
-        Instr::Neg(a) => ("neg", vec![a], false),
-        Instr::Sqrt(a) => ("sqrt", vec![a], false),
-        Instr::MulAdd(a, b, d) => ("mul_add", vec![a, b, d], false),
-        Instr::AddC(a, _) => ("add_c", vec![a], true),
-        Instr::CSub(_, a) => ("c_sub", vec![a], true),
-        Instr::MulC(a, _) => ("mul_c", vec![a], true),
-        Instr::DivC(a, _) => ("div_c", vec![a], true),
-        Instr::CDiv(_, a) => ("c_div", vec![a], true),
-        Instr::DotAdd(a, b, d, e) => ("dot_add", vec![a, b, d, e], false),
-        Instr::DotSub(a, b, d, e) => ("dot_sub", vec![a, b, d, e], false),
-        Instr::MulPlus(a, b, d) => ("mul_plus", vec![a, b, d], false),
-        Instr::MulMinus(a, b, d) => ("mul_minus", vec![a, b, d], false),
-        Instr::MinusMul(d, a, b) => ("minus_mul", vec![d, a, b], false),
-    }
-}
-
-/// The shape of a tape: its dimension, its first operation's slot and its operations (name,
-/// operand slots, `#` for an inline constant), one per line. Two tapes of the same shape run
-/// the same kernel.
-pub fn shape<const N: usize, K: Kernels>(tape: &Tape<N, f64, K>) -> String {
-    let mut text = format!("n {N} first {}\n", tape.first_op());
-    for instr in tape.code() {
-        let (name, operands, constant) = parts(instr);
-        text.push_str(name);
-        for a in operands {
-            write!(text, " {}", tape.slot_of(a)).expect("writing to a String");
-        }
-        if constant {
-            text.push_str(" #");
-        }
-        text.push('\n');
-    }
-    text
-}
-
-/// The inline constants of the tape's instructions, in their order (those of
-/// [`Instr::AddC`], [`Instr::CSub`], [`Instr::MulC`], [`Instr::DivC`], [`Instr::CDiv`]): the
-/// array a kernel takes (its orders `k >= 1` read only the factors and divisors of
-/// [`Instr::MulC`] and [`Instr::DivC`]).
-pub(super) fn constants(code: &[Instr]) -> Vec<f64> {
-    code.iter()
-        .filter_map(|instr| match *instr {
-            Instr::AddC(_, k)
-            | Instr::CSub(k, _)
-            | Instr::MulC(_, k)
-            | Instr::DivC(_, k)
-            | Instr::CDiv(k, _) => Some(k),
-            _ => None,
-        })
-        .collect()
-}
 
 /// Order 0 of one family: the `f64` operations of [`Tape`]'s `order_zero`, instruction by
 /// instruction, the values of the operations in locals.
@@ -168,7 +109,7 @@ pub fn source<const N: usize, K: Kernels>(
     families: &[(&str, &Tape<N, f64, K>)],
     regenerate: &str,
 ) -> String {
-    let shapes: Vec<String> = families.iter().map(|(_, tape)| shape(tape)).collect();
+    let shapes: Vec<String> = families.iter().map(|(_, tape)| tape.shape()).collect();
     for (i, (family, _)) in families.iter().enumerate() {
         if let Some(j) = shapes[..i].iter().position(|s| *s == shapes[i]) {
             panic!(
@@ -704,7 +645,7 @@ fn kernel<const N: usize, K: Kernels>(w: &mut String, name: &str, tape: &Tape<N,
             at(dest)
         )
         .expect("writing to a String");
-        if parts(instr).2 {
+        if instr.parts().2 {
             constant += 1;
         }
     }

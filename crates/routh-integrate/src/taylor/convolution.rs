@@ -30,7 +30,7 @@
 //! A lane of [`Lanes`](crate::batch::Lanes) therefore computes bitwise the `f64` history, and
 //! the generated histories bitwise [`histories`].
 
-use super::tape::Coefficient;
+use super::coefficient::Coefficient;
 
 /// The history of one operation: `sum_{j=1..k-1} a^[j] b^[k-j]`, plus or minus
 /// `sum_{j=1..k-1} d^[j] e^[k-j]` if `second`. Operands are the offsets of the coefficient of

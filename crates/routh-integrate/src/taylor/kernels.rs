@@ -8,20 +8,20 @@
 //! [`super::tape`]. A kernel makes the interpreter's calls with the same values in its order:
 //! the coefficients are bitwise the interpreter's (the model crate's kernel tests).
 
+pub use super::coefficient::Coefficient;
 pub use super::convolution::{at, mul_add};
 pub use super::recurrence;
-pub use super::tape::Coefficient;
 
 /// The generated kernels of a family of tapes, each found by its shape.
 ///
 /// The methods dispatch on the kernel's number (its place in [`Kernels::SHAPES`]); the tape
 /// calls them only with a number it found there, so that their `match` has no other arm.
 pub trait Kernels: 'static + Clone + std::fmt::Debug {
-    /// The name and the shape ([`super::codegen::shape`]) of each kernel, by number.
+    /// The name and the shape ([`super::Tape::shape`]) of each kernel, by number.
     const SHAPES: &'static [(&'static str, &'static str)];
 
     /// Order 0 of the tape of shape `SHAPES[kernel]`, in slots of `s` coefficients: the
-    /// field's own operations, with the inline constants `z` ([`super::codegen::constants`]).
+    /// field's own operations, with the inline constants `z` (the tape's instructions' inline constants, in their order).
     fn zero<T: Coefficient>(kernel: usize, c: &mut [T], s: usize, z: &[f64]);
 
     /// The pass of order `k >= 1` through the tape of shape `SHAPES[kernel]`, in slots of

@@ -36,6 +36,7 @@
 //! order).
 
 pub mod codegen;
+pub mod coefficient;
 mod convolution;
 mod elementary;
 pub mod kernels;
@@ -46,8 +47,8 @@ pub use kernels::{Interpreted, Kernels};
 pub use tape::{Tape, Var};
 
 use super::compensated::compensated_add;
-use super::control::{Law, StepControl};
-use super::{check_start, IntegrateError, OdeSystem, Options, Stats, Stepper};
+use super::control::{Clock, Law, StepControl};
+use super::{check_start, IntegrateError, OdeSystem, Options, Stepper};
 
 /// The tolerance of a step from a state of size `size = ||y||_inf`: `(eps, scale)` with
 /// `eps = atol`, `scale = 1` (absolute control) when `rtol size <= atol`, otherwise
@@ -323,20 +324,8 @@ impl<const N: usize, K: Kernels> Stepper<N> for Taylor<N, K> {
         self.advance()
     }
 
-    fn t(&self) -> f64 {
-        self.ctl.t()
-    }
-
-    fn t_end(&self) -> f64 {
-        self.ctl.t_end()
-    }
-
-    fn t_prev(&self) -> f64 {
-        self.ctl.t_prev()
-    }
-
-    fn h(&self) -> f64 {
-        self.ctl.h_last()
+    fn clock(&self) -> Clock {
+        self.ctl.clock()
     }
 
     fn y(&self) -> &[f64; N] {
@@ -361,10 +350,6 @@ impl<const N: usize, K: Kernels> Stepper<N> for Taylor<N, K> {
     fn set_state(&mut self, y: [f64; N]) {
         self.y = y;
         self.carry = [0.0; N];
-    }
-
-    fn stats(&self) -> Stats {
-        self.ctl.stats()
     }
 }
 

@@ -10,8 +10,8 @@
 //! operand recorded last (`b`, the later slot for a product, whose operands are in slot order)
 //! waits for one multiply-add only. Fused if `FMA` (see [`mul_add`]).
 
+use super::coefficient::Coefficient;
 use super::convolution::mul_add;
-use super::tape::Coefficient;
 
 /// `a b` at order `k`: `a0 bk + (ak b0 + h)`.
 #[inline(always)]

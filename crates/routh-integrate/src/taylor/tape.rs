@@ -44,10 +44,10 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::fmt;
+use std::fmt::Write as _;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::codegen;
+use super::coefficient::Coefficient;
 use super::convolution::{self, History};
 use super::kernels::{Interpreted, Kernels};
 use super::recurrence;
@@ -321,39 +321,41 @@ pub(super) enum Instr {
     MinusMul(u32, u32, u32),
 }
 
-/// The numbers the Taylor coefficients are made of: `f64` (one run) or
-/// [`Lanes`](crate::batch::Lanes) (one run per lane, structure of arrays: coefficient `k` of a
-/// slot for all lanes side by side, the convolutions vectorised across the lanes). The
-/// recurrences of [`Tape::expand`] are written once for every such type, and each lane's
-/// arithmetic is that of `f64`, operation for operation: a lane's coefficients are bitwise
-/// those of an `f64` tape expanded through the same state.
-pub trait Coefficient: Scalar + fmt::Debug + Send + Sync {
-    /// The number of runs (lanes) one coefficient carries.
-    const WIDTH: usize;
-    /// `self * a + b` with one rounding in each lane ([`f64::mul_add`]).
-    fn fused_mul_add(self, a: Self, b: Self) -> Self;
-    /// Lane `l`.
-    fn lane(&self, l: usize) -> f64;
-    /// Sets lane `l` to `v`.
-    fn set_lane(&mut self, l: usize, v: f64);
-}
-
-impl Coefficient for f64 {
-    const WIDTH: usize = 1;
-
-    #[inline(always)]
-    fn fused_mul_add(self, a: f64, b: f64) -> f64 {
-        f64::mul_add(self, a, b)
+impl Instr {
+    /// The operation's name, its operand slots and whether it has an inline constant.
+    pub(super) fn parts(&self) -> (&'static str, Vec<u32>, bool) {
+        match *self {
+            Instr::Add(a, b) => ("add", vec![a, b], false),
+            Instr::Sub(a, b) => ("sub", vec![a, b], false),
+            Instr::Mul(a, b) => ("mul", vec![a, b], false),
+            Instr::Div(a, b) => ("div", vec![a, b], false),
+            Instr::Neg(a) => ("neg", vec![a], false),
+            Instr::Sqrt(a) => ("sqrt", vec![a], false),
+            Instr::MulAdd(a, b, d) => ("mul_add", vec![a, b, d], false),
+            Instr::AddC(a, _) => ("add_c", vec![a], true),
+            Instr::CSub(_, a) => ("c_sub", vec![a], true),
+            Instr::MulC(a, _) => ("mul_c", vec![a], true),
+            Instr::DivC(a, _) => ("div_c", vec![a], true),
+            Instr::CDiv(_, a) => ("c_div", vec![a], true),
+            Instr::DotAdd(a, b, d, e) => ("dot_add", vec![a, b, d, e], false),
+            Instr::DotSub(a, b, d, e) => ("dot_sub", vec![a, b, d, e], false),
+            Instr::MulPlus(a, b, d) => ("mul_plus", vec![a, b, d], false),
+            Instr::MulMinus(a, b, d) => ("mul_minus", vec![a, b, d], false),
+            Instr::MinusMul(d, a, b) => ("minus_mul", vec![d, a, b], false),
+        }
     }
 
-    #[inline(always)]
-    fn lane(&self, _l: usize) -> f64 {
-        *self
-    }
-
-    #[inline(always)]
-    fn set_lane(&mut self, _l: usize, v: f64) {
-        *self = v;
+    /// The inline constant of [`Instr::AddC`], [`Instr::CSub`], [`Instr::MulC`],
+    /// [`Instr::DivC`] and [`Instr::CDiv`].
+    fn constant(&self) -> Option<f64> {
+        match *self {
+            Instr::AddC(_, k)
+            | Instr::CSub(k, _)
+            | Instr::MulC(_, k)
+            | Instr::DivC(_, k)
+            | Instr::CDiv(k, _) => Some(k),
+            _ => None,
+        }
     }
 }
 
@@ -440,7 +442,9 @@ pub struct Tape<const N: usize, T = f64, K = Interpreted> {
     hnext: Vec<T>,
     /// The generated kernel of the tape's shape, if there is one ([`super::codegen`]).
     kernel: Option<usize>,
-    /// The inline constants the kernel takes ([`super::codegen::constants`]).
+    /// The inline constants the kernel takes, those of the instructions in their order
+    /// ([`Instr::constant`]; the orders `k >= 1` read only the factors and divisors of
+    /// [`Instr::MulC`] and [`Instr::DivC`]).
     inline: Vec<f64>,
     /// The generated kernels among which [`Tape::record`] looks for this tape's shape.
     kernels: PhantomData<fn() -> K>,
@@ -461,6 +465,25 @@ pub const PAD: usize = 4;
 pub const STRIDE: usize = 33;
 
 impl<const N: usize, K: Kernels> Tape<N, f64, K> {
+    /// The shape of the tape: its dimension, its first operation's slot and its operations
+    /// (name, operand slots, `#` for an inline constant), one per line, the constants left out.
+    /// Two tapes of the same shape run the same generated kernel ([`Kernels::SHAPES`]).
+    pub fn shape(&self) -> String {
+        let mut text = format!("n {N} first {}\n", self.first_op);
+        for instr in &self.code {
+            let (name, operands, constant) = instr.parts();
+            text.push_str(name);
+            for a in operands {
+                write!(text, " {}", self.slot_of(a)).expect("writing to a String");
+            }
+            if constant {
+                text.push_str(" #");
+            }
+            text.push('\n');
+        }
+        text
+    }
+
     /// Records the field of `sys` ([`OdeSystem::record`]) and compiles it, with room for Taylor
     /// coefficients up to order `max_order`, run by the kernel of its shape among the system's
     /// [`OdeSystem::Kernels`] if there is one. `None` if the system cannot be recorded.
@@ -597,9 +620,9 @@ impl<const N: usize, K: Kernels> Tape<N, f64, K> {
             kernels: PhantomData,
         };
         let hist = histories(&tape.code, (first_op * stride + PAD) as u32, stride);
-        let shape = codegen::shape(&tape);
+        let shape = tape.shape();
         let kernel = K::SHAPES.iter().position(|(_, s)| *s == shape);
-        let inline = codegen::constants(&tape.code);
+        let inline = tape.code.iter().filter_map(Instr::constant).collect();
         Tape {
             hist,
             kernel,

@@ -144,7 +144,7 @@ pub enum Completion {
 }
 
 /// What `routh sweep --method auto` runs: `(tol_min, method)` rows, the first with
-/// `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not [`crate::integrate::AUTO_TABLE`],
+/// `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not `routh_ball::auto::AUTO_TABLE`,
 /// which is for one run), from the throughput benchmark of the lanes (BENCHMARKS.md, "Sweeps"):
 /// at equal error the Taylor lanes are about 5x faster than the DOP853 lanes at 2e-12 and at
 /// par at 1.5e-8 (looser tolerances were not measured), and at a given tolerance their error

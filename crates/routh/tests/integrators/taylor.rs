@@ -3,6 +3,7 @@
 //! with a known solution, its dense output, events and projection through the one driver, and
 //! negative controls that show each check can fail.
 
+use routh::auto;
 use routh::case::Case;
 use routh::field::{vector_field_in, OmegaForm};
 use routh::integrate::taylor::{
@@ -360,17 +361,40 @@ fn method_names_and_the_stepper_factory() {
     assert!("taylor:3".parse::<Method>().is_err());
     // auto resolves to a concrete method, for every tolerance.
     for tol in [1e-3, 1e-6, 1e-9, 1e-12, 1e-15] {
-        assert_ne!(Method::Auto.resolve(tol), Method::Auto);
+        assert_ne!(auto::resolve(Method::Auto, tol, false), Method::Auto);
     }
     // The measured choice (AUTO_TABLE): Vern9 down to tol 5e-12, Taylor below.
-    assert_eq!(Method::Auto.resolve(1e-11), Method::Vern9);
-    assert_eq!(Method::Auto.resolve(1e-12), Method::Taylor);
+    assert_eq!(auto::resolve(Method::Auto, 1e-11, false), Method::Vern9);
+    assert_eq!(auto::resolve(Method::Auto, 1e-12, false), Method::Taylor);
     // With projection (AUTO_TABLE_PROJECTED): Vern9 down to tol 5e-11, Taylor below.
-    assert_eq!(Method::Auto.resolve_projected(1e-10, true), Method::Vern9);
-    assert_eq!(Method::Auto.resolve_projected(1e-11, true), Method::Taylor);
-    assert_eq!(Method::Auto.resolve_projected(1e-11, false), Method::Vern9);
-    assert_eq!(Method::Vern9.resolve_projected(1e-15, true), Method::Vern9);
-    assert_eq!(Method::Taylor.resolve(1e-3), Method::Taylor);
+    assert_eq!(auto::resolve(Method::Auto, 1e-10, true), Method::Vern9);
+    assert_eq!(auto::resolve(Method::Auto, 1e-11, true), Method::Taylor);
+    assert_eq!(auto::resolve(Method::Auto, 1e-11, false), Method::Vern9);
+    assert_eq!(auto::resolve(Method::Vern9, 1e-15, true), Method::Vern9);
+    assert_eq!(auto::resolve(Method::Taylor, 1e-3, false), Method::Taylor);
+    // The integrator crate has no table of its own: auto unresolved is refused, not run.
+    let oscillator = |_t: f64, y: &[f64; 2]| [y[1], -y[0]];
+    let err = stepper(
+        Method::Auto,
+        &oscillator,
+        0.0,
+        [1.0, 0.0],
+        1.0,
+        &Options::default(),
+    )
+    .err()
+    .expect("auto names no integrator");
+    assert_eq!(err, IntegrateError::UnresolvedAuto);
+    // Negative control: a concrete method through the same call runs.
+    assert!(stepper(
+        Method::Vern9,
+        &oscillator,
+        0.0,
+        [1.0, 0.0],
+        1.0,
+        &Options::default()
+    )
+    .is_ok());
     // A system that cannot be recorded: a clear refusal, not a wrong result.
     let closure = |_t: f64, y: &[f64; 2]| [y[1], -y[0]];
     let err = stepper(
@@ -391,6 +415,7 @@ fn method_names_and_the_stepper_factory() {
     let ends: Vec<[f64; 6]> = [Method::Dop853, Method::Vern9, Method::Taylor, Method::Auto]
         .iter()
         .map(|&m| {
+            let m = auto::resolve(m, 1e-12, false);
             let mut s = stepper(m, &sys, 0.0, x0, 10.0, &tolerances(1e-12)).unwrap();
             run_to_end(s.as_mut()).unwrap()
         })
