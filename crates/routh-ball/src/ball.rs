@@ -14,7 +14,6 @@
 //! `r = R gamma - com` (the paper's `r = R gamma + a e3`). The height of the centre of mass
 //! above the plane is `(r, gamma) = R - (com, gamma)` on `|gamma| = 1`.
 
-use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::scalar::{dot, Scalar};
 use serde::Serialize;
@@ -62,8 +61,8 @@ pub enum Model {
     General,
 }
 
-/// Types that describe a rolling ball: [`Ball`] itself, and [`Body`] (the ball with its centre
-/// of mass on the e3 axis, the parameters of the paper).
+/// Types that describe a rolling ball: [`Ball`] itself, and the views of a ball in other
+/// parameters (the Routh sphere's, in [`crate::body`]).
 pub trait AsBall {
     /// The ball.
     fn ball(&self) -> Ball;
@@ -101,6 +100,60 @@ fn negligible(x: f64, scale: f64) -> bool {
     x.abs() <= MODEL_TOLERANCE * scale
 }
 
+/// The rules of every ball's parameters, in the order in which a violation is reported:
+/// the `named` values finite; m, R, I1, I2, I3 > 0; G >= 0; `centre` (the rule of where the
+/// centre of mass lies, in the parameters of the caller); the triangle inequalities of the
+/// principal moments.
+pub(crate) fn check_parameters(
+    named: &[(&'static str, f64)],
+    ball: &Ball,
+    centre: impl FnOnce() -> Result<()>,
+) -> Result<()> {
+    for &(name, value) in named {
+        if !value.is_finite() {
+            return Err(RouthError::Parameter {
+                name,
+                value,
+                rule: "must be finite",
+            });
+        }
+    }
+    let [i1, i2, i3] = ball.inertia;
+    for (name, value) in [
+        ("m", ball.m),
+        ("R", ball.radius),
+        ("I1", i1),
+        ("I2", i2),
+        ("I3", i3),
+    ] {
+        if value <= 0.0 {
+            return Err(RouthError::Parameter {
+                name,
+                value,
+                rule: "must be > 0",
+            });
+        }
+    }
+    if ball.gravity < 0.0 {
+        return Err(RouthError::Parameter {
+            name: "G",
+            value: ball.gravity,
+            rule: "must be >= 0",
+        });
+    }
+    centre()?;
+    for (ok, rule) in [
+        (i1 + i2 >= i3, "I1 + I2 >= I3"),
+        (i2 + i3 >= i1, "I2 + I3 >= I1"),
+        (i3 + i1 >= i2, "I3 + I1 >= I2"),
+    ] {
+        if !ok {
+            return Err(RouthError::Triangle { rule, i1, i2, i3 });
+        }
+    }
+    Ok(())
+}
+
 impl Ball {
     /// A validated ball; see [`Ball::validate`].
     pub fn new(
@@ -121,9 +174,8 @@ impl Ball {
         Ok(ball)
     }
 
-    /// Check the rules: all finite; m, R, I1, I2, I3 > 0; G >= 0; |com| < R; the triangle
-    /// inequalities of principal moments (the same rules as [`Body::validate`], with com in
-    /// place of a).
+    /// Check the rules: all finite; |com| < R; m, R, I1, I2, I3 > 0; G >= 0; the triangle
+    /// inequalities of principal moments ([`check_parameters`], the rules of every ball).
     pub fn validate(&self) -> Result<()> {
         for (i, c) in self.com.iter().enumerate() {
             if !c.is_finite() {
@@ -143,16 +195,18 @@ impl Ball {
             });
         }
         let [i1, i2, i3] = self.inertia;
-        Body {
-            m: self.m,
-            radius: self.radius,
-            a: 0.0,
-            i1,
-            i2,
-            i3,
-            gravity: self.gravity,
-        }
-        .validate()
+        check_parameters(
+            &[
+                ("m", self.m),
+                ("R", self.radius),
+                ("I1", i1),
+                ("I2", i2),
+                ("I3", i3),
+                ("G", self.gravity),
+            ],
+            self,
+            || Ok(()),
+        )
     }
 
     /// Which integrable case the ball is (decided with [`MODEL_TOLERANCE`]).
@@ -177,27 +231,6 @@ impl Ball {
     /// Whether the centre of mass lies on the e3 axis (within [`MODEL_TOLERANCE`]).
     pub fn is_axial(&self) -> bool {
         negligible(self.com[0], self.radius) && negligible(self.com[1], self.radius)
-    }
-
-    /// The ball as a [`Body`] (parameters of the paper, `a = -com3`), if its centre of mass
-    /// lies on the e3 axis; `what` names the computation that needs it in the error.
-    pub fn axial_body(&self, what: &'static str) -> Result<Body> {
-        if !self.is_axial() {
-            return Err(RouthError::OffAxis {
-                what,
-                com: self.com,
-            });
-        }
-        let [i1, i2, i3] = self.inertia;
-        Ok(Body {
-            m: self.m,
-            radius: self.radius,
-            a: -self.com[2],
-            i1,
-            i2,
-            i3,
-            gravity: self.gravity,
-        })
     }
 
     /// The vector from the centre of mass to the contact point, `r = R gamma - com`.

@@ -10,7 +10,7 @@
 //! `-a e3` from the geometric centre: with `a > 0` it lies on the side of `-e3`, and the
 //! height of the centre of mass above the plane is `(r, gamma) = R + a gamma3` on `|gamma| = 1`.
 
-use crate::ball::{AsBall, Ball, Model};
+use crate::ball::{check_parameters, AsBall, Ball, Model};
 use crate::error::{Result, RouthError};
 use crate::scalar::Scalar;
 use serde::Serialize;
@@ -66,66 +66,31 @@ impl Body {
     }
 
     /// Check the rules: all finite; m, R, I1, I2, I3 > 0; G >= 0; |a| < R; the triangle
-    /// inequalities of principal moments.
+    /// inequalities of principal moments (the rules of every ball,
+    /// [`check_parameters`], with the offset a for the centre of mass).
     pub fn validate(&self) -> Result<()> {
-        let named = [
-            ("m", self.m),
-            ("R", self.radius),
-            ("a", self.a),
-            ("I1", self.i1),
-            ("I2", self.i2),
-            ("I3", self.i3),
-            ("G", self.gravity),
-        ];
-        for (name, value) in named {
-            if !value.is_finite() {
-                return Err(RouthError::Parameter {
-                    name,
-                    value,
-                    rule: "must be finite",
-                });
-            }
-        }
-        for (name, value) in [
-            ("m", self.m),
-            ("R", self.radius),
-            ("I1", self.i1),
-            ("I2", self.i2),
-            ("I3", self.i3),
-        ] {
-            if value <= 0.0 {
-                return Err(RouthError::Parameter {
-                    name,
-                    value,
-                    rule: "must be > 0",
-                });
-            }
-        }
-        if self.gravity < 0.0 {
-            return Err(RouthError::Parameter {
-                name: "G",
-                value: self.gravity,
-                rule: "must be >= 0",
-            });
-        }
-        if self.a.abs() >= self.radius {
-            return Err(RouthError::Parameter {
-                name: "a",
-                value: self.a,
-                rule: "must satisfy |a| < R (the centre of mass lies inside the ball)",
-            });
-        }
-        let (i1, i2, i3) = (self.i1, self.i2, self.i3);
-        for (ok, rule) in [
-            (i1 + i2 >= i3, "I1 + I2 >= I3"),
-            (i2 + i3 >= i1, "I2 + I3 >= I1"),
-            (i3 + i1 >= i2, "I3 + I1 >= I2"),
-        ] {
-            if !ok {
-                return Err(RouthError::Triangle { rule, i1, i2, i3 });
-            }
-        }
-        Ok(())
+        check_parameters(
+            &[
+                ("m", self.m),
+                ("R", self.radius),
+                ("a", self.a),
+                ("I1", self.i1),
+                ("I2", self.i2),
+                ("I3", self.i3),
+                ("G", self.gravity),
+            ],
+            &self.ball(),
+            || {
+                if self.a.abs() >= self.radius {
+                    return Err(RouthError::Parameter {
+                        name: "a",
+                        value: self.a,
+                        rule: "must satisfy |a| < R (the centre of mass lies inside the ball)",
+                    });
+                }
+                Ok(())
+            },
+        )
     }
 
     /// Whether the body is dynamically symmetric, I1 = I2 within the relative tolerance
@@ -204,6 +169,31 @@ impl AsBall for Body {
             com: [0.0, 0.0, -self.a],
             gravity: self.gravity,
         }
+    }
+}
+
+/// The view of a ball as a [`Body`]: the conversion lives here, so that [`Ball`] knows
+/// nothing of the paper's parameters.
+impl Ball {
+    /// The ball as a [`Body`] (parameters of the paper, `a = -com3`), if its centre of mass
+    /// lies on the e3 axis; `what` names the computation that needs it in the error.
+    pub fn axial_body(&self, what: &'static str) -> Result<Body> {
+        if !self.is_axial() {
+            return Err(RouthError::OffAxis {
+                what,
+                com: self.com,
+            });
+        }
+        let [i1, i2, i3] = self.inertia;
+        Ok(Body {
+            m: self.m,
+            radius: self.radius,
+            a: -self.com[2],
+            i1,
+            i2,
+            i3,
+            gravity: self.gravity,
+        })
     }
 }
 

@@ -223,9 +223,10 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     };
     let _ = writeln!(text, "routh simulate: {}", case.source);
     // The offset a of a Routh sphere, else the centre of mass.
-    let centre = match case.body("") {
-        Ok(body) => format!("a = {}", Readable(body.a)),
-        Err(_) => format!("com = {:?}", b.com),
+    let centre = if b.is_axial() {
+        format!("a = {}", Readable(-b.com[2]))
+    } else {
+        format!("com = {:?}", b.com)
     };
     let _ = writeln!(
         text,
