@@ -3,6 +3,7 @@
 //! options, checks, CSV samples and text lines also serve `routh exact --flow` ([`super::flow`]).
 
 use routh::case::{check_option, Case};
+use routh::diagram::Value;
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{Accuracy, ExactSolution, Motion};
@@ -72,17 +73,12 @@ struct Summary {
     precession_rate: Option<f64>,
     passes_through_axis: bool,
     chebyshev_nodes: Option<usize>,
-    t: f64,
-    gamma: [f64; 3],
-    #[serde(rename = "M")]
-    m: [f64; 3],
-    omega: [f64; 3],
-    #[serde(rename = "H1")]
-    h1: f64,
-    #[serde(rename = "H3")]
-    h3: f64,
-    #[serde(rename = "K")]
-    k: f64,
+    /// The state at t.
+    #[serde(flatten)]
+    state: Sample,
+    /// The integrals' values.
+    #[serde(flatten)]
+    integrals: Value,
     /// Estimated relative error of the state at t (see `Accuracy`).
     error_estimate: f64,
     /// The largest |t| at which the estimated error stays below `ACCURACY_TOLERANCE` (None:
@@ -93,14 +89,27 @@ struct Summary {
     samples: Option<Vec<Sample>>,
 }
 
-/// One sample of `routh exact --samples N --json`.
+/// The state at a time: one sample of `routh exact --samples N --json`, and the state that
+/// `routh exact` and `routh exact --flow` report.
 #[derive(Serialize)]
-struct Sample {
-    t: f64,
+pub(super) struct Sample {
+    pub(super) t: f64,
     gamma: [f64; 3],
     #[serde(rename = "M")]
     m: [f64; 3],
     omega: [f64; 3],
+}
+
+impl Sample {
+    /// The state `state` at time `t`, with its angular velocity.
+    pub(super) fn new(body: &Body, t: f64, state: &State) -> Self {
+        Sample {
+            t,
+            gamma: state.gamma,
+            m: state.m,
+            omega: state.omega(body),
+        }
+    }
 }
 
 /// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
@@ -149,13 +158,12 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
         precession_rate: rate,
         passes_through_axis: through,
         chebyshev_nodes: nodes,
-        t,
-        gamma: state.gamma,
-        m: state.m,
-        omega: state.omega(body),
-        h1: red.h1(),
-        h3: red.h3(),
-        k: red.k(),
+        state: Sample::new(body, t, &state),
+        integrals: Value {
+            h1: red.h1(),
+            h3: red.h3(),
+            k: red.k(),
+        },
         error_estimate: exact.accuracy.error_at(t),
         horizon: Some(exact.accuracy.horizon(ACCURACY_TOLERANCE)).filter(|h| h.is_finite()),
         samples: None,
@@ -177,14 +185,14 @@ fn print_text(s: &Summary) -> Result<()> {
     if s.passes_through_axis {
         outln!("the motion passes through the symmetry axis (sin theta = 0) once per period")?;
     }
-    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
+    print_integrals(&s.integrals)?;
     outln!(
         "estimated relative error at t: {:.1e} (below {ACCURACY_TOLERANCE:e} for |t| <= {})",
         s.error_estimate,
         s.horizon
             .map_or("any t".to_string(), |h| format!("{h:.6e}"))
     )?;
-    print_state(format_args!("{:?}", s.t), &s.gamma, &s.m, &s.omega)
+    print_state(format_args!("{:?}", s.state.t), &s.state)
 }
 
 /// The line of the tilt's range: theta in [min, max], gamma3 = cos theta in [min, max].
@@ -198,17 +206,17 @@ pub(super) fn print_tilt(theta: [f64; 2], gamma3: [f64; 2]) -> Result<()> {
     )
 }
 
-/// The lines of the state at time `t` (`t` as the caller prints it).
-pub(super) fn print_state(
-    t: std::fmt::Arguments,
-    gamma: &[f64; 3],
-    m: &[f64; 3],
-    omega: &[f64; 3],
-) -> Result<()> {
+/// The line of the integrals' values.
+pub(super) fn print_integrals(v: &Value) -> Result<()> {
+    outln!("integrals: H1 = {}, H3 = {}, K = {}", v.h1, v.h3, v.k)
+}
+
+/// The lines of the state (its time `t` as the caller prints it).
+pub(super) fn print_state(t: std::fmt::Arguments, s: &Sample) -> Result<()> {
     outln!("state at t = {t}:")?;
-    outln!("  gamma = {gamma:?}")?;
-    outln!("  M     = {m:?}")?;
-    outln!("  omega = {omega:?}")
+    outln!("  gamma = {:?}", s.gamma)?;
+    outln!("  M     = {:?}", s.m)?;
+    outln!("  omega = {:?}", s.omega)
 }
 
 impl Args {
@@ -252,15 +260,7 @@ pub fn run(args: Args) -> Result<()> {
         (Some(n), None) if args.json => {
             s.samples = Some(
                 sample_times(t, n)
-                    .map(|ti| {
-                        let state = exact.state_at(ti);
-                        Sample {
-                            t: ti,
-                            gamma: state.gamma,
-                            m: state.m,
-                            omega: state.omega(&body),
-                        }
-                    })
+                    .map(|ti| Sample::new(&body, ti, &exact.state_at(ti)))
                     .collect(),
             );
         }

@@ -2,9 +2,9 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{print_state, print_tilt, write_samples, Args};
+use super::exact::{print_integrals, print_state, print_tilt, write_samples, Args, Sample};
 use routh::case::{check_option, Case};
-use routh::integrals::{energy, jellett, routh_integral};
+use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
 use routh::{AppResult as Result, State};
 use serde::Serialize;
@@ -28,17 +28,12 @@ struct Summary {
     precession_advance_per_period: Option<f64>,
     /// dphi/dt when theta is constant.
     precession_rate: Option<f64>,
-    t: f64,
-    gamma: [f64; 3],
-    #[serde(rename = "M")]
-    m: [f64; 3],
-    omega: [f64; 3],
-    #[serde(rename = "H1")]
-    h1: f64,
-    #[serde(rename = "H3")]
-    h3: f64,
-    #[serde(rename = "K")]
-    k: f64,
+    /// The state at t.
+    #[serde(flatten)]
+    state: Sample,
+    /// The integrals' values (at the initial state: the flow keeps them).
+    #[serde(flatten)]
+    integrals: Value,
 }
 
 /// Run `routh exact --flow` (chosen in [`super::main`]).
@@ -63,7 +58,6 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         }
     }
     let shape = flow.shape();
-    let state = state_at(t);
     let [theta_min, theta_max] = shape.theta;
     let summary = Summary {
         case: case.source.clone(),
@@ -82,13 +76,8 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         period: shape.period,
         precession_advance_per_period: shape.advance,
         precession_rate: shape.rate,
-        t,
-        gamma: state.gamma,
-        m: state.m,
-        omega: state.omega(&body),
-        h1: energy(&body, &x0),
-        h3: jellett(&body, &x0),
-        k: routh_integral(&body, &x0),
+        state: Sample::new(&body, t, &state_at(t)),
+        integrals: Value::of_state(&body, &case.initial),
     };
     if args.json {
         super::print_json(&summary)?;
@@ -115,6 +104,6 @@ fn print_text(s: &Summary) -> Result<()> {
         (_, _, Some(rate)) => outln!("theta constant: dphi/dt = {rate}")?,
         _ => {}
     }
-    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
-    print_state(format_args!("{}", s.t), &s.gamma, &s.m, &s.omega)
+    print_integrals(&s.integrals)?;
+    print_state(format_args!("{}", s.state.t), &s.state)
 }
