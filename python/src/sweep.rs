@@ -6,7 +6,8 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use routh_core::integrate::Method;
-use routh_core::sweep::record::{columns, Cell, Kind};
+use routh_core::row::{Cell, Kind};
+use routh_core::sweep::record::columns;
 use routh_core::sweep::{Overrides, Sweep};
 use std::path::PathBuf;
 

@@ -13,8 +13,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use routh_sphere::diagram::energy_momentum::{Diagram, SleepingTop};
 use routh_sphere::diagram::monodromy::Monodromy;
-use routh_sphere::diagram::relative_equilibria::Value;
 use routh_sphere::diagram::stability::StabilityType;
+use routh_sphere::diagram::Value;
 
 /// The colour of a stability type.
 pub fn stability_colour(kind: StabilityType) -> RGBColor {

@@ -1,4 +1,4 @@
-//! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]),
+//! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]) and their rows ([`row`]),
 //! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
 //! 3D viewer ([`animate`]) and sweeps ([`sweep`]). The command-line tool and the Python module
 //! are built on it; the model and the mathematics are the layers below (`routh-ball`,
@@ -15,6 +15,7 @@ pub mod figure;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
+pub mod row;
 #[cfg(feature = "sweep")]
 pub mod sweep;
 pub mod table;

@@ -3,12 +3,14 @@
 //! column names, then rows of numbers; an empty cell, as written for H2 and K when I1 != I2,
 //! reads as NaN). The plots and the animation draw from a [`Table`].
 
+use crate::ball::Ball;
 use crate::case::Case;
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
-use crate::integrate::Method;
-use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
-use crate::simulate::{integrate_observed, Settings};
+use crate::integrate::{Method, OdeSystem};
+use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES, FULL_DIM};
+use crate::row::Cell;
+use crate::simulate::{integrate_observed, ReducedSystem, Settings, Summary};
 use crate::state::State;
 use std::path::Path;
 
@@ -196,12 +198,81 @@ impl Table {
     }
 }
 
-/// Simulate `case` with the full motion (DOP853 at the case's tolerances) and tabulate
-/// `samples` equally spaced samples on [0, t_end]: t, the reduced state, omega, the integrals
-/// and the columns of [`full_columns`].
-pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
+/// The columns of a sample of `routh simulate`: `t`, the [`STATE_COLUMN_NAMES`], the
+/// integrals and, with `full`, the motion in space ([`FULL_COLUMN_NAMES`]).
+pub fn sample_columns(full: bool) -> Vec<&'static str> {
+    let space: &[&str] = if full { &FULL_COLUMN_NAMES } else { &[] };
+    std::iter::once("t")
+        .chain(STATE_COLUMN_NAMES)
+        .chain(INTEGRAL_NAMES)
+        .chain(space.iter().copied())
+        .collect()
+}
+
+/// The cells of the sample `y` at time `t`, in the order of [`sample_columns`]: the reduced
+/// state (the first six components of `y`), omega, the integrals (null where not an integral)
+/// and, when `y` holds the motion in space (`FullMotion`'s state), its [`full_columns`].
+pub fn sample_cells(ball: &Ball, t: f64, y: &[f64]) -> Vec<Cell> {
+    let x: [f64; 6] = std::array::from_fn(|i| y[i]);
+    let omega = State::from_array(&x).omega(ball);
+    let space = <&[f64; FULL_DIM]>::try_from(y)
+        .ok()
+        .map(|y| full_columns(ball, y));
+    std::iter::once(t)
+        .chain(x)
+        .chain(omega)
+        .map(Some)
+        .chain(Integrals::at(ball, &x).values())
+        .chain(space.into_iter().flatten().map(Some))
+        .map(Cell::Float)
+        .collect()
+}
+
+/// Simulate `case` with `settings`, with the full motion (the orientation and the path in
+/// space) when `full`, and hand the cells of each dense sample ([`sample_cells`]) to `on_row`:
+/// the one path of the samples of `routh simulate` and of the figures. Returns the run's
+/// summary.
+pub fn simulate_samples(
+    case: &Case,
+    settings: &Settings,
+    full: bool,
+    on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
+) -> Result<Summary> {
+    fn samples<S: OdeSystem<N>, const N: usize>(
+        ball: &Ball,
+        system: &S,
+        y0: [f64; N],
+        settings: &Settings,
+        on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
+    ) -> Result<Summary> {
+        let mut on_sample = |t: f64, y: &[f64; N]| on_row(&sample_cells(ball, t, y));
+        let observed = integrate_observed(
+            ball,
+            system,
+            y0,
+            settings,
+            None,
+            &mut on_sample,
+            &mut |_| {},
+        )?;
+        Ok(observed.summary()?)
+    }
+    let ball = &case.ball;
+    if full {
+        let system = FullMotion { body: ball };
+        samples(ball, &system, initial_full(&case.initial), settings, on_row)
+    } else {
+        let system = ReducedSystem(ball);
+        samples(ball, &system, case.initial.to_array(), settings, on_row)
+    }
+}
+
+/// Simulate `case` with the full motion (`method` at the case's tolerances) and tabulate
+/// `samples` equally spaced samples on [0, t_end]: the columns of [`sample_columns`] (empty
+/// integrals as NaN, as a CSV of `routh simulate --full` reads back).
+pub fn simulate_full(case: &Case, method: Method, t_end: f64, samples: usize) -> Result<Table> {
     let settings = Settings {
-        method: Method::Dop853,
+        method,
         t_end,
         rtol: case.integration.rtol,
         atol: case.integration.atol,
@@ -210,36 +281,15 @@ pub fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Result<Table> {
         samples,
         max_steps: case.integration.max_steps,
     };
-    let tail: Vec<&str> = INTEGRAL_NAMES
+    let names = sample_columns(true)
         .into_iter()
-        .chain(FULL_COLUMN_NAMES)
+        .map(str::to_string)
         .collect();
-    let names = csv_header(&tail).split(',').map(str::to_string).collect();
     let mut table = Table::new(&case.source, names);
-    let body = &case.ball;
-    integrate_observed(
-        body,
-        &FullMotion { body },
-        initial_full(&case.initial),
-        &settings,
-        None,
-        &mut |t, y| {
-            let x: [f64; 6] = std::array::from_fn(|i| y[i]);
-            let omega = State::from_array(&x).omega(body);
-            let integrals = Integrals::at(body, &x)
-                .values()
-                .map(|v| v.unwrap_or(f64::NAN));
-            let row: Vec<f64> = std::iter::once(t)
-                .chain(x)
-                .chain(omega)
-                .chain(integrals)
-                .chain(full_columns(body, y))
-                .collect();
-            table.push_row(&row)
-        },
-        &mut |_| {},
-    )?
-    .summary()?;
+    simulate_samples(case, &settings, true, &mut |cells| {
+        let row: Vec<f64> = cells.iter().map(Cell::to_f64).collect();
+        table.push_row(&row)
+    })?;
     Ok(table)
 }
 

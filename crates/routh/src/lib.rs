@@ -57,6 +57,6 @@ pub mod diagram {
 #[cfg(feature = "sweep")]
 pub use routh_io::sweep;
 #[cfg(feature = "io")]
-pub use routh_io::{animate, case, output, table, AppError, AppResult, FileError};
+pub use routh_io::{animate, case, output, row, table, AppError, AppResult, FileError};
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};

@@ -1,10 +1,13 @@
 //! `routh exact`: the motion of a case by quadrature (no step-by-step integration): turning
-//! points, nutation period, precession advance, and the state at a time or at samples.
+//! points, nutation period, precession advance, and the state at a time or at samples. Its
+//! options, checks, CSV samples and text lines also serve `routh exact --flow` ([`super::flow`]).
 
 use routh::case::{check_option, Case};
+use routh::diagram::Value;
 use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{Accuracy, ExactSolution, Motion};
+use routh::row::{csv_line, Cell};
 use routh::table::csv_header;
 use routh::{AppError, AppResult as Result, Body, State};
 use serde::Serialize;
@@ -70,17 +73,12 @@ struct Summary {
     precession_rate: Option<f64>,
     passes_through_axis: bool,
     chebyshev_nodes: Option<usize>,
-    t: f64,
-    gamma: [f64; 3],
-    #[serde(rename = "M")]
-    m: [f64; 3],
-    omega: [f64; 3],
-    #[serde(rename = "H1")]
-    h1: f64,
-    #[serde(rename = "H3")]
-    h3: f64,
-    #[serde(rename = "K")]
-    k: f64,
+    /// The state at t.
+    #[serde(flatten)]
+    state: Sample,
+    /// The integrals' values.
+    #[serde(flatten)]
+    integrals: Value,
     /// Estimated relative error of the state at t (see `Accuracy`).
     error_estimate: f64,
     /// The largest |t| at which the estimated error stays below `ACCURACY_TOLERANCE` (None:
@@ -91,29 +89,47 @@ struct Summary {
     samples: Option<Vec<Sample>>,
 }
 
-/// One sample of `routh exact --samples N --json`.
+/// The state at a time: one sample of `routh exact --samples N --json`, and the state that
+/// `routh exact` and `routh exact --flow` report.
 #[derive(Serialize)]
-struct Sample {
-    t: f64,
+pub(super) struct Sample {
+    pub(super) t: f64,
     gamma: [f64; 3],
     #[serde(rename = "M")]
     m: [f64; 3],
     omega: [f64; 3],
 }
 
-/// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
-pub(super) const EXACT_COLUMNS: [&str; 4] = ["theta", "H1", "H3", "K"];
+impl Sample {
+    /// The state `state` at time `t`, with its angular velocity.
+    pub(super) fn new(body: &Body, t: f64, state: &State) -> Self {
+        Sample {
+            t,
+            gamma: state.gamma,
+            m: state.m,
+            omega: state.omega(body),
+        }
+    }
+}
 
-pub(super) fn csv_row(body: &Body, t: f64, state: &State) -> String {
+/// The columns of `routh exact` samples after the shared state columns ([`csv_header`]).
+const EXACT_COLUMNS: [&str; 4] = ["theta", "H1", "H3", "K"];
+
+/// The cells of a sample: t, the state, omega and the [`EXACT_COLUMNS`].
+fn csv_cells(body: &Body, t: f64, state: &State) -> Vec<Cell> {
     let x = state.to_array();
     let omega = state.omega(body);
-    let values = x.iter().chain(&omega).copied().chain([
-        state.gamma[2].clamp(-1.0, 1.0).acos(),
-        energy(body, &x),
-        jellett(body, &x),
-        routh_integral(body, &x),
-    ]);
-    values.fold(t.to_string(), |row, v| format!("{row},{v}"))
+    std::iter::once(t)
+        .chain(x)
+        .chain(omega)
+        .chain([
+            state.gamma[2].clamp(-1.0, 1.0).acos(),
+            energy(body, &x),
+            jellett(body, &x),
+            routh_integral(body, &x),
+        ])
+        .map(|v| Cell::Float(Some(v)))
+        .collect()
 }
 
 fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
@@ -142,13 +158,12 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
         precession_rate: rate,
         passes_through_axis: through,
         chebyshev_nodes: nodes,
-        t,
-        gamma: state.gamma,
-        m: state.m,
-        omega: state.omega(body),
-        h1: red.h1(),
-        h3: red.h3(),
-        k: red.k(),
+        state: Sample::new(body, t, &state),
+        integrals: Value {
+            h1: red.h1(),
+            h3: red.h3(),
+            k: red.k(),
+        },
         error_estimate: exact.accuracy.error_at(t),
         horizon: Some(exact.accuracy.horizon(ACCURACY_TOLERANCE)).filter(|h| h.is_finite()),
         samples: None,
@@ -158,13 +173,7 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
 fn print_text(s: &Summary) -> Result<()> {
     outln!("case: {}", s.case)?;
     outln!("motion: {}", s.motion)?;
-    outln!(
-        "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        s.theta_min,
-        s.theta_max,
-        s.gamma3_min,
-        s.gamma3_max
-    )?;
+    print_tilt([s.theta_min, s.theta_max], [s.gamma3_min, s.gamma3_max])?;
     match (s.period, s.precession_advance_per_period, s.precession_rate) {
         (Some(period), Some(advance), _) => {
             outln!("nutation period T = {period}")?;
@@ -176,31 +185,63 @@ fn print_text(s: &Summary) -> Result<()> {
     if s.passes_through_axis {
         outln!("the motion passes through the symmetry axis (sin theta = 0) once per period")?;
     }
-    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
+    print_integrals(&s.integrals)?;
     outln!(
         "estimated relative error at t: {:.1e} (below {ACCURACY_TOLERANCE:e} for |t| <= {})",
         s.error_estimate,
         s.horizon
             .map_or("any t".to_string(), |h| format!("{h:.6e}"))
     )?;
-    outln!("state at t = {:?}:", s.t)?;
-    outln!("  gamma = {:?}", s.gamma)?;
-    outln!("  M     = {:?}", s.m)?;
-    outln!("  omega = {:?}", s.omega)?;
-    Ok(())
+    print_state(format_args!("{:?}", s.state.t), &s.state)
 }
 
-/// Run `routh exact`.
+/// The line of the tilt's range: theta in [min, max], gamma3 = cos theta in [min, max].
+pub(super) fn print_tilt(theta: [f64; 2], gamma3: [f64; 2]) -> Result<()> {
+    outln!(
+        "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
+        theta[0],
+        theta[1],
+        gamma3[0],
+        gamma3[1]
+    )
+}
+
+/// The line of the integrals' values.
+pub(super) fn print_integrals(v: &Value) -> Result<()> {
+    outln!("integrals: H1 = {}, H3 = {}, K = {}", v.h1, v.h3, v.k)
+}
+
+/// The lines of the state (its time `t` as the caller prints it).
+pub(super) fn print_state(t: std::fmt::Arguments, s: &Sample) -> Result<()> {
+    outln!("state at t = {t}:")?;
+    outln!("  gamma = {:?}", s.gamma)?;
+    outln!("  M     = {:?}", s.m)?;
+    outln!("  omega = {:?}", s.omega)
+}
+
+impl Args {
+    /// The time of the reported state (`--t`, else the case's t_end), checked with
+    /// `--samples`.
+    pub(super) fn checked_time(&self, case: &Case) -> Result<f64> {
+        let t = self.time.unwrap_or(case.integration.t_end);
+        check_option("t", t, t.is_finite(), "must be finite")?;
+        if let Some(n) = self.samples {
+            check_option("samples", n as f64, n >= 2, "must be >= 2")?;
+        }
+        Ok(t)
+    }
+
+    /// The number of CSV samples: `--samples`, else [`DEFAULT_CSV_SAMPLES`] with `--out`.
+    pub(super) fn csv_samples(&self) -> Option<usize> {
+        self.samples
+            .or(self.out.as_ref().map(|_| DEFAULT_CSV_SAMPLES))
+    }
+}
+
+/// Run `routh exact` without `--flow`.
 pub fn run(args: Args) -> Result<()> {
-    if let Some(field) = args.flow {
-        return super::flow::run(&args, field);
-    }
     let case = Case::load(args.case.as_deref())?;
-    let t = args.time.unwrap_or(case.integration.t_end);
-    check_option("t", t, t.is_finite(), "must be finite")?;
-    if let Some(n) = args.samples {
-        check_option("samples", n as f64, n >= 2, "must be >= 2")?;
-    }
+    let t = args.checked_time(&case)?;
     let body = case.body("routh exact")?;
     let exact = ExactSolution::new(&body, &case.initial)?;
     let error = exact.accuracy.checked_error_at(t)?;
@@ -212,39 +253,18 @@ pub fn run(args: Args) -> Result<()> {
             exact.accuracy.horizon(ACCURACY_TOLERANCE)
         );
     }
-    let samples = args
-        .samples
-        .or(args.out.as_ref().map(|_| DEFAULT_CSV_SAMPLES));
-    let times = |n: usize| (0..n).map(move |i| t * i as f64 / (n - 1) as f64);
     let mut s = summary(&case, &body, &exact, t);
-    match (samples, &args.out) {
-        (Some(n), Some(path)) => write_atomic(path, |w: &mut dyn Write| {
-            write_csv(w, &body, &exact, times(n), path)
-        })?,
+    let state_at = |ti: f64| exact.state_at(ti);
+    match (args.csv_samples(), &args.out) {
+        (Some(n), Some(path)) => write_samples(Some(path), &body, t, n, state_at)?,
         (Some(n), None) if args.json => {
             s.samples = Some(
-                times(n)
-                    .map(|ti| {
-                        let state = exact.state_at(ti);
-                        Sample {
-                            t: ti,
-                            gamma: state.gamma,
-                            m: state.m,
-                            omega: state.omega(&body),
-                        }
-                    })
+                sample_times(t, n)
+                    .map(|ti| Sample::new(&body, ti, &exact.state_at(ti)))
                     .collect(),
             );
         }
-        (Some(n), None) => {
-            return write_csv(
-                &mut std::io::stdout().lock(),
-                &body,
-                &exact,
-                times(n),
-                Path::new(super::STANDARD_OUTPUT),
-            );
-        }
+        (Some(n), None) => return write_samples(None, &body, t, n, state_at),
         (None, _) => {}
     }
     if args.json {
@@ -255,18 +275,31 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// The samples at `times` as CSV rows after the header.
-fn write_csv(
-    w: &mut dyn Write,
+/// `n` equally spaced times on [0, t].
+fn sample_times(t: f64, n: usize) -> impl Iterator<Item = f64> {
+    (0..n).map(move |i| t * i as f64 / (n - 1) as f64)
+}
+
+/// The states at `n` equally spaced times on [0, t] as CSV: the header and one row a time,
+/// to `out` (written atomically), else to standard output.
+pub(super) fn write_samples(
+    out: Option<&Path>,
     body: &Body,
-    exact: &ExactSolution,
-    times: impl Iterator<Item = f64>,
-    path: &Path,
+    t: f64,
+    n: usize,
+    state_at: impl Fn(f64) -> State,
 ) -> Result<()> {
-    let io = AppError::io(path);
-    writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(&io)?;
-    for ti in times {
-        writeln!(w, "{}", csv_row(body, ti, &exact.state_at(ti))).map_err(&io)?;
+    let path = out.unwrap_or(Path::new(super::STANDARD_OUTPUT));
+    let write_rows = |w: &mut dyn Write| -> Result<()> {
+        let io = AppError::io(path);
+        writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(&io)?;
+        for ti in sample_times(t, n) {
+            writeln!(w, "{}", csv_line(&csv_cells(body, ti, &state_at(ti)))).map_err(&io)?;
+        }
+        Ok(())
+    };
+    match out {
+        Some(path) => write_atomic(path, write_rows),
+        None => write_rows(&mut std::io::stdout().lock()),
     }
-    Ok(())
 }

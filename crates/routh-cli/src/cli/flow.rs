@@ -2,15 +2,12 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{csv_row, Args, EXACT_COLUMNS};
+use super::exact::{print_integrals, print_state, print_tilt, write_samples, Args, Sample};
 use routh::case::{check_option, Case};
-use routh::integrals::{energy, jellett, routh_integral};
-use routh::output::write_atomic;
+use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
-use routh::table::csv_header;
-use routh::{AppError, AppResult as Result, State};
+use routh::{AppResult as Result, State};
 use serde::Serialize;
-use std::io::Write;
 
 /// The summary printed by `routh exact --flow`.
 #[derive(Serialize)]
@@ -31,60 +28,36 @@ struct Summary {
     precession_advance_per_period: Option<f64>,
     /// dphi/dt when theta is constant.
     precession_rate: Option<f64>,
-    t: f64,
-    gamma: [f64; 3],
-    #[serde(rename = "M")]
-    m: [f64; 3],
-    omega: [f64; 3],
-    #[serde(rename = "H1")]
-    h1: f64,
-    #[serde(rename = "H3")]
-    h3: f64,
-    #[serde(rename = "K")]
-    k: f64,
+    /// The state at t.
+    #[serde(flatten)]
+    state: Sample,
+    /// The integrals' values (at the initial state: the flow keeps them).
+    #[serde(flatten)]
+    integrals: Value,
 }
 
-/// Run `routh exact --flow`.
+/// Run `routh exact --flow` (chosen in [`super::main`]).
 pub fn run(args: &Args, field: Field) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
     let body = case.body("the flows of the first bracket")?;
-    let t = args.time.unwrap_or(case.integration.t_end);
-    check_option("t", t, t.is_finite(), "must be finite")?;
+    let t = args.checked_time(&case)?;
     check_option(
         "alpha",
         args.alpha,
         args.alpha.is_finite() && args.alpha != 0.0,
         "must be finite and nonzero",
     )?;
-    if let Some(n) = args.samples {
-        check_option("samples", n as f64, n >= 2, "must be >= 2")?;
-    }
     let bracket = args.condition.bracket(body, args.alpha);
     let x0 = case.initial.to_array();
     let flow = Flow::new(bracket, field, &x0)?;
     let state_at = |ti: f64| State::from_array(&flow.state_at(ti));
-    let samples = args.samples.or(args.out.as_ref().map(|_| 1001));
-    if let Some(n) = samples {
-        let write_rows = |w: &mut dyn Write| -> Result<()> {
-            let path = args
-                .out
-                .clone()
-                .unwrap_or_else(|| super::STANDARD_OUTPUT.into());
-            let io = AppError::io(&path);
-            writeln!(w, "{}", csv_header(&EXACT_COLUMNS)).map_err(&io)?;
-            for i in 0..n {
-                let ti = t * i as f64 / (n - 1) as f64;
-                writeln!(w, "{}", csv_row(&body, ti, &state_at(ti))).map_err(&io)?;
-            }
-            Ok(())
-        };
-        match &args.out {
-            Some(path) => write_atomic(path, write_rows)?,
-            None => return write_rows(&mut std::io::stdout().lock()),
+    if let Some(n) = args.csv_samples() {
+        write_samples(args.out.as_deref(), &body, t, n, state_at)?;
+        if args.out.is_none() {
+            return Ok(());
         }
     }
     let shape = flow.shape();
-    let state = state_at(t);
     let [theta_min, theta_max] = shape.theta;
     let summary = Summary {
         case: case.source.clone(),
@@ -103,13 +76,8 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         period: shape.period,
         precession_advance_per_period: shape.advance,
         precession_rate: shape.rate,
-        t,
-        gamma: state.gamma,
-        m: state.m,
-        omega: state.omega(&body),
-        h1: energy(&body, &x0),
-        h3: jellett(&body, &x0),
-        k: routh_integral(&body, &x0),
+        state: Sample::new(&body, t, &state_at(t)),
+        integrals: Value::of_state(&body, &case.initial),
     };
     if args.json {
         super::print_json(&summary)?;
@@ -127,13 +95,7 @@ fn print_text(s: &Summary) -> Result<()> {
         s.condition,
         s.alpha
     )?;
-    outln!(
-        "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        s.theta_min,
-        s.theta_max,
-        s.gamma3_min,
-        s.gamma3_max
-    )?;
+    print_tilt([s.theta_min, s.theta_max], [s.gamma3_min, s.gamma3_max])?;
     match (s.period, s.precession_advance_per_period, s.precession_rate) {
         (Some(period), Some(advance), _) => {
             outln!("period of theta T = {period}")?;
@@ -142,10 +104,6 @@ fn print_text(s: &Summary) -> Result<()> {
         (_, _, Some(rate)) => outln!("theta constant: dphi/dt = {rate}")?,
         _ => {}
     }
-    outln!("integrals: H1 = {}, H3 = {}, K = {}", s.h1, s.h3, s.k)?;
-    outln!("state at t = {}:", s.t)?;
-    outln!("  gamma = {:?}", s.gamma)?;
-    outln!("  M     = {:?}", s.m)?;
-    outln!("  omega = {:?}", s.omega)?;
-    Ok(())
+    print_integrals(&s.integrals)?;
+    print_state(format_args!("{}", s.state.t), &s.state)
 }

@@ -125,7 +125,10 @@ pub fn main() -> ExitCode {
         Command::Plot(args) => plot::run(args),
         Command::Animate(args) => animate::run(args),
         Command::Audit(args) => audit::run(args),
-        Command::Exact(args) => exact::run(args),
+        Command::Exact(args) => match args.flow {
+            Some(field) => flow::run(&args, field),
+            None => exact::run(args),
+        },
         Command::Steady(args) => steady::run(args),
         Command::Sweep(args) => sweep::run(args),
         Command::Diagram(args) => diagram::run(args),

@@ -3,6 +3,7 @@
 //! a CSV file written by `routh simulate`; optionally the difference against a second CSV.
 
 use routh::case::Case;
+use routh::integrate::Method;
 use routh::plot::{difference_plot, standard_plots, Format};
 use routh::table::{simulate_full, Table};
 use routh::{AppError, AppResult as Result, RouthError};
@@ -32,6 +33,9 @@ pub struct Source {
     /// Number of equally spaced samples of the simulation (2 to 1000000).
     #[arg(long, default_value_t = DEFAULT_SAMPLES, conflicts_with = "csv")]
     pub samples: usize,
+    /// Integrator of the simulation, as `routh simulate --method` takes it.
+    #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method, conflicts_with = "csv")]
+    pub method: Method,
 }
 
 impl Source {
@@ -56,7 +60,7 @@ impl Source {
             }
             .into());
         }
-        simulate_full(&case, t_end, self.samples)
+        simulate_full(&case, self.method, t_end, self.samples)
     }
 }
 
@@ -126,7 +130,7 @@ pub fn run(args: Args) -> Result<()> {
         let other = Table::read_csv(path)?;
         let this = match &args.source.csv {
             Some(csv) => file_name(csv),
-            None => "DOP853".to_string(),
+            None => args.source.method.to_string().to_uppercase(),
         };
         plots.push(difference_plot(&other, &table, (&file_name(path), &this))?);
     }

@@ -3,12 +3,12 @@
 
 use super::Readable;
 use routh::case::Case;
-use routh::integrals::{Integrals, INTEGRAL_NAMES};
-use routh::integrate::{Method, OdeSystem};
-use routh::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
+use routh::integrals::INTEGRAL_NAMES;
+use routh::integrate::Method;
 use routh::output::write_atomic;
-use routh::simulate::{integrate_observed, run, ReducedSystem, Settings, Summary};
-use routh::table::csv_header;
+use routh::row::csv_line;
+use routh::simulate::{Settings, Summary};
+use routh::table::{sample_columns, simulate_samples};
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
 
@@ -92,24 +92,6 @@ fn csv_destination(args: &Args) -> Option<PathBuf> {
     }
 }
 
-/// One CSV row: t, gamma, M, omega and the integrals (empty where not an integral).
-pub fn csv_row(case: &Case, t: f64, x: &[f64; 6]) -> String {
-    let omega = case
-        .ball
-        .angular_velocity(&[x[0], x[1], x[2]], &[x[3], x[4], x[5]]);
-    let mut row = format!("{t}");
-    for v in x.iter().chain(&omega) {
-        row.push_str(&format!(",{v}"));
-    }
-    for v in Integrals::at(&case.ball, x).values() {
-        row.push(',');
-        if let Some(v) = v {
-            row.push_str(&v.to_string());
-        }
-    }
-    row
-}
-
 /// Run the command.
 pub fn run_command(args: Args) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
@@ -128,31 +110,7 @@ pub fn run_command(args: Args) -> Result<()> {
         (None, None) => 0,
     };
     let settings = settings(&case, &args, samples)?;
-    let summary = if args.full {
-        let extra = |y: &[f64; 12]| full_columns(&case.ball, y).to_vec();
-        let header = FULL_COLUMN_NAMES.join(",");
-        let system = FullMotion { body: &case.ball };
-        execute(
-            &case,
-            out.as_deref(),
-            &settings,
-            &system,
-            initial_full(&case.initial),
-            &header,
-            extra,
-        )?
-    } else {
-        let system = ReducedSystem(&case.ball);
-        execute(
-            &case,
-            out.as_deref(),
-            &settings,
-            &system,
-            case.initial.to_array(),
-            "",
-            |_| Vec::new(),
-        )?
-    };
+    let summary = execute(&case, out.as_deref(), &settings, args.full)?;
     let report = if args.json {
         super::json(&summary)
     } else {
@@ -166,48 +124,22 @@ pub fn run_command(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// Run the simulation of `system` from `y0` (whose first six components are the reduced
-/// state), writing the CSV to `out` when given: the reduced columns, then the columns of
-/// `extra_header` with the values of `extra`.
-fn execute<S: OdeSystem<N>, const N: usize>(
-    case: &Case,
-    out: Option<&Path>,
-    settings: &Settings,
-    system: &S,
-    y0: [f64; N],
-    extra_header: &str,
-    extra: impl Fn(&[f64; N]) -> Vec<f64>,
-) -> Result<Summary> {
+/// Run the simulation (of the full motion when `full`), writing the CSV of its samples
+/// ([`routh::table::sample_columns`]) to `out` when given.
+fn execute(case: &Case, out: Option<&Path>, settings: &Settings, full: bool) -> Result<Summary> {
     let Some(path) = out else {
-        return Ok(run(&case.ball, system, y0, settings, &mut |_, _| Ok(()))?);
+        return simulate_samples(case, settings, full, &mut |_| Ok(()));
     };
     let mut summary = None;
     write_atomic(path, |w| {
         let io = AppError::io(path);
-        let separator = if extra_header.is_empty() { "" } else { "," };
-        let header = csv_header(&INTEGRAL_NAMES);
-        writeln!(w, "{header}{separator}{extra_header}").map_err(&io)?;
-        let mut on_sample = |t: f64, y: &[f64; N]| {
-            let x: [f64; 6] = std::array::from_fn(|i| y[i]);
-            let mut row = csv_row(case, t, &x);
-            for v in extra(y) {
-                row.push_str(&format!(",{v}"));
-            }
-            writeln!(w, "{row}").map_err(&io)
-        };
-        let observed = integrate_observed(
-            &case.ball,
-            system,
-            y0,
-            settings,
-            None,
-            &mut on_sample,
-            &mut |_| {},
-        )?;
-        summary = Some(observed.summary()?);
+        writeln!(w, "{}", sample_columns(full).join(",")).map_err(&io)?;
+        let mut on_row =
+            |cells: &[routh::row::Cell]| writeln!(w, "{}", csv_line(cells)).map_err(&io);
+        summary = Some(simulate_samples(case, settings, full, &mut on_row)?);
         Ok(())
     })?;
-    Ok(summary.expect("run returned a summary"))
+    Ok(summary.expect("the run returned a summary"))
 }
 
 /// The summary as lines of text.

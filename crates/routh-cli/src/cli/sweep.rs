@@ -2,8 +2,9 @@
 //! run, written as the runs finish; Ctrl-C or SIGTERM stop it cleanly and `--resume` goes on.
 
 use routh::integrate::Method;
+use routh::sweep::open;
 use routh::sweep::record::{columns, Row};
-use routh::sweep::table::{open, TableWriter};
+use routh::sweep::table::TableWriter;
 use routh::sweep::{Completion, Overrides, Sweep};
 use routh::{AppResult as Result, FileError, RouthError};
 use std::io::IsTerminal;

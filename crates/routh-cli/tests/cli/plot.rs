@@ -2,6 +2,7 @@
 //! the promised dimensions; bad input exits with code 2 and a message.
 
 use routh::case::Case;
+use routh::integrate::Method;
 use routh::table::{simulate_full, Table};
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -167,33 +168,48 @@ fn plots_from_simulate_csv_files_and_compares_two() {
 #[test]
 fn simulated_table_matches_the_simulate_full_csv() {
     // `routh plot` without --csv simulates through routh::table::simulate_full; it must give
-    // the columns and values of `routh simulate --full` (the CSV prints shortest round-trip
-    // decimals, so equal values parse back exactly).
+    // the columns and values of `routh simulate --full` with the same `--method` (the CSV
+    // prints shortest round-trip decimals, so equal values parse back exactly).
     let dir = scratch("table");
-    let file = dir.join("full.csv");
-    ok(&routh(&[
-        "simulate",
-        "--full",
-        "--t-end",
-        "2",
-        "--samples",
-        "51",
-        "--out",
-        file.to_str().unwrap(),
-    ]));
-    let from_csv = Table::read_csv(&file).unwrap();
     let case = Case::default_case().unwrap();
-    let simulated = simulate_full(&case, 2.0, 51).unwrap();
-    assert_eq!(from_csv.names(), simulated.names());
-    for name in simulated.names() {
-        let (a, b) = (
-            from_csv.column(name).unwrap(),
-            simulated.column(name).unwrap(),
-        );
-        for (x, y) in a.iter().zip(b) {
-            assert!(x == y || (x.is_nan() && y.is_nan()), "{name}: {x} vs {y}");
+    let mut tables = vec![];
+    for method in [Method::Dop853, Method::Vern9] {
+        let file = dir.join(format!("full-{method}.csv"));
+        ok(&routh(&[
+            "simulate",
+            "--full",
+            "--t-end",
+            "2",
+            "--samples",
+            "51",
+            "--method",
+            &method.to_string(),
+            "--out",
+            file.to_str().unwrap(),
+        ]));
+        let from_csv = Table::read_csv(&file).unwrap();
+        let simulated = simulate_full(&case, method, 2.0, 51).unwrap();
+        assert_eq!(from_csv.names(), simulated.names());
+        for name in simulated.names() {
+            let (a, b) = (
+                from_csv.column(name).unwrap(),
+                simulated.column(name).unwrap(),
+            );
+            for (x, y) in a.iter().zip(b) {
+                assert!(
+                    x == y || (x.is_nan() && y.is_nan()),
+                    "{method} {name}: {x} vs {y}"
+                );
+            }
         }
+        tables.push(simulated);
     }
+    // Negative control: the method is honoured, so the two methods' tables differ (within
+    // the tolerances, not bit for bit).
+    assert_ne!(
+        tables[0].column("gamma3").unwrap(),
+        tables[1].column("gamma3").unwrap()
+    );
 }
 
 #[test]
@@ -316,7 +332,8 @@ fn quadrature_beside_the_integrator() {
     names.push("difference");
     written(&ok(&out), &dir, &names, "png");
     let exact = Table::read_csv(&quadrature).unwrap();
-    let simulated = simulate_full(&Case::default_case().unwrap(), 2.0, 101).unwrap();
+    let simulated =
+        simulate_full(&Case::default_case().unwrap(), Method::Dop853, 2.0, 101).unwrap();
     for name in ["gamma1", "gamma2", "gamma3", "M1", "M2", "M3"] {
         let worst = exact
             .column(name)

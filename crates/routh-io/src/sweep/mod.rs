@@ -8,8 +8,10 @@
 //! * [`turning`]: theta min and max, the nutation period and the precession from events;
 //! * [`record`]: the row of a run and the columns;
 //! * [`runner`]: the case of each run and the parallel execution;
-//! * [`table`]: the CSV and Parquet writers, stop and resume.
+//! * [`table`]: what every writer shares, stop and resume; [`csv`] and `parquet` (feature
+//!   `parquet`): the writers; [`open`] chooses one by the file's extension.
 
+pub mod csv;
 pub mod design;
 #[cfg(feature = "parquet")]
 pub mod parquet;
@@ -20,3 +22,40 @@ pub mod table;
 pub mod turning;
 
 pub use runner::{Completion, Overrides, Sweep};
+
+use crate::error::{AppResult as Result, RouthError};
+use std::collections::HashSet;
+use std::path::Path;
+use table::TableWriter;
+
+/// Open the table `target` for `sweep`: CSV or Parquet by the extension. Returns the writer
+/// and the runs already in the file (with `resume`).
+pub fn open(
+    target: &Path,
+    sweep: &Sweep,
+    resume: bool,
+) -> Result<(Box<dyn TableWriter>, HashSet<u64>)> {
+    match target.extension().and_then(|e| e.to_str()) {
+        Some("csv") => {
+            let (t, done) = csv::CsvTable::create(target, sweep, resume)?;
+            Ok((Box::new(t), done))
+        }
+        #[cfg(feature = "parquet")]
+        Some("parquet") => {
+            let (t, done) = parquet::ParquetTable::create(target, sweep, resume)?;
+            Ok((Box::new(t), done))
+        }
+        #[cfg(not(feature = "parquet"))]
+        Some("parquet") => Err(RouthError::Option {
+            name: "out",
+            value: target.display().to_string(),
+            rule: "this build has no Parquet output: build with `cargo build --release --features parquet`, or write .csv",
+        }.into()),
+        _ => Err(RouthError::Option {
+            name: "out",
+            value: target.display().to_string(),
+            rule: "must end in .parquet or .csv",
+        }
+        .into()),
+    }
+}

@@ -4,10 +4,11 @@
 //! text (`routh.case`), the tool's version (`routh.version`) and the settings
 //! (`routh.settings`).
 
-use super::record::{columns, Cell, Kind, Row, RunSettings};
+use super::record::{columns, Row, RunSettings};
 use super::runner::Sweep;
 use super::table::{check_resumed_row, not_this_sweep, Staged, TableWriter};
 use crate::error::{AppError, AppResult as Result, FileError};
+use crate::row::{Cell, Kind};
 use arrow_array::{Array, ArrayRef, Float64Array, RecordBatch, StringArray, UInt64Array};
 use arrow_schema::{DataType, Field, Schema, SchemaRef};
 use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;

@@ -1,31 +1,10 @@
 //! The row of one run and the columns of a sweep's table (the same for CSV, Parquet and
-//! JSON).
+//! JSON, written through [`crate::row`]).
 
 use crate::integrals::INTEGRAL_NAMES;
+use crate::row::{csv_line, Cell, Kind};
 use crate::simulate::Summary;
 use crate::sweep::turning::NutationEvents;
-
-/// The type of a column.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    /// Unsigned integer (run number, step counts).
-    Int,
-    /// Double, null where it does not apply.
-    Float,
-    /// Text.
-    Text,
-}
-
-/// One value of a row.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Cell {
-    /// An unsigned integer, null for a failed run.
-    Int(Option<u64>),
-    /// A double, null where it does not apply.
-    Float(Option<f64>),
-    /// Text.
-    Text(String),
-}
 
 /// How a run ended: a sweep's run reaches t_end ([`Status::Reached`], written `ok`) or fails.
 pub use crate::problem::Status;
@@ -187,33 +166,6 @@ impl Row {
 impl Row {
     /// The row as one line of CSV (without the line break).
     pub fn csv_line(&self, settings: &RunSettings) -> String {
-        let cells: Vec<String> = self.cells(settings).iter().map(Cell::to_csv).collect();
-        cells.join(",")
-    }
-}
-
-impl Cell {
-    /// The cell as a JSON value (null for a missing number).
-    pub fn to_json(&self) -> serde_json::Value {
-        match self {
-            Cell::Int(v) => v.map_or(serde_json::Value::Null, Into::into),
-            Cell::Float(v) => v
-                .and_then(serde_json::Number::from_f64)
-                .map_or(serde_json::Value::Null, serde_json::Value::Number),
-            Cell::Text(s) => s.clone().into(),
-        }
-    }
-
-    /// The cell as CSV text: numbers in the shortest form that reads back to the same f64,
-    /// empty for null, text quoted when it holds a comma, a quote or a line break.
-    pub fn to_csv(&self) -> String {
-        match self {
-            Cell::Int(v) => v.map(|v| v.to_string()).unwrap_or_default(),
-            Cell::Float(v) => v.map(|v| v.to_string()).unwrap_or_default(),
-            Cell::Text(s) if s.contains([',', '"', '\n', '\r']) => {
-                format!("\"{}\"", s.replace('"', "\"\"").replace(['\n', '\r'], " "))
-            }
-            Cell::Text(s) => s.clone(),
-        }
+        csv_line(&self.cells(settings))
     }
 }

@@ -1,15 +1,14 @@
-//! Writing a sweep's table as its runs finish: CSV (small sweeps) or Parquet (feature
-//! `parquet`). The rows go to a temporary file beside the target, flushed chunk by chunk; the
-//! temporary file is renamed over the target only when the sweep finishes or stops cleanly,
-//! so the target is never half-written. With `--resume` the rows of an existing target are
-//! checked against the sweep (same case, settings and design), copied, and their runs
-//! skipped.
+//! Writing a sweep's table as its runs finish, whatever the format: the writer's trait, the
+//! temporary file beside the target and the checks of a resumed row, shared by the CSV
+//! ([`super::csv`]) and Parquet (`super::parquet`) writers. The rows go to a temporary file
+//! beside the target, flushed chunk by chunk; the temporary file is renamed over the target
+//! only when the sweep finishes or stops cleanly, so the target is never half-written. With
+//! `--resume` the rows of an existing target are checked against the sweep (same case,
+//! settings and design), copied, and their runs skipped.
 
-use super::record::{columns, Row};
+use super::record::Row;
 use super::runner::Sweep;
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
-use std::collections::HashSet;
-use std::io::{BufRead, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// A table being written.
@@ -113,123 +112,4 @@ pub fn check_resumed_row(sweep: &Sweep, path: &Path, run: u64, values: &[f64]) -
         ));
     }
     Ok(())
-}
-
-/// A CSV table.
-pub struct CsvTable {
-    staged: Staged,
-    file: BufWriter<std::fs::File>,
-    sweep_settings: super::record::RunSettings,
-}
-
-impl CsvTable {
-    /// Start writing `target`; with `resume`, copy the rows of an existing `target` and return
-    /// the runs they hold.
-    pub fn create(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Self, HashSet<u64>)> {
-        let header: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
-        let header = header.join(",");
-        let staged = Staged::beside(target)?;
-        let file = std::fs::File::create(&staged.tmp).map_err(|e| staged.io(e))?;
-        let mut file = BufWriter::new(file);
-        writeln!(file, "{header}").map_err(|e| staged.io(e))?;
-        let mut done = HashSet::new();
-        if resume && target.exists() {
-            let read_err = |source| FileError::Io {
-                path: target.to_path_buf(),
-                source,
-            };
-            let old = std::io::BufReader::new(std::fs::File::open(target).map_err(read_err)?);
-            let mut lines = old.lines();
-            let first = lines
-                .next()
-                .transpose()
-                .map_err(read_err)?
-                .unwrap_or_default();
-            if first != header {
-                return Err(not_this_sweep(
-                    target,
-                    "its columns differ from this sweep's",
-                ));
-            }
-            let fixed = sweep.names().len() + 4;
-            for line in lines {
-                let line = line.map_err(read_err)?;
-                let fields: Vec<&str> = line.splitn(fixed + 2, ',').collect();
-                let number = |i: usize| -> Result<f64> {
-                    fields
-                        .get(i)
-                        .and_then(|f| f.parse().ok())
-                        .ok_or_else(|| not_this_sweep(target, format!("a malformed row `{line}`")))
-                };
-                let run = number(0)? as u64;
-                let values: Vec<f64> = (1..fixed).map(number).collect::<Result<_>>()?;
-                check_resumed_row(sweep, target, run, &values)?;
-                if fields.get(fixed) != Some(&sweep.run_settings().method.as_str()) {
-                    return Err(not_this_sweep(
-                        target,
-                        format!("run {run} used another method"),
-                    ));
-                }
-                if !done.insert(run) {
-                    return Err(not_this_sweep(target, format!("run {run} appears twice")));
-                }
-                writeln!(file, "{line}").map_err(|e| staged.io(e))?;
-            }
-        }
-        let table = CsvTable {
-            staged,
-            file,
-            sweep_settings: sweep.run_settings(),
-        };
-        Ok((table, done))
-    }
-}
-
-impl TableWriter for CsvTable {
-    fn write(&mut self, rows: &[Row]) -> Result<()> {
-        for row in rows {
-            let line = row.csv_line(&self.sweep_settings);
-            writeln!(self.file, "{line}").map_err(|e| self.staged.io(e))?;
-        }
-        self.file.flush().map_err(|e| self.staged.io(e))
-    }
-
-    fn finish(self: Box<Self>) -> Result<()> {
-        let CsvTable { staged, file, .. } = *self;
-        let file = file.into_inner().map_err(|e| staged.io(e.into_error()))?;
-        file.sync_all().map_err(|e| staged.io(e))?;
-        staged.commit()
-    }
-}
-
-/// Open the table `target` for `sweep`: CSV or Parquet by the extension. Returns the writer
-/// and the runs already in the file (with `resume`).
-pub fn open(
-    target: &Path,
-    sweep: &Sweep,
-    resume: bool,
-) -> Result<(Box<dyn TableWriter>, HashSet<u64>)> {
-    match target.extension().and_then(|e| e.to_str()) {
-        Some("csv") => {
-            let (t, done) = CsvTable::create(target, sweep, resume)?;
-            Ok((Box::new(t), done))
-        }
-        #[cfg(feature = "parquet")]
-        Some("parquet") => {
-            let (t, done) = super::parquet::ParquetTable::create(target, sweep, resume)?;
-            Ok((Box::new(t), done))
-        }
-        #[cfg(not(feature = "parquet"))]
-        Some("parquet") => Err(RouthError::Option {
-            name: "out",
-            value: target.display().to_string(),
-            rule: "this build has no Parquet output: build with `cargo build --release --features parquet`, or write .csv",
-        }.into()),
-        _ => Err(RouthError::Option {
-            name: "out",
-            value: target.display().to_string(),
-            rule: "must end in .parquet or .csv",
-        }
-        .into()),
-    }
 }

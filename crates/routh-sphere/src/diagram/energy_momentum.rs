@@ -3,10 +3,11 @@
 //! focus–focus points and the monodromy around them.
 
 use super::monodromy::{monodromy, Monodromy};
+use super::relative_equilibria::RelativeEquilibrium;
 use super::relative_equilibria::{critical_curves, vertical_spin_at, CriticalCurve};
-use super::relative_equilibria::{RelativeEquilibrium, Value};
 use super::stability::StabilityType;
 use super::tori::torus_count;
+use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use serde::Serialize;

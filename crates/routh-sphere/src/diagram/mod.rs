@@ -13,13 +13,15 @@ pub mod monodromy;
 pub mod relative_equilibria;
 pub mod stability;
 pub mod tori;
+pub mod value;
 
 pub use energy_momentum::{clearance, Diagram, Resolution, TorusGrid, Window};
 pub use energy_momentum::{sleeping_tops, SleepingTop};
 pub use monodromy::{follow_loop, monodromy, winding, LoopPoint, Monodromy};
 pub use relative_equilibria::{
     critical_curves, precession_spins, steady_precession_at, vertical_spin_at, CriticalCurve,
-    RelativeEquilibrium, Value,
+    RelativeEquilibrium,
 };
 pub use stability::{linearise, Linearisation, StabilityType};
 pub use tori::{integrate_level_set, torus_count, Excursion, TorusCount};
+pub use value::Value;

@@ -23,9 +23,10 @@
 //! around is a convention of the formula, the continued W is not. Once around the focus–focus
 //! value the continued W does not come back to its value: that is the monodromy.
 
-use super::relative_equilibria::{RelativeEquilibrium, Value};
+use super::relative_equilibria::RelativeEquilibrium;
 use super::stability::StabilityType;
 use super::tori::{level_set_point, torus_count};
+use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::quadrature::{ExactSolution, Motion};

@@ -20,45 +20,15 @@
 
 use super::stability::{linearise, StabilityType};
 use super::tori::root;
+use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
-use crate::integrals::{energy, jellett, routh_integral};
+use crate::integrals::jellett;
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
 use crate::steady::{sampled_quadratic_roots, vertical_spin_state};
 use serde::Serialize;
 use std::f64::consts::PI;
-
-/// A value of the integrals (H1, H3, K) (the fourth, H4 = (gamma, gamma), is 1).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Value {
-    /// Energy H1 (int-g).
-    #[serde(rename = "H1")]
-    pub h1: f64,
-    /// Jellett's integral H3 (int).
-    #[serde(rename = "H3")]
-    pub h3: f64,
-    /// Routh's integral K (raus-int).
-    #[serde(rename = "K")]
-    pub k: f64,
-}
-
-impl Value {
-    /// The values of H1, H3, K at a state.
-    pub fn of_state(body: &Body, state: &State) -> Self {
-        let x = state.to_array();
-        Value {
-            h1: energy(body, &x),
-            h3: jellett(body, &x),
-            k: routh_integral(body, &x),
-        }
-    }
-
-    /// The reduction `(du/dt)^2 = Q(u)` at this value.
-    pub fn reduction(&self, body: &Body) -> Result<Reduction> {
-        Reduction::new(body, self.h1, self.h3, self.k)
-    }
-}
 
 /// A relative equilibrium with its integrals and stability.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -1,0 +1,68 @@
+//! A row of a table as named columns and typed cells, built once and written by every
+//! writer: CSV ([`csv_line`]), Parquet (`sweep::parquet`), JSON ([`Cell::to_json`]) and the
+//! in-memory [`crate::table::Table`] ([`Cell::to_f64`]). The rows of `routh simulate`
+//! ([`crate::table::sample_cells`]) and of a sweep (`sweep::record`) are built here.
+
+/// The type of a column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Unsigned integer (run number, step counts).
+    Int,
+    /// Double, null where it does not apply.
+    Float,
+    /// Text.
+    Text,
+}
+
+/// One value of a row.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// An unsigned integer, null for a failed run.
+    Int(Option<u64>),
+    /// A double, null where it does not apply.
+    Float(Option<f64>),
+    /// Text.
+    Text(String),
+}
+
+impl Cell {
+    /// The cell as a JSON value (null for a missing number).
+    pub fn to_json(&self) -> serde_json::Value {
+        match self {
+            Cell::Int(v) => v.map_or(serde_json::Value::Null, Into::into),
+            Cell::Float(v) => v
+                .and_then(serde_json::Number::from_f64)
+                .map_or(serde_json::Value::Null, serde_json::Value::Number),
+            Cell::Text(s) => s.clone().into(),
+        }
+    }
+
+    /// The cell as CSV text: numbers in the shortest form that reads back to the same f64,
+    /// empty for null, text quoted when it holds a comma, a quote or a line break.
+    pub fn to_csv(&self) -> String {
+        match self {
+            Cell::Int(v) => v.map(|v| v.to_string()).unwrap_or_default(),
+            Cell::Float(v) => v.map(|v| v.to_string()).unwrap_or_default(),
+            Cell::Text(s) if s.contains([',', '"', '\n', '\r']) => {
+                format!("\"{}\"", s.replace('"', "\"\"").replace(['\n', '\r'], " "))
+            }
+            Cell::Text(s) => s.clone(),
+        }
+    }
+
+    /// The cell as a number of a [`crate::table::Table`]: NaN for null and for text (as an
+    /// empty CSV cell reads back).
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            Cell::Int(v) => v.map_or(f64::NAN, |v| v as f64),
+            Cell::Float(v) => v.unwrap_or(f64::NAN),
+            Cell::Text(_) => f64::NAN,
+        }
+    }
+}
+
+/// The cells as one line of CSV (without the line break).
+pub fn csv_line(cells: &[Cell]) -> String {
+    let cells: Vec<String> = cells.iter().map(Cell::to_csv).collect();
+    cells.join(",")
+}
