@@ -14,7 +14,7 @@ use routh_core::ball::AsBall;
 use routh_core::case::Case;
 use routh_core::integrate::{Method, OdeSystem};
 use routh_core::motion::{initial_full, FullMotion};
-use routh_core::simulate::{self, validate, ReducedSystem};
+use routh_core::simulate::{self as model, validate, ReducedSystem};
 use routh_core::State;
 use std::path::PathBuf;
 
@@ -408,14 +408,14 @@ impl PyProblem {
                 .map_err(|e: routh_core::integrate::ParseMethodError| {
                     PyValueError::new_err(e.to_string())
                 })?;
-        validate(&simulate::Settings {
+        validate(&model::Settings {
             method,
             t_end: (t_span.1 - t_span.0).abs(),
             rtol,
             atol,
             project,
             project_every: project_every as usize,
-            ..simulate::Settings::default()
+            ..model::Settings::default()
         })
         .map_err(python_error)?;
         Ok(PyProblem {
