@@ -12,9 +12,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 use routh_core::ball::AsBall;
 use routh_core::case::Case;
-use routh_core::integrate::{Method, OdeSystem, Options};
+use routh_core::integrate::{Method, OdeSystem};
 use routh_core::motion::{initial_full, FullMotion};
-use routh_core::simulate::ReducedSystem;
+use routh_core::simulate::{validate, ReducedSystem, Settings as RunSettings};
 use routh_core::State;
 use std::path::PathBuf;
 
@@ -408,13 +408,16 @@ impl PyProblem {
                 .map_err(|e: routh_core::integrate::ParseMethodError| {
                     PyValueError::new_err(e.to_string())
                 })?;
-        Options {
+        validate(&RunSettings {
+            method,
+            t_end: (t_span.1 - t_span.0).abs(),
             rtol,
             atol,
-            ..Options::default()
-        }
-        .validate()
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+            project,
+            project_every: project_every as usize,
+            ..RunSettings::default()
+        })
+        .map_err(python_error)?;
         Ok(PyProblem {
             body: Rolling::extract("body", body)?,
             x0,

@@ -195,10 +195,9 @@ pub const MAX_RTOL: f64 = 1e-2;
 /// error target is not what the controller can verify.
 pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
 
-/// The one validation of the time span and tolerances (used by [`validate`], and so by every
-/// command, the sweep, case files and Python): t_end finite and >= 0; the tolerances by
+/// The time span and tolerances of [`validate`]: t_end finite and >= 0; the tolerances by
 /// [`check_tolerances`]. Each violation names the option.
-pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
+fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
     if !(t_end.is_finite() && t_end >= 0.0) {
         return Err(RouthError::Option {
             name: "t_end",
@@ -209,40 +208,42 @@ pub fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
     check_tolerances(rtol, atol)
 }
 
+/// Fail with [`RouthError::Option`] unless `ok`.
+pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str) -> Result<()> {
+    if ok {
+        Ok(())
+    } else {
+        Err(RouthError::Option {
+            name,
+            value: value.to_string(),
+            rule,
+        })
+    }
+}
+
 /// The rule of the tolerances: rtol finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`],
 /// [`MAX_RTOL`]); atol finite and > 0.
 pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
-    let rule = |name: &'static str, value: f64, ok: bool, rule: &'static str| {
-        if ok {
-            Ok(())
-        } else {
-            Err(RouthError::Option {
-                name,
-                value: value.to_string(),
-                rule,
-            })
-        }
-    };
-    rule(
+    check_option(
         "rtol",
         rtol,
         rtol.is_finite() && rtol > 0.0,
         "must be finite and > 0",
     )?;
-    rule(
+    check_option(
         "rtol",
         rtol,
         rtol < MAX_RTOL,
         "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents",
     )?;
-    rule(
+    check_option(
         "rtol",
         rtol,
         rtol >= MIN_RTOL,
         "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
          the error the controller asks for",
     )?;
-    rule(
+    check_option(
         "atol",
         atol,
         atol.is_finite() && atol > 0.0,
@@ -250,8 +251,10 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
     )
 }
 
-/// Validate the settings ([`validate_span`] and the sample count); each violation names the
-/// option.
+/// The one validation of the settings (t_end, the tolerances, the step limit, the samples,
+/// the projection), used by every command, the sweep, case files and Python, and by
+/// [`integrate_observed`] and [`integrate_span`], so that no run sees invalid settings; each
+/// violation names the option.
 pub fn validate(settings: &Settings) -> Result<()> {
     validate_span(settings.t_end, settings.rtol, settings.atol)?;
     if settings.max_steps == 0 {

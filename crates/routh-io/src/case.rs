@@ -26,7 +26,7 @@
 
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
-use crate::error::{AppError, AppResult as Result, FileError, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use crate::state::{Normalise, State};
 use serde::Deserialize;
 use std::path::Path;
@@ -55,7 +55,7 @@ pub const DEFAULT_T_END: f64 = 100.0;
 /// Default relative and absolute tolerance of a case without `rtol` or `atol`.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
 pub use crate::simulate::DEFAULT_MAX_STEPS;
-pub use crate::simulate::{check_tolerances, MAX_RTOL, MIN_RTOL};
+pub use crate::simulate::{check_option, check_tolerances, MAX_RTOL, MIN_RTOL};
 
 impl Default for Integration {
     fn default() -> Self {
@@ -69,40 +69,15 @@ impl Default for Integration {
 }
 
 impl Integration {
-    /// Check the settings: t_end, rtol, atol by the library's one validation
-    /// ([`crate::simulate::validate_span`]), max_steps >= 1.
+    /// Check the settings: t_end, rtol, atol, max_steps by the library's one validation
+    /// ([`crate::simulate::validate`]).
     pub fn validate(&self) -> crate::Result<()> {
-        crate::simulate::validate_span(self.t_end, self.rtol, self.atol)?;
-        check_max_steps(self.max_steps)
-    }
-}
-
-/// `max_steps` must be at least 1.
-pub fn check_max_steps(max_steps: usize) -> crate::Result<()> {
-    if max_steps == 0 {
-        return Err(RouthError::Option {
-            name: "max_steps",
-            value: "0".into(),
-            rule: "must be >= 1",
-        });
-    }
-    Ok(())
-}
-
-/// Fail with [`RouthError::Option`] unless `ok`.
-pub fn check_option(
-    name: &'static str,
-    value: f64,
-    ok: bool,
-    rule: &'static str,
-) -> crate::Result<()> {
-    if ok {
-        Ok(())
-    } else {
-        Err(RouthError::Option {
-            name,
-            value: value.to_string(),
-            rule,
+        crate::simulate::validate(&crate::simulate::Settings {
+            t_end: self.t_end,
+            rtol: self.rtol,
+            atol: self.atol,
+            max_steps: self.max_steps,
+            ..crate::simulate::Settings::default()
         })
     }
 }
@@ -270,7 +245,7 @@ impl Case {
     }
 
     /// The ball as a [`Body`] (the paper's parameters, centre of mass on e3); an
-    /// [`RouthError::OffAxis`] naming `what` for a centre of mass off the axis.
+    /// [`crate::error::RouthError::OffAxis`] naming `what` for a centre of mass off the axis.
     pub fn body(&self, what: &'static str) -> crate::Result<Body> {
         self.ball.axial_body(what)
     }
