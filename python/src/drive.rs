@@ -7,7 +7,7 @@
 use pyo3::{PyErr, PyResult};
 use routh_core::ball::AsBall;
 use routh_core::integrate::{brent, Method, OdeSystem, Stats, Stepper};
-use routh_core::problem::DenseSolution;
+use routh_core::problem::{DenseSolution, Status};
 use routh_core::projection::LevelSet;
 use routh_core::simulate::{
     integrate_span, project_onto, reduced, Drift, Next, Settings as LibrarySettings, Span,
@@ -51,17 +51,6 @@ pub struct EventRule {
     pub direction: f64,
 }
 
-/// How a run ended.
-#[derive(Debug)]
-pub enum Ending {
-    /// The end of the time span was reached.
-    Reached,
-    /// A terminal event stopped it.
-    Terminal,
-    /// The integrator failed, with its message.
-    Failed(String),
-}
-
 /// What a run produced.
 pub struct Run<const N: usize> {
     /// Times of the reported states.
@@ -81,7 +70,9 @@ pub struct Run<const N: usize> {
     /// Work counters.
     pub stats: Stats,
     /// How it ended.
-    pub ending: Ending,
+    pub status: Status,
+    /// Why it failed (with [`Status::Failed`]).
+    pub failure: Option<String>,
     /// The drift of each integral the body has.
     pub drift: BTreeMap<&'static str, Drift>,
     /// Wall time of the integration in seconds.
@@ -155,13 +146,13 @@ struct Events<'h, const N: usize> {
 
 impl<const N: usize> Events<'_, N> {
     /// How the run ended, given the integrator's failure.
-    fn ending(&self, failure: Option<String>) -> Ending {
+    fn ending(&self, failure: Option<String>) -> (Status, Option<String>) {
         let terminal = (self.hooks.rules.iter().zip(&self.t_events))
             .any(|(rule, t)| rule.terminal > 0 && t.len() >= rule.terminal);
         match (self.unlocated.clone().or(failure), terminal) {
-            (Some(message), _) => Ending::Failed(message),
-            (None, true) => Ending::Terminal,
-            (None, false) => Ending::Reached,
+            (Some(message), _) => (Status::Failed, Some(message)),
+            (None, true) => (Status::Event, None),
+            (None, false) => (Status::Reached, None),
         }
     }
 
@@ -253,7 +244,7 @@ impl<const N: usize> Events<'_, N> {
 /// Integrate `sys` from `(t0, y0)` to `t1` (either direction) with `settings`, reporting
 /// states at `output`, locating the events of `hooks`, keeping the dense output of every step
 /// if `dense`. Fails only with the error of a hook or invalid settings; a failure of the
-/// integrator is returned as [`Ending::Failed`] with what was computed.
+/// integrator is returned as [`Status::Failed`] with what was computed.
 #[allow(clippy::too_many_arguments)]
 pub fn drive<S: OdeSystem<N>, const N: usize>(
     body: &impl AsBall,
@@ -340,7 +331,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             Ok(next)
         },
     )?;
-    let ending = events.ending(observed.failure.map(|e| e.to_string()));
+    let (status, failure) = events.ending(observed.failure.map(|e| e.to_string()));
     let reported = reported.into_inner();
     let summary = observed.summary;
     Ok(Run {
@@ -356,7 +347,8 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             rejected: summary.rejected,
             rhs_evals: summary.rhs_evals,
         },
-        ending,
+        status,
+        failure,
         drift: summary.integrals,
         elapsed_s: summary.elapsed_s,
     })

@@ -3,13 +3,14 @@
 
 use crate::convert::columns;
 use crate::dense::DenseOutput;
-use crate::drive::{Ending, Run};
+use crate::drive::Run;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use routh_core::ball::AsBall;
 use routh_core::motion::{full_columns, FULL_DIM};
+use routh_core::problem::Status;
 
 /// The result of `simulate` (as SciPy's `solve_ivp`): `t` (shape `(k,)`), `y` (shape `(n, k)`,
 /// n = 6 for `(gamma, M)`, 12 with `full=True` for `(gamma, M, q, x, y)`), `sol` (a
@@ -92,13 +93,16 @@ impl Solution {
         y0: [f64; N],
         sol: Option<DenseOutput>,
     ) -> PyResult<Self> {
-        let (status, message) = match &run.ending {
-            Ending::Reached => (
+        let (status, message) = match (run.status, &run.failure) {
+            (Status::Failed, m) => (
+                -1,
+                format!("integration failed: {}", m.as_deref().unwrap_or_default()),
+            ),
+            (Status::Event, _) => (1, "A termination event occurred.".to_string()),
+            (Status::Reached, _) => (
                 0,
                 "The solver successfully reached the end of the integration interval.".to_string(),
             ),
-            Ending::Terminal => (1, "A termination event occurred.".to_string()),
-            Ending::Failed(m) => (-1, format!("integration failed: {m}")),
         };
         let integrals = PyDict::new(py);
         for (name, d) in &run.drift {

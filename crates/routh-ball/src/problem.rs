@@ -36,15 +36,27 @@ pub struct Problem {
     pub event: Option<Crossing>,
 }
 
-/// How a run ended.
+/// How a run ended, as its user sees it: the one status of a [`Solution`], a row of the
+/// sweep and a Python run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Status {
     /// t_end was reached.
     Reached,
-    /// The event was found.
+    /// The (terminal) event was found.
     Event,
     /// The integration failed (the message says why); the solution holds what was reached.
     Failed,
+}
+
+impl Status {
+    /// The word of a table cell: `ok` (t_end reached), `event`, `failed`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Reached => "ok",
+            Status::Event => "event",
+            Status::Failed => "failed",
+        }
+    }
 }
 
 /// A state at a time.

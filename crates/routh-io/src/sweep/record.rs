@@ -27,24 +27,8 @@ pub enum Cell {
     Text(String),
 }
 
-/// Whether a run finished.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Status {
-    /// The run reached t_end.
-    Ok,
-    /// The run could not be done; the message says why.
-    Failed,
-}
-
-impl Status {
-    /// `ok` or `failed`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Status::Ok => "ok",
-            Status::Failed => "failed",
-        }
-    }
-}
+/// How a run ended: a sweep's run reaches t_end ([`Status::Reached`], written `ok`) or fails.
+pub use crate::problem::Status;
 
 /// The nutation by quadrature (Routh sphere only).
 #[derive(Debug, Clone, Copy, PartialEq)]

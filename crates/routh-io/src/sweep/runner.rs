@@ -355,7 +355,7 @@ impl Sweep {
         Row {
             run: k,
             values: self.design.point(k),
-            status: Status::Ok,
+            status: Status::Reached,
             message,
             summary: Some(summary),
             events: Some(events),
