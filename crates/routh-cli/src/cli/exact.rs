@@ -63,14 +63,9 @@ pub struct Args {
 #[derive(Serialize)]
 struct Summary {
     case: String,
-    motion: &'static str,
-    theta_min: f64,
-    theta_max: f64,
-    gamma3_min: f64,
-    gamma3_max: f64,
-    period: Option<f64>,
-    precession_advance_per_period: Option<f64>,
-    precession_rate: Option<f64>,
+    /// The motion of the tilt.
+    #[serde(flatten)]
+    tilt: Tilt,
     passes_through_axis: bool,
     chebyshev_nodes: Option<usize>,
     /// The state at t.
@@ -87,6 +82,24 @@ struct Summary {
     /// The samples on [0, t] when asked for with `--json` and without `--out`.
     #[serde(skip_serializing_if = "Option::is_none")]
     samples: Option<Vec<Sample>>,
+}
+
+/// The motion of the tilt theta (gamma3 = cos theta) that `routh exact` and `routh exact
+/// --flow` report.
+#[derive(Serialize)]
+pub(super) struct Tilt {
+    /// `nutation` (theta oscillates) or `steady` (theta constant).
+    pub(super) motion: &'static str,
+    pub(super) theta_min: f64,
+    pub(super) theta_max: f64,
+    pub(super) gamma3_min: f64,
+    pub(super) gamma3_max: f64,
+    /// The period of theta.
+    pub(super) period: Option<f64>,
+    /// The advance of the azimuth of gamma per period of theta.
+    pub(super) precession_advance_per_period: Option<f64>,
+    /// The azimuth's rate when theta is constant.
+    pub(super) precession_rate: Option<f64>,
 }
 
 /// The state at a time: one sample of `routh exact --samples N --json`, and the state that
@@ -148,14 +161,16 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
     };
     Summary {
         case: case.source.clone(),
-        motion,
-        theta_min: u_max.clamp(-1.0, 1.0).acos(),
-        theta_max: u_min.clamp(-1.0, 1.0).acos(),
-        gamma3_min: u_min,
-        gamma3_max: u_max,
-        period: exact.period(),
-        precession_advance_per_period: advance,
-        precession_rate: rate,
+        tilt: Tilt {
+            motion,
+            theta_min: u_max.clamp(-1.0, 1.0).acos(),
+            theta_max: u_min.clamp(-1.0, 1.0).acos(),
+            gamma3_min: u_min,
+            gamma3_max: u_max,
+            period: exact.period(),
+            precession_advance_per_period: advance,
+            precession_rate: rate,
+        },
         passes_through_axis: through,
         chebyshev_nodes: nodes,
         state: Sample::new(body, t, &state),
@@ -172,16 +187,15 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
 
 fn print_text(s: &Summary) -> Result<()> {
     outln!("case: {}", s.case)?;
-    outln!("motion: {}", s.motion)?;
-    print_tilt([s.theta_min, s.theta_max], [s.gamma3_min, s.gamma3_max])?;
-    match (s.period, s.precession_advance_per_period, s.precession_rate) {
-        (Some(period), Some(advance), _) => {
-            outln!("nutation period T = {period}")?;
-            outln!("precession advance per period = {advance}")?;
-        }
-        (_, _, Some(rate)) => outln!("steady: precession rate dpsi/dt = {rate}")?,
-        _ => {}
-    }
+    outln!("motion: {}", s.tilt.motion)?;
+    print_tilt(
+        &s.tilt,
+        [
+            "nutation period T",
+            "precession advance per period",
+            "steady: precession rate dpsi/dt",
+        ],
+    )?;
     if s.passes_through_axis {
         outln!("the motion passes through the symmetry axis (sin theta = 0) once per period")?;
     }
@@ -195,15 +209,26 @@ fn print_text(s: &Summary) -> Result<()> {
     print_state(format_args!("{:?}", s.state.t), &s.state)
 }
 
-/// The line of the tilt's range: theta in [min, max], gamma3 = cos theta in [min, max].
-pub(super) fn print_tilt(theta: [f64; 2], gamma3: [f64; 2]) -> Result<()> {
+/// The lines of the tilt: its range (theta in [min, max], gamma3 = cos theta in [min, max]),
+/// then the period and the precession's advance, or the precession's rate, each after its
+/// name in `names`.
+pub(super) fn print_tilt(s: &Tilt, names: [&str; 3]) -> Result<()> {
     outln!(
         "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        theta[0],
-        theta[1],
-        gamma3[0],
-        gamma3[1]
-    )
+        s.theta_min,
+        s.theta_max,
+        s.gamma3_min,
+        s.gamma3_max
+    )?;
+    let [period_name, advance_name, rate_name] = names;
+    match (s.period, s.precession_advance_per_period, s.precession_rate) {
+        (Some(period), Some(advance), _) => {
+            outln!("{period_name} = {period}")?;
+            outln!("{advance_name} = {advance}")
+        }
+        (_, _, Some(rate)) => outln!("{rate_name} = {rate}"),
+        _ => Ok(()),
+    }
 }
 
 /// The line of the integrals' values.

@@ -2,7 +2,7 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{print_integrals, print_state, print_tilt, write_samples, Args, Sample};
+use super::exact::{print_integrals, print_state, print_tilt, write_samples, Args, Sample, Tilt};
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
@@ -16,18 +16,9 @@ struct Summary {
     flow: &'static str,
     condition: &'static str,
     alpha: f64,
-    /// `nutation` (theta oscillates) or `steady` (theta constant).
-    motion: &'static str,
-    theta_min: f64,
-    theta_max: f64,
-    gamma3_min: f64,
-    gamma3_max: f64,
-    /// The period of theta.
-    period: Option<f64>,
-    /// The advance of phi = atan2(gamma1, gamma2) per period of theta.
-    precession_advance_per_period: Option<f64>,
-    /// dphi/dt when theta is constant.
-    precession_rate: Option<f64>,
+    /// The motion of theta; the precession is that of phi = atan2(gamma1, gamma2).
+    #[serde(flatten)]
+    tilt: Tilt,
     /// The state at t.
     #[serde(flatten)]
     state: Sample,
@@ -64,18 +55,20 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         flow: field.name(),
         condition: args.condition.name(),
         alpha: bracket.alpha.at(&case.initial.gamma),
-        motion: if shape.period.is_some() {
-            "nutation"
-        } else {
-            "steady"
+        tilt: Tilt {
+            motion: if shape.period.is_some() {
+                "nutation"
+            } else {
+                "steady"
+            },
+            theta_min,
+            theta_max,
+            gamma3_min: theta_max.cos(),
+            gamma3_max: theta_min.cos(),
+            period: shape.period,
+            precession_advance_per_period: shape.advance,
+            precession_rate: shape.rate,
         },
-        theta_min,
-        theta_max,
-        gamma3_min: theta_max.cos(),
-        gamma3_max: theta_min.cos(),
-        period: shape.period,
-        precession_advance_per_period: shape.advance,
-        precession_rate: shape.rate,
         state: Sample::new(&body, t, &state_at(t)),
         integrals: Value::of_state(&body, &case.initial),
     };
@@ -95,15 +88,14 @@ fn print_text(s: &Summary) -> Result<()> {
         s.condition,
         s.alpha
     )?;
-    print_tilt([s.theta_min, s.theta_max], [s.gamma3_min, s.gamma3_max])?;
-    match (s.period, s.precession_advance_per_period, s.precession_rate) {
-        (Some(period), Some(advance), _) => {
-            outln!("period of theta T = {period}")?;
-            outln!("advance of phi per period = {advance}")?;
-        }
-        (_, _, Some(rate)) => outln!("theta constant: dphi/dt = {rate}")?,
-        _ => {}
-    }
+    print_tilt(
+        &s.tilt,
+        [
+            "period of theta T",
+            "advance of phi per period",
+            "theta constant: dphi/dt",
+        ],
+    )?;
     print_integrals(&s.integrals)?;
     print_state(format_args!("{}", s.state.t), &s.state)
 }
