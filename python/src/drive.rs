@@ -1,12 +1,15 @@
 //! `simulate` on the library's one driver ([`routh_core::simulate::integrate_span`]): this file
 //! adds only what SciPy's `solve_ivp` has and the library does not, as an observer of the
-//! steps: several events with SciPy's `terminal` counts and `direction`, located by Brent's
-//! method on the stepper's dense output; the states at every step end (SciPy's default
-//! output); the dense output of every step; and a check for Ctrl-C between steps.
+//! steps: several events with SciPy's `terminal` counts and `direction`, located on the
+//! stepper's dense output by the integrator's one event locator; the states at every step
+//! end (SciPy's default output); the dense output of every step; and a check for Ctrl-C
+//! between steps.
 
 use pyo3::{PyErr, PyResult};
 use routh_core::ball::AsBall;
-use routh_core::integrate::{brent, Method, OdeSystem, Stats, Stepper};
+use routh_core::integrate::{
+    locate, Direction, EventSpec, Method, OdeSystem, Stats, Stepper, Unlocated,
+};
 use routh_core::problem::{DenseSolution, Status};
 use routh_core::projection::LevelSet;
 use routh_core::simulate::{
@@ -19,9 +22,6 @@ use std::collections::BTreeMap;
 /// Steps between two checks for a pending Ctrl-C (a DOP853 step of (mg-eq) takes about a
 /// microsecond, so the check runs about every 0.3 ms and costs nothing measurable).
 pub const SIGNAL_CHECK_STEPS: usize = 256;
-
-/// Most evaluations of Brent's method for one event.
-const EVENT_ITERATIONS: usize = 200;
 
 /// The integration settings of a run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -102,13 +102,6 @@ pub struct Hooks<'h, const N: usize> {
     pub interrupt: &'h mut dyn FnMut() -> PyResult<()>,
 }
 
-/// A crossing of zero by `g` from `g0` to `g1` that counts under `direction`.
-fn crosses(g0: f64, g1: f64, direction: f64) -> bool {
-    let up = g0 < 0.0 && g1 >= 0.0;
-    let down = g0 > 0.0 && g1 <= 0.0;
-    (up && direction >= 0.0) || (down && direction <= 0.0)
-}
-
 /// Why a run ended with an error: the library refused it, or a hook raised an exception
 /// (raised after the run). The error type of the run's callbacks.
 enum Halt {
@@ -156,49 +149,27 @@ impl<const N: usize> Events<'_, N> {
         }
     }
 
-    /// The zeros of event `i` on the last step `[ta, tb]` of `stepper`, where it changed from
-    /// `g0` to `g1` (`tb` itself when `g1 = 0`).
-    fn locate(
-        &mut self,
-        i: usize,
-        g1: f64,
-        stepper: &dyn Stepper<N>,
-    ) -> Result<Result<f64, String>, PyErr> {
-        let (ta, tb) = (stepper.t_prev(), stepper.t());
-        if g1 == 0.0 {
-            return Ok(Ok(tb));
-        }
-        let mut failure = None;
-        let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
-        let event = &mut self.hooks.event;
-        let located = brent(
-            |s| match event(i, s, &stepper.dense(s)) {
-                Ok(g) => g,
-                Err(e) => {
-                    failure.get_or_insert(e);
-                    f64::NAN
-                }
-            },
-            ta,
-            tb,
-            2.0 * f64::EPSILON * scale,
-            EVENT_ITERATIONS,
-        );
-        if let Some(e) = failure {
-            return Err(e);
-        }
-        Ok(located.ok_or_else(|| {
-            format!(
-                "event {i} could not be located in [{ta}, {tb}] (its function is not finite \
-                 there)"
-            )
-        }))
+    /// How each event is watched on the next step: its direction, and terminal if its next
+    /// occurrence is the one that stops the run.
+    fn specs(&self) -> Vec<EventSpec> {
+        (self.hooks.rules.iter().zip(&self.t_events))
+            .map(|(rule, occurred)| EventSpec {
+                direction: if rule.direction > 0.0 {
+                    Direction::Rising
+                } else if rule.direction < 0.0 {
+                    Direction::Falling
+                } else {
+                    Direction::Either
+                },
+                terminal: rule.terminal > 0 && occurred.len() + 1 >= rule.terminal,
+            })
+            .collect()
     }
 
     /// The events on the last step of `stepper`, which ends at `(t, y)` after projection
-    /// (`raw`: the step end before it), in the order of time: the run stops at the terminal
-    /// one, if any, with its (projected) state, or after the step if an event could not be
-    /// located.
+    /// (`raw`: the step end before it), located by the integrator's one locator, in the
+    /// order of time: the run stops at the terminal one, if any, with its (projected) state,
+    /// or after the step if an event could not be located.
     fn on_step(
         &mut self,
         stepper: &dyn Stepper<N>,
@@ -207,33 +178,52 @@ impl<const N: usize> Events<'_, N> {
         raw: &[f64; N],
         project: &dyn Fn([f64; N]) -> [f64; N],
     ) -> Result<Next<N>, PyErr> {
-        let ta = stepper.t_prev();
-        let dir = if t >= ta { 1.0 } else { -1.0 };
-        let mut found: Vec<(f64, usize)> = vec![];
-        for i in 0..self.g_prev.len() {
-            let g1 = (self.hooks.event)(i, t, raw)?;
-            if crosses(self.g_prev[i], g1, self.hooks.rules[i].direction) {
-                match self.locate(i, g1, stepper)? {
-                    Ok(te) => found.push((te, i)),
-                    Err(message) => {
-                        self.unlocated = Some(message);
-                        return Ok(Next::Stop);
-                    }
+        let g_end = (0..self.g_prev.len())
+            .map(|i| (self.hooks.event)(i, t, raw))
+            .collect::<PyResult<Vec<f64>>>()?;
+        let specs = self.specs();
+        let mut failure = None;
+        let event = &mut self.hooks.event;
+        let located = locate(
+            &|s| stepper.dense(s),
+            (stepper.t_prev(), t),
+            &specs,
+            &mut |i, s, x| match event(i, s, x) {
+                Ok(g) => g,
+                Err(e) => {
+                    failure.get_or_insert(e);
+                    f64::NAN
                 }
+            },
+            &self.g_prev,
+            &g_end,
+        );
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        let found = match located {
+            Ok(found) => found,
+            Err(Unlocated { event: i, ta, tb }) => {
+                self.unlocated = Some(format!(
+                    "event {i} could not be located in [{ta}, {tb}] (its function is not \
+                     finite there)"
+                ));
+                return Ok(Next::Stop);
             }
+        };
+        for (i, g1) in g_end.into_iter().enumerate() {
             self.g_prev[i] = if raw == y {
                 g1
             } else {
                 (self.hooks.event)(i, t, y)?
             };
         }
-        found.sort_by(|a, b| ((a.0 - ta) * dir).total_cmp(&((b.0 - ta) * dir)));
-        for (te, i) in found {
+        for crossing in found {
+            let te = crossing.t;
             let ye = project(if te == t { *raw } else { stepper.dense(te) });
-            self.t_events[i].push(te);
-            self.y_events[i].push(ye);
-            let rule = self.hooks.rules[i];
-            if rule.terminal > 0 && self.t_events[i].len() >= rule.terminal {
+            self.t_events[crossing.event].push(te);
+            self.y_events[crossing.event].push(ye);
+            if crossing.terminal {
                 return Ok(Next::StopAt { t: te, y: ye });
             }
         }

@@ -18,7 +18,8 @@
 //! * [`Taylor`]: the Taylor-series method of adaptive order and step (Jorba–Zou) on the field
 //!   recorded into an expression tape ([`OdeSystem::record`]);
 //! * [`Method`] names them, [`stepper`] builds the one chosen (and resolves `auto`);
-//! * [`brent`]: a bracketing scalar root finder.
+//! * [`brent`]: a bracketing scalar root finder; [`locate`]: the one event locator (the
+//!   crossings of several event functions on a step's dense output).
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
@@ -42,7 +43,7 @@ use std::str::FromStr;
 pub use control::{Clock, Law, StepControl};
 pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
 pub(crate) use dop853::{rk_start, scaled_error};
-pub use event::brent;
+pub use event::{brent, locate, Crossing, Direction, EventSpec, Unlocated};
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 pub use taylor::Taylor;
 pub use vern9::Vern9;
@@ -475,9 +476,9 @@ pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), Integra
 /// The step loop: steps `stepper` to its `t_end`.
 ///
 /// After every accepted step, in this order: if `event` changes sign on the step, its zero is
-/// located on the dense output (Brent's method to about 2 ulp of `t`), the state there is
-/// projected, the samples before it are reported, `on_step` sees it and the run ends with
-/// [`Stop::Event`]; otherwise the step end is projected (`set_state`), the samples up to it
+/// located on the dense output by [`locate`] (Brent's method to about 2 ulp of `t`), the
+/// state there is projected, the samples before it are reported, `on_step` sees it and the
+/// run ends with [`Stop::Event`]; otherwise the step end is projected (`set_state`), the samples up to it
 /// are reported through `on_sample` from the dense output (a sample on the step end gets the
 /// projected state), and `on_step(t, y, stepper)` sees the step end (and the stepper, for its
 /// dense output on the step) and may stop the run. A zero of
@@ -504,15 +505,19 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
         if let (Some(g), Some(g0)) = (run.event, g_prev) {
             let ta = stepper.t_prev();
             let g1 = g(t, stepper.y());
-            if (g0 < 0.0 && g1 >= 0.0) || (g0 > 0.0 && g1 <= 0.0) {
-                let scale = ta.abs().max(t.abs()).max((t - ta).abs());
-                let tol = 2.0 * f64::EPSILON * scale;
-                let te = if g1 == 0.0 {
-                    t
-                } else {
-                    brent(|s| g(s, &stepper.dense(s)), ta, t, tol, 200)
-                        .ok_or(IntegrateError::NonFinite { t })?
-                };
+            let found = locate(
+                &|s| stepper.dense(s),
+                (ta, t),
+                &[EventSpec {
+                    direction: Direction::Either,
+                    terminal: true,
+                }],
+                &mut |_, s, y| g(s, y),
+                &[g0],
+                &[g1],
+            )
+            .map_err(|_| IntegrateError::NonFinite { t })?;
+            if let Some(&Crossing { t: te, .. }) = found.first() {
                 let mut ye = if te == t {
                     *stepper.y()
                 } else {

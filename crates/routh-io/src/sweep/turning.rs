@@ -4,15 +4,15 @@
 //!
 //! gamma3 = cos theta turns where `d gamma3/dt = (gamma x omega)_3 = gamma1 omega2 -
 //! gamma2 omega1` changes sign (mg-eq); each sign change between the ends of an accepted
-//! step is located by Brent's method on the step's dense output. A minimum of gamma3 (the
-//! largest tilt) marks the start of a nutation period. The precession is the rotation of
-//! the state about e3 in the body frame, the angle of (gamma1, gamma2), followed continuously
-//! from step to step: the quadrature's "advance per period" is the same angle, since
-//! (mg-eq) with I1 = I2 is symmetric under that rotation.
+//! step is located on the step's dense output by the integrator's one event locator,
+//! [`crate::integrate::locate`]. A minimum of gamma3 (the largest tilt) marks the start of
+//! a nutation period. The precession is the rotation of the state about e3 in the body
+//! frame, the angle of (gamma1, gamma2), followed continuously from step to step: the
+//! quadrature's "advance per period" is the same angle, since (mg-eq) with I1 = I2 is
+//! symmetric under that rotation.
 
 use crate::body::Body;
-use crate::integrate::brent;
-use crate::integrate::Stepper;
+use crate::integrate::{locate, Crossing, Direction, EventSpec, Stepper};
 
 /// The rate d gamma3/dt at `x = (gamma, M)`.
 fn tilt_rate(body: &Body, x: &[f64; 6]) -> f64 {
@@ -79,18 +79,27 @@ impl<'a> TurningPoints<'a> {
     pub fn observe(&mut self, step: &dyn Stepper<6>) {
         let y1 = step.y();
         let rate = tilt_rate(self.body, y1);
-        if (self.rate < 0.0 && rate >= 0.0) || (self.rate > 0.0 && rate <= 0.0) {
-            let f = |t: f64| tilt_rate(self.body, &step.dense(t));
-            if let Some(t) = brent(f, step.t_prev(), step.t(), 0.0, 100) {
-                let x = step.dense(t);
-                self.gamma3_min = self.gamma3_min.min(x[2]);
-                self.gamma3_max = self.gamma3_max.max(x[2]);
-                if self.rate < 0.0 {
-                    let at = (t, follow(self.azimuth, &x));
-                    self.first_minimum.get_or_insert(at);
-                    self.last_minimum = Some(at);
-                    self.minima += 1;
-                }
+        let turning = EventSpec {
+            direction: Direction::Either,
+            terminal: false,
+        };
+        let located = locate(
+            &|t| step.dense(t),
+            (step.t_prev(), step.t()),
+            &[turning],
+            &mut |_, _, x| tilt_rate(self.body, x),
+            &[self.rate],
+            &[rate],
+        );
+        if let Some(&Crossing { t, .. }) = located.ok().as_ref().and_then(|c| c.first()) {
+            let x = step.dense(t);
+            self.gamma3_min = self.gamma3_min.min(x[2]);
+            self.gamma3_max = self.gamma3_max.max(x[2]);
+            if self.rate < 0.0 {
+                let at = (t, follow(self.azimuth, &x));
+                self.first_minimum.get_or_insert(at);
+                self.last_minimum = Some(at);
+                self.minima += 1;
             }
         }
         self.rate = rate;
