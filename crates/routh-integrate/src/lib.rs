@@ -661,3 +661,8 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
     )?;
     Ok((outcome.y, outcome.stats))
 }
+
+/// The examples of the crate's README, compiled and run as doc tests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -1,0 +1,939 @@
+//! The exact solution by quadrature (routh-sphere): against integration, reference values of high precision, and its own decisions near the poles, the separatrices and the equilibria.
+//!
+//! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
+
+#[path = "support/exact_sweep.rs"]
+mod sweep_cases;
+
+mod exact_decisions {
+    //! When `exact` may call a state steady, when it must solve the motion, and when it must
+    //! refuse: the reproducers of issue 10 (wrong "steady" verdicts near the vertical spin) and of
+    //! issue 14 (false "near a separatrix" refusals of regular nutations near the axis), and a
+    //! property test over 500 random states against DOP853.
+
+    // The DOP853 reference and the distance of the sweep of issue 14.
+    #[allow(dead_code)]
+    use crate::sweep_cases as exact_sweep;
+
+    use exact_sweep::{distance, dop853_at};
+    use routh::body::Body;
+    use routh::quadrature::{ExactSolution, Motion};
+    use routh::state::{Normalise, State};
+    use routh::steady::routh_threshold;
+    use routh::RouthError;
+
+    /// DOP853 at rtol 1e-13 (atol 1e-15) from `x0` to `t`: at t = 10 its global error on these
+    /// motions is below 1e-9 (at most 4.6e-10 on the random states of the property test, against
+    /// rtol 3e-16; docs/quadrature.md, section 7), below the 1e-8 compared here.
+    fn dop853(body: &Body, x0: &State, t: f64) -> State {
+        dop853_at(body, x0, t, 1e-13)
+    }
+
+    fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {
+        State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
+    }
+
+    fn tilt(theta: f64) -> [f64; 3] {
+        [theta.sin(), 0.0, theta.cos()]
+    }
+
+    #[test]
+    fn below_routh_threshold_a_small_tilt_is_not_steady() {
+        // Issue 10: gamma = (sin 1e-6, 0, cos 1e-6), omega = (0, 0, 2) (below the threshold
+        // 2.7557) was called steady; DOP853 leaves the axis: gamma = (0.5187, -0.1501, 0.8417) at
+        // t = 20. The quadrature must not call it steady. This state lies so close to the
+        // homoclinic orbit that H1, H3, K (round-off 1e-16) fix its distance from it only to 1e-4
+        // relative, and it was refused as a separatrix; the parameters of the top pole computed
+        // from the state without cancellation (docs/quadrature.md, section 5) fix it to 1e-12,
+        // and it is solved: 6.8e-11 off DOP853 at rtol 1e-14 at t = 20, where the instability
+        // (eigenvalue 0.816) has amplified the start's round-off 1.2e7 times.
+        let body = Body::default();
+        let x0 = state(&body, tilt(1e-6), [0.0, 0.0, 2.0]);
+        let reference = dop853(&body, &x0, 20.0);
+        assert!(
+            (reference.gamma[2] - 0.8417).abs() < 1e-3,
+            "{:?}",
+            reference.gamma
+        );
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        assert!(!matches!(exact.motion, Motion::Steady { .. }));
+        assert!(exact.accuracy.checked_error_at(20.0).is_ok());
+        let d = distance(&exact.state_at(20.0), &dop853_at(&body, &x0, 20.0, 1e-14));
+        // 1e-8: the issue's criterion (DOP853 at rtol 1e-14 is within 1e-10 of itself at rtol
+        // 3e-16 here).
+        assert!(d < 1e-8, "{d:e}");
+    }
+
+    #[test]
+    fn above_routh_threshold_a_small_nutation_is_solved_not_steady() {
+        // Issue 10: gamma = (0.001, 0, 0.9999995), omega = (0, 0, 5) was called steady while it
+        // nutates (theta from 0.0010 to 0.0012), 1.8e-3 off at t = 10.
+        let body = Body::default();
+        let x0 = state(&body, [0.001, 0.0, 0.9999995], [0.0, 0.0, 5.0]);
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let Motion::Nutation(nut) = &exact.motion else {
+            panic!("a nutation expected, got {:?}", exact.motion);
+        };
+        let theta_max = nut.u1.acos();
+        assert!((theta_max - 0.0012).abs() < 1e-4, "{theta_max}");
+        let d = distance(&exact.state_at(10.0), &dop853(&body, &x0, 10.0));
+        // The nutation's amplitude in gamma is 2e-4: 1e-9 shows that it is resolved.
+        assert!(d < 1e-9, "{d:e}");
+        // Negative control: the old verdict, a uniform rotation, is 1e-4 off.
+        let Motion::Nutation(_) = exact.motion else {
+            unreachable!()
+        };
+        let rate = exact.reduction.precession_rate(x0.gamma[2]);
+        let (s, c) = (10.0 * rate).sin_cos();
+        let g = x0.gamma;
+        let rotated = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
+        let steady_error = (0..3).fold(0.0_f64, |m, i| {
+            m.max((rotated[i] - dop853(&body, &x0, 10.0).gamma[i]).abs())
+        });
+        assert!(steady_error > 1e-5, "{steady_error:e}");
+    }
+
+    #[test]
+    fn regular_nutations_near_the_axis_are_solved_in_few_nodes() {
+        // Issue 14: the default case at tilts 0.02, 0.0357, 0.05, 0.1, 0.15 was refused as "near a
+        // separatrix" after seconds: the convergence test asked the series of dpsi/dsigma for a
+        // tail below 2e-14 |b0|, below the round-off floor of its samples (1.3e-14, with |b0| =
+        // 0.41 < |b1| = 0.50), and the DCT's own round-off grew with n. DOP853 shows a regular
+        // nutation, period 0.96858 at tilt 0.1.
+        let body = Body::default();
+        for theta in [0.02, 0.0357, 0.05, 0.1, 0.15] {
+            let x0 = state(&body, tilt(theta), [0.5, 0.2, 8.0]);
+            let exact = ExactSolution::new(&body, &x0).unwrap();
+            let Motion::Nutation(nut) = &exact.motion else {
+                panic!("tilt {theta}: a nutation expected");
+            };
+            assert!(nut.nodes <= 1024, "tilt {theta}: {} nodes", nut.nodes);
+            if theta == 0.1 {
+                assert!((nut.period - 0.96858).abs() < 1e-5, "{}", nut.period);
+            }
+            let d = distance(&exact.state_at(10.0), &dop853(&body, &x0, 10.0));
+            println!(
+                "tilt {theta}: T = {}, {} nodes, {d:.1e}",
+                nut.period, nut.nodes
+            );
+            assert!(d < 1e-9, "tilt {theta}: {d:e}");
+        }
+    }
+
+    #[test]
+    fn huge_times_are_refused_with_the_horizon() {
+        // Issue 10: `exact --t 1e300` printed a pinned state. The phase error grows like t times
+        // the period's error: beyond the horizon the state is refused.
+        let body = Body::default();
+        let x0 = state(&body, tilt(0.3), [0.5, 0.2, 8.0]);
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let horizon = exact.accuracy.horizon(routh::quadrature::Accuracy::REFUSAL);
+        assert!(horizon > 1e3 && horizon < 1e12, "{horizon:e}");
+        assert!(exact.accuracy.checked_error_at(0.5 * horizon).is_ok());
+        for t in [2.0 * horizon, 1e300, -1e300] {
+            assert!(matches!(
+                exact.accuracy.checked_error_at(t),
+                Err(RouthError::Horizon { .. })
+            ));
+        }
+    }
+
+    /// SplitMix64: a small deterministic generator for the property test.
+    struct Random(u64);
+
+    impl Random {
+        fn next(&mut self) -> f64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn between(&mut self, lo: f64, hi: f64) -> f64 {
+            lo + (hi - lo) * self.next()
+        }
+        fn unit(&mut self) -> [f64; 3] {
+            let z = self.between(-1.0, 1.0);
+            let phi = self.between(0.0, std::f64::consts::TAU);
+            let s = (1.0 - z * z).sqrt();
+            [s * phi.cos(), s * phi.sin(), z]
+        }
+    }
+
+    #[test]
+    fn exact_agrees_with_dop853_or_refuses_on_500_random_states() {
+        // 400 states: random bodies (gravity or not, centre of mass up or down), gamma uniform on
+        // the sphere, omega with components log-uniform from 0.03 to 30; 100 states within 1e-3
+        // of the top-heavy vertical spin, 50 above and 50 below Routh's threshold. All are
+        // regular values (none is steady or on a separatrix to round-off: those are decided by
+        // the tests above and in tests/quadrature.rs): at t = 10 the quadrature must solve every
+        // one and agree with DOP853 to 1e-8 (issue 14), and its error estimate must not be far
+        // below the measured error.
+        let mut rng = Random(20261123);
+        let mut cases = vec![];
+        for _ in 0..400 {
+            let radius = rng.between(0.5, 2.0);
+            let a = rng.between(-0.6, 0.6) * radius;
+            let i1 = rng.between(0.2, 1.0);
+            let i3 = rng.between(0.2, 1.9) * i1;
+            let gravity = if rng.next() < 0.25 { 0.0 } else { 9.81 };
+            let body = Body::new(
+                rng.between(0.5, 2.0),
+                radius,
+                a,
+                i1,
+                i1,
+                i3.min(2.0 * i1),
+                gravity,
+            )
+            .unwrap();
+            let size = 10f64.powf(rng.between(-1.5, 1.5));
+            let omega = rng.unit().map(|w| w * size);
+            cases.push((body, state(&body, rng.unit(), omega), "random"));
+        }
+        let body = Body::default();
+        let threshold = routh_threshold(&body, 1.0);
+        for i in 0..100 {
+            let spin = if i < 50 {
+                threshold * rng.between(1.01, 4.0)
+            } else {
+                threshold * rng.between(0.05, 0.99)
+            };
+            let offset = rng.unit().map(|v| v * 1e-3 * rng.next());
+            let gamma = [offset[0], offset[1], 1.0];
+            let omega = [
+                1e-3 * rng.between(-1.0, 1.0),
+                1e-3 * rng.between(-1.0, 1.0),
+                spin,
+            ];
+            let label = if i < 50 {
+                "above threshold"
+            } else {
+                "below threshold"
+            };
+            cases.push((body, state(&body, gamma, omega), label));
+        }
+        let (mut agreed, mut refused, mut worst, mut worst_ratio) = (0, vec![], 0.0_f64, 0.0_f64);
+        for (body, x0, label) in &cases {
+            let outcome = ExactSolution::new(body, x0).and_then(|exact| {
+                let estimate = exact.accuracy.checked_error_at(10.0)?;
+                Ok((exact.state_at(10.0), estimate))
+            });
+            match outcome {
+                Ok((q, estimate)) => {
+                    let d = distance(&q, &dop853(body, x0, 10.0));
+                    assert!(d < 1e-8, "{label}: {body:?} {x0:?}: {d:e}");
+                    // The estimate must not be below the error: checked on the 100 states near the
+                    // vertical spin, whose errors (up to 5e-10) stand above that of DOP853 at rtol
+                    // 1e-15 (about 1e-12; at rtol 1e-13 up to 4.6e-10 on the random states).
+                    if *label != "random" {
+                        let fine = distance(&q, &dop853_at(body, x0, 10.0, 1e-15));
+                        assert!(
+                            fine <= estimate + 1e-11,
+                            "{label}: {x0:?}: {fine:e} > estimate {estimate:e}"
+                        );
+                        if fine > 1e-11 {
+                            worst_ratio = worst_ratio.max(fine / estimate);
+                        }
+                    }
+                    worst = worst.max(d);
+                    agreed += 1;
+                }
+                Err(e) => {
+                    // A separatrix, a horizon, or a motion passing so near the axis (without
+                    // crossing it) that psi turns faster than 8192 nodes resolve.
+                    let axis = matches!(&e, RouthError::Singular { reason, .. } if reason.contains("axis"));
+                    assert!(
+                        axis || matches!(
+                            e,
+                            RouthError::Separatrix { .. } | RouthError::Horizon { .. }
+                        ),
+                        "{label}: {e}"
+                    );
+                    refused.push(format!("{label}: {e}"));
+                }
+            }
+        }
+        println!(
+            "agreed {agreed}, worst {worst:.1e}, worst measured/estimated near the vertical spin \
+         {worst_ratio:.2}; refused {}:",
+            refused.len()
+        );
+        for r in &refused {
+            println!("  {r}");
+        }
+        // Measured (seed 20261123): all 500 agree, worst 5.0e-10 (a state below the threshold);
+        // near the vertical spin the measured error is at most 0.18 of the estimate. Before the parameters of the poles (docs/quadrature.md, section 5) 8 of the 50
+        // below the threshold were refused with the horizon (estimated error at t = 10 of 1.1e-6
+        // to 1.1e-5) and 5 others agreed only to 1.4e-8 .. 2.0e-8: they pass within about 1e-5
+        // of the axis, where H1 and H3 (O(1) numbers) fixed the level set only to their round-off
+        // over the distance from the pole. Before the piecewise series (issue 14) 49 of these 50
+        // were refused as separatrices after seconds.
+        assert!(refused.is_empty(), "{refused:?}");
+        assert_eq!(agreed, 500);
+    }
+
+    #[test]
+    fn nutations_within_1e_10_to_1e_15_of_the_pole_agree_with_dop853() {
+        // A turning point 1e-13 from the pole with the spin 1.1 times Routh's threshold and a
+        // vertical omega was called steady and answered 1.4e-6 off DOP853 at t = 10 with an
+        // estimate of 8.8e-11: the search for the turning points stepped 1e-8 in u from a start at
+        // a turning point, over the whole nutation (1e-12 wide), and found none. Then the far half
+        // of such a nutation computed N (1e-13) in the other pole's frame, a difference of O(1)
+        // numbers, which put an error of eps / gap, 1e-3 rad at gap 1e-13, into the advance.
+        // Tilts sqrt(2 gap), gap 1e-10 .. 1e-15, at the pole with the centre of mass above it
+        // (spins 1.01, 1.1, 2 times its threshold) and at the one with it below (spins 1.1 and 2
+        // times the other pole's threshold), the body with a = 0.3 and its mirror a = -0.3, the
+        // horizontal omega 0 or +-theta: agreement with DOP853 at rtol 1e-15 to 1e-12 at t = 10
+        // (measured: at most 1.1e-15, the round-off of the state; DOP853 at rtol 1e-15 is within
+        // about 1e-14 of itself at rtol 3e-16 here), and the estimate not below the error beyond
+        // that floor.
+        let mut worst = 0.0_f64;
+        for a in [0.3, -0.3] {
+            let body = Body::new(1.0, 1.0, a, 0.4, 0.4, 0.5, 9.81).unwrap();
+            for pole in [1.0_f64, -1.0] {
+                let above = a * pole > 0.0;
+                let threshold = routh_threshold(&body, if above { pole } else { -pole });
+                let factors: &[f64] = if above {
+                    &[1.01, 1.1, 2.0]
+                } else {
+                    &[1.1, 2.0]
+                };
+                for &factor in factors {
+                    for gap in [1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15] {
+                        for side in [0.0, 1.0, -1.0] {
+                            let theta = (2.0_f64 * gap).sqrt();
+                            let gamma = [theta.sin(), 0.0, pole * theta.cos()];
+                            let spin = factor * threshold;
+                            let x0 = state(&body, gamma, [0.0, side * theta * spin, spin]);
+                            let label = format!("a {a} pole {pole} spin {factor} w_c gap {gap:e}");
+                            let exact = ExactSolution::new(&body, &x0).expect(&label);
+                            let Motion::Nutation(_) = &exact.motion else {
+                                panic!("{label}: a nutation expected, got {:?}", exact.motion);
+                            };
+                            let estimate = exact.accuracy.checked_error_at(10.0).expect(&label);
+                            let reference = dop853_at(&body, &x0, 10.0, 1e-15);
+                            let d = distance(&exact.state_at(10.0), &reference);
+                            assert!(d < 1e-12, "{label}: {d:e}");
+                            assert!(d <= estimate + 1e-14, "{label}: {d:e} > {estimate:e}");
+                            worst = worst.max(d);
+                            // Negative control: the old verdict, a uniform rotation at the
+                            // precession rate of the start, is far off.
+                            let rate = exact.reduction.precession_rate(x0.gamma[2]);
+                            let (s, c) = (10.0 * rate).sin_cos();
+                            let g = x0.gamma;
+                            let turned = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
+                            let steady_error = (0..3).fold(0.0_f64, |m, i| {
+                                m.max((turned[i] - reference.gamma[i]).abs())
+                            });
+                            assert!(
+                                steady_error > 1e3 * d.max(1e-15),
+                                "{label}: {steady_error:e}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        println!("worst {worst:.1e}");
+    }
+}
+
+mod exact_sweep {
+    //! Issue 14, "What it must show": the quadrature solves every regular motion of a sweep of
+    //! initial conditions and agrees with DOP853 at t = 10 to 1e-8 (a subset of 240 of the 2,000
+    //! cases of `benches/exact_sweep.rs`, with the same generator).
+
+    use crate::sweep_cases as exact_sweep;
+
+    use exact_sweep::{cases, distance, dop853, quadrature, Outcome, AGREEMENT, T};
+
+    #[test]
+    fn sweep_of_240_initial_conditions_is_solved_and_agrees_with_dop853() {
+        let (mut worst, mut separatrices, mut refused) = (0.0_f64, vec![], vec![]);
+        for case in cases(240, 14) {
+            match quadrature(&case) {
+                Outcome::Solved(state) => {
+                    let d = distance(&state, &dop853(&case, T));
+                    assert!(d < AGREEMENT, "{case:?}: {d:e}");
+                    worst = worst.max(d);
+                }
+                Outcome::Separatrix(reason) => separatrices.push(format!("{case:?}: {reason}")),
+                Outcome::Refused(reason) => refused.push(format!("{case:?}: {reason}")),
+            }
+        }
+        println!("worst {worst:.1e}; separatrices {separatrices:?}; refused {refused:?}");
+        // A random initial condition lands on a separatrix (a set of measure zero) with
+        // probability zero: no case may be refused, for any reason.
+        assert!(separatrices.is_empty() && refused.is_empty());
+    }
+}
+
+mod quadrature {
+    //! The exact solution by quadrature against the DOP853 integrator, the nutation period
+    //! against the integrator's events, and the degenerate cases.
+
+    // The DOP853 reference of the sweep of issue 14.
+    #[allow(dead_code)]
+    use crate::sweep_cases as exact_sweep;
+
+    use exact_sweep::dop853_at;
+    use routh::body::Body;
+    use routh::case::Case;
+    use routh::field::vector_field;
+    use routh::integrate::{solve, Options, Stop};
+    use routh::quadrature::{ExactSolution, Motion, Reduction};
+    use routh::state::{Normalise, State};
+    use routh::RouthError;
+    use std::f64::consts::PI;
+
+    /// Largest difference of the components of two states, relative to the size of each half.
+    fn distance(a: &State, b: &State) -> f64 {
+        let rel = |x: &[f64; 3], y: &[f64; 3]| {
+            let scale = x.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(1e-300);
+            x.iter()
+                .zip(y)
+                .fold(0.0_f64, |m, (p, q)| m.max((p - q).abs()))
+                / scale
+        };
+        rel(&a.gamma, &b.gamma).max(rel(&a.m, &b.m))
+    }
+
+    fn default_case() -> (Body, State) {
+        let case = Case::default_case().unwrap();
+        (case.body("").unwrap(), case.initial)
+    }
+
+    #[test]
+    fn state_at_zero_is_the_initial_state() {
+        let (body, x0) = default_case();
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let d = distance(&exact.state_at(0.0), &x0);
+        assert!(d < 1e-12, "{d:e}");
+    }
+
+    /// The test cases: the default case and four others.
+    fn cases() -> Vec<(&'static str, Body, State)> {
+        let (body, x0) = default_case();
+        let tilted = |theta: f64, phi: f64| {
+            let (s, c) = theta.sin_cos();
+            [s * phi.cos(), s * phi.sin(), c]
+        };
+        let state = |body: &Body, gamma, omega| {
+            State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
+        };
+        let bottom = Body::new(2.0, 0.5, 0.1, 0.05, 0.05, 0.08, 9.81).unwrap();
+        let free = Body::new(1.0, 1.0, 0.2, 0.6, 0.6, 0.8, 0.0).unwrap();
+        let flipped = Body::new(1.5, 1.0, -0.25, 0.5, 0.5, 0.4, 9.81).unwrap();
+        vec![
+            ("default: top-heavy, tilt 0.3, gravity", body, x0),
+            (
+                "small tilt 0.05, centre of mass below, gravity",
+                bottom,
+                state(&bottom, tilted(PI - 0.05, 0.4), [0.3, -0.1, 3.0]),
+            ),
+            (
+                "large tilt 1.3, no gravity",
+                free,
+                state(&free, tilted(1.3, -1.0), [1.0, 0.5, 4.0]),
+            ),
+            (
+                "large tilt 2.0, a < 0 (centre of mass above at gamma3 < 0), gravity",
+                flipped,
+                state(&flipped, tilted(2.0, 2.5), [2.0, -1.0, 6.0]),
+            ),
+            (
+                "small tilt 0.1, top-heavy, slow spin below Routh's threshold",
+                body,
+                state(&body, tilted(0.1, 0.0), [0.2, 0.0, 1.5]),
+            ),
+        ]
+    }
+
+    #[test]
+    fn quadrature_agrees_with_dop853_at_10_periods_and_t_1000() {
+        for (name, body, x0) in cases() {
+            let exact = ExactSolution::new(&body, &x0).unwrap();
+            let period = exact.period().expect("a nutation");
+            // At 10 periods DOP853 at rtol = 1e-13 is accurate to well below 1e-9.
+            let d10 = distance(
+                &exact.state_at(10.0 * period),
+                &dop853_at(&body, &x0, 10.0 * period, 1e-13),
+            );
+            // At t = 1000 (hundreds of periods) the integrator's own global error at rtol = 1e-13
+            // reaches 2e-9 to 1e-7 (the last case passes near the unstable vertical spin); it
+            // falls steadily with rtol toward the quadrature (1e-7, 9e-9, 1.1e-9, 6.9e-10 at
+            // rtol = 1e-13, 1e-14, 1e-15, 5e-16 for that case; docs/quadrature.md), so the 1e-9
+            // comparison uses rtol = 5e-16.
+            let d1000 = distance(
+                &exact.state_at(1000.0),
+                &dop853_at(&body, &x0, 1000.0, 5e-16),
+            );
+            println!("{name}: T = {period}, at 10 T: {d10:.2e}, at t = 1000: {d1000:.2e}");
+            assert!(d10 < 1e-9, "{name}: {d10:e}");
+            assert!(d1000 < 1e-9, "{name}: {d1000:e}");
+        }
+    }
+
+    #[test]
+    fn wrong_integrals_disagree_with_dop853() {
+        // Negative control: the same comparison fails for a quadrature of a perturbed state.
+        let (body, x0) = default_case();
+        let mut perturbed = x0;
+        perturbed.m[2] *= 1.0 + 1e-7;
+        let exact = ExactSolution::new(&body, &perturbed).unwrap();
+        let d = distance(&exact.state_at(100.0), &dop853_at(&body, &x0, 100.0, 1e-13));
+        assert!(d > 1e-7, "{d:e}");
+    }
+
+    #[test]
+    fn reduced_equation_matches_the_field() {
+        // Q(u0) = (du/dt)^2 and the precession rate from the field at the initial states.
+        for (name, body, x0) in cases() {
+            let red = Reduction::of_state(&body, &x0).unwrap();
+            let x = x0.to_array();
+            let f = vector_field(&body, &x);
+            let u = x[2];
+            let q = red.q(u);
+            assert!(
+                (q - f[2] * f[2]).abs() < 1e-12 * red.q_scale(u),
+                "{name}: {q} vs {}",
+                f[2] * f[2]
+            );
+            let psi_dot = (x[0] * f[1] - x[1] * f[0]) / (x[0] * x[0] + x[1] * x[1]);
+            let rate = red.precession_rate(u);
+            assert!(
+                (psi_dot - rate).abs() < 1e-12 * rate.abs().max(1.0),
+                "{name}: {psi_dot} vs {rate}"
+            );
+        }
+    }
+
+    /// The time between successive zeros of d gamma3/dt located by DOP853 (rtol = 1e-13).
+    fn event_times(body: &Body, x0: &State, count: usize) -> Vec<f64> {
+        let opts = Options {
+            rtol: 1e-13,
+            atol: 1e-15,
+            ..Options::default()
+        };
+        let field = |_t: f64, x: &[f64; 6]| vector_field(body, x);
+        let tilt_rate = |_t: f64, x: &[f64; 6]| vector_field(body, x)[2];
+        let (mut t, mut y) = (0.0, x0.to_array());
+        let mut times = vec![];
+        while times.len() < count {
+            // Leave the previous event behind before looking for the next one.
+            if !times.is_empty() {
+                (_, y, t, _) =
+                    solve(&field, t, y, t + 1e-3, &opts, None, None, &mut |_, _| {}).unwrap();
+            }
+            let (stop, ye, te, _) = solve(
+                &field,
+                t,
+                y,
+                t + 1e3,
+                &opts,
+                None,
+                Some(&tilt_rate),
+                &mut |_, _| {},
+            )
+            .unwrap();
+            assert!(matches!(stop, Stop::Event { .. }));
+            times.push(te);
+            (t, y) = (te, ye);
+        }
+        times
+    }
+
+    #[test]
+    fn period_equals_time_between_turning_point_events() {
+        for (name, body, x0) in cases() {
+            let period = ExactSolution::new(&body, &x0).unwrap().period().unwrap();
+            let times = event_times(&body, &x0, 5);
+            for w in times.windows(3) {
+                // Events alternate between the two turning points: two of them per period.
+                let rel = ((w[2] - w[0]) - period).abs() / period;
+                println!(
+                    "{name}: T = {period}, events {:.16}: {rel:.2e}",
+                    w[2] - w[0]
+                );
+                assert!(rel < 1e-10, "{name}: {rel:e}");
+            }
+            // Negative control: the time between consecutive events is half a period.
+            assert!(((times[1] - times[0]) - period).abs() > 0.1 * period);
+        }
+    }
+
+    #[test]
+    fn steady_motion_is_a_rotation_about_the_axis() {
+        // A steady precession (double root of Q) from the stationary motions: reported as steady,
+        // and its uniform rotation agrees with the integrator.
+        let body = Body::default();
+        let steady = routh::steady::steady_precessions(&body, 1.0, 8.0).unwrap()[0];
+        let exact = ExactSolution::new(&body, &steady.state).unwrap();
+        assert!(matches!(exact.motion, Motion::Steady { .. }));
+        assert_eq!(exact.period(), None);
+        let (u1, u2) = exact.turning_points();
+        assert_eq!(u1, u2);
+        let d = distance(
+            &exact.state_at(20.0),
+            &dop853_at(&body, &steady.state, 20.0, 1e-13),
+        );
+        assert!(d < 1e-9, "{d:e}");
+    }
+
+    #[test]
+    fn sleeping_top_on_the_axis_is_steady_even_when_unstable() {
+        // gamma = e3 with omega along e3: the angle psi is undefined; the state is an equilibrium
+        // of (mg-eq), whether above Routh's threshold or below it.
+        let body = Body::default();
+        for spin in [1.0, 8.0] {
+            let x0 = State::from_omega(&body, [0.0, 0.0, 1.0], [0.0, 0.0, spin], Normalise::Reject)
+                .unwrap();
+            let exact = ExactSolution::new(&body, &x0).unwrap();
+            assert!(matches!(exact.motion, Motion::Steady { u, .. } if u == 1.0));
+            assert_eq!(exact.state_at(123.4), x0);
+        }
+    }
+
+    #[test]
+    fn motion_through_the_axis_agrees_with_dop853() {
+        // gamma = e3 with a horizontal angular velocity: the nutation reaches the pole, where sin
+        // theta = 0 and psi is undefined, once per period; the reconstruction stays finite and
+        // smooth through it.
+        let body = Body::default();
+        let x0 =
+            State::from_omega(&body, [0.0, 0.0, 1.0], [0.4, 0.1, 8.0], Normalise::Reject).unwrap();
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let Motion::Nutation(nut) = &exact.motion else {
+            panic!("a nutation expected");
+        };
+        assert!(nut.through_top && nut.u2 == 1.0);
+        assert!(distance(&exact.state_at(0.0), &x0) < 1e-13);
+        for t in [0.3, nut.period, 10.0 * nut.period + 0.1, 100.0] {
+            let q = exact.state_at(t);
+            assert!(q.gamma.iter().chain(&q.m).all(|v| v.is_finite()));
+            let d = distance(&q, &dop853_at(&body, &x0, t, 1e-13));
+            println!("through the axis, t = {t}: {d:.2e}");
+            assert!(d < 1e-8, "t = {t}: {d:e}");
+        }
+    }
+
+    /// A point on the homoclinic orbit of the unstable vertical spin at `spin` (below Routh's
+    /// threshold), at `gamma3 = u`: the same integrals, omega_n from `(du/dt)^2 = Q(u)`.
+    fn on_separatrix(body: &Body, spin: f64, u: f64) -> State {
+        let top = routh::steady::vertical_spin_state(body, 1.0, spin).unwrap();
+        let red = Reduction::of_state(body, &top).unwrap();
+        let s = (1.0 - u * u).sqrt();
+        let q = red.q(u);
+        assert!(q > 0.0);
+        let (gamma, omega) = red.omega(u, s, 0.0, q.sqrt() / s, red.jellett_quotient(u));
+        State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
+    }
+
+    #[test]
+    fn separatrix_is_reported_not_nan() {
+        let body = Body::default();
+        let spin = 0.5 * routh::steady::routh_threshold(&body, 1.0);
+        let x0 = on_separatrix(&body, spin, 0.9);
+        match ExactSolution::new(&body, &x0) {
+            Err(RouthError::Separatrix { u_max, reason, .. }) => {
+                assert!(u_max > 0.999, "{u_max}");
+                assert!(reason.contains("double root") || reason.contains("separatrix"));
+            }
+            other => panic!("expected a separatrix error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn near_separatrix_has_a_long_period_that_still_agrees() {
+        // Negative control of the separatrix detection: slightly off the homoclinic orbit the
+        // period is long but finite, and the quadrature still agrees with the integrator.
+        let body = Body::default();
+        let spin = 0.5 * routh::steady::routh_threshold(&body, 1.0);
+        let mut x0 = on_separatrix(&body, spin, 0.9);
+        x0.m[0] *= 1.2;
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let period = exact.period().unwrap();
+        let separated = ExactSolution::new(&body, &on_separatrix(&body, spin, 0.5));
+        assert!(separated.is_err());
+        let d = distance(
+            &exact.state_at(period),
+            &dop853_at(&body, &x0, period, 1e-13),
+        );
+        println!("near the separatrix: T = {period}, {d:.2e}");
+        assert!(d < 1e-8, "{d:e}");
+    }
+
+    #[test]
+    fn asymmetric_body_is_refused() {
+        let body = Body::new(1.0, 1.0, 0.3, 0.4, 0.45, 0.5, 9.81).unwrap();
+        let x0 =
+            State::from_omega(&body, [0.0, 0.6, 0.8], [0.1, 0.2, 3.0], Normalise::Reject).unwrap();
+        assert!(matches!(
+            ExactSolution::new(&body, &x0),
+            Err(RouthError::NotSymmetric { .. })
+        ));
+    }
+
+    #[test]
+    fn negative_times_agree_with_backward_integration() {
+        for (name, body, x0) in cases() {
+            let exact = ExactSolution::new(&body, &x0).unwrap();
+            let d = distance(&exact.state_at(-7.3), &dop853_at(&body, &x0, -7.3, 1e-13));
+            assert!(d < 1e-10, "{name}: {d:e}");
+        }
+    }
+
+    #[test]
+    fn period_agrees_with_gauss_legendre_in_the_substituted_variable() {
+        // An independent rule for T = 2 int_0^pi (du/dsigma) / sqrt(Q(u(sigma))) dsigma, with Q
+        // itself (no divided differences): Gauss-Legendre on [0, pi], 100 and 200 nodes. Q loses
+        // digits near the turning points, so agreement to 1e-9 is what this rule can show.
+        use routh::quadrature::gauss::GaussLegendre;
+        for (name, body, x0) in cases() {
+            let exact = ExactSolution::new(&body, &x0).unwrap();
+            let Motion::Nutation(nut) = &exact.motion else {
+                panic!("{name}: a nutation expected");
+            };
+            let half = 0.5 * (nut.u2 - nut.u1);
+            let mid = 0.5 * (nut.u2 + nut.u1);
+            let period = |n: usize| {
+                let integrand = |x: f64| {
+                    let sigma = std::f64::consts::PI * x;
+                    let q = exact.reduction.q(mid - half * sigma.cos());
+                    half * sigma.sin() / q.sqrt()
+                };
+                2.0 * std::f64::consts::PI * GaussLegendre::new(n).integrate(integrand)
+            };
+            let (t100, t200) = (period(100), period(200));
+            let rel = (t200 - nut.period).abs() / nut.period;
+            // This rule evaluates Q itself near the turning points, where it is a small difference
+            // of larger terms, so the rule has an error of its own: its change from 100 to 200
+            // nodes (9e-10 on the small-tilt case, 1e-10 or less on the others). T must agree
+            // within 1e-9 or within four times that change, whichever is larger.
+            let allowed = 1e-9_f64.max(4.0 * (t200 - t100).abs() / nut.period);
+            println!(
+                "{name}: T = {}, Gauss-Legendre {t100} {t200}: {rel:.1e} (allowed {allowed:.1e})",
+                nut.period
+            );
+            assert!(rel < allowed, "{name}: {rel:e}");
+        }
+    }
+}
+
+mod quadrature_reference {
+    //! The exact solution by quadrature against stored numbers of an earlier version: a change
+    //! that only reorganises the arithmetic (hoisting, fewer automatic-differentiation passes)
+    //! must leave the nutation period and the advance per period equal to round-off, the error
+    //! estimates nearly equal, and the same decisions (steady, nutation, which refusal).
+    //!
+    //! The data file `tests/data/quadrature_reference.csv` was written by this test in its write
+    //! mode on commit 1276152 (before the quadrature was made cheaper, issue 13, and before the
+    //! field was written with exact identities, issue 12):
+    //! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test quadrature quadrature_reference`.
+
+    // Only the generator of the states is used here.
+    #[allow(dead_code)]
+    use crate::sweep_cases as exact_sweep;
+
+    use routh::body::Body;
+    use routh::quadrature::{ExactSolution, Motion, Reduction};
+    use routh::state::{Normalise, State};
+    use routh::steady::{routh_threshold, steady_precessions, vertical_spin_state};
+    use routh::RouthError;
+
+    const DATA: &str = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/quadrature_reference.csv"
+    );
+
+    /// The period and the advance must agree to this, relative (the advance relative to
+    /// `max(|advance|, 1)`): both are sums of a few hundred samples, each a short chain of
+    /// operations of relative round-off a few eps; reordering that arithmetic moves them by a
+    /// few eps times the condition of the sums, measured below 1e-15, so 1e-13 leaves a margin of
+    /// 100 and still catches any change of what is computed (the negative control moves the
+    /// state by 1e-11 and is seen).
+    const AGREEMENT: f64 = 1e-13;
+    /// The error estimates must agree to this, relative: the sensitivity estimate is the
+    /// difference of two solutions of level sets 1e4 round-offs apart, about 1e-12 relative, so a
+    /// round-off change of 1e-16 in each moves it by 1e-4 relative.
+    const ESTIMATE_AGREEMENT: f64 = 1e-2;
+    /// Estimates below this (relative accuracies under 64 eps) are the round-off of the field
+    /// itself, e.g. the residual of a steady precession, which any rewrite of the field's formula
+    /// moves by O(1) of itself (the exact identities of issue 12 moved one from 2.49e-17 to
+    /// 2.43e-17): their differences are taken relative to this floor.
+    const ESTIMATE_FLOOR: f64 = 64.0 * f64::EPSILON;
+
+    fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {
+        State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
+    }
+
+    /// The states: 200 of issue 14's sweep (random bodies, tilts over (0, pi), spins 0.1 to 30,
+    /// gravity on and off, centre of mass up and down); 60 near the poles (turning points
+    /// 1e-6 .. 1e-15 from either pole, above and below Routh's threshold); 48 near the
+    /// separatrix of the unstable vertical spin (on it, and 10^-12 .. 10^-1 off it); 48 near
+    /// steady precessions (on them, and 10^-13 .. 10^-2 off them).
+    fn states() -> Vec<(String, Body, State)> {
+        let mut out: Vec<(String, Body, State)> = exact_sweep::cases(200, 13)
+            .into_iter()
+            .enumerate()
+            .map(|(i, c)| (format!("sweep {i}"), c.body, c.state))
+            .collect();
+        for a in [0.3, -0.3] {
+            let body = Body::new(1.0, 1.0, a, 0.4, 0.4, 0.5, 9.81).unwrap();
+            for pole in [1.0_f64, -1.0] {
+                let threshold = routh_threshold(&body, if a * pole > 0.0 { pole } else { -pole });
+                for factor in [0.5, 1.1, 3.0] {
+                    for gap in [1e-6, 1e-9, 1e-12, 1e-14, 1e-15] {
+                        let theta = (2.0_f64 * gap).sqrt();
+                        let spin = factor * threshold.max(1.0);
+                        let gamma = [theta.sin(), 0.0, pole * theta.cos()];
+                        out.push((
+                            format!("pole a {a} p {pole} spin {factor} gap {gap:e}"),
+                            body,
+                            state(&body, gamma, [0.0, theta * spin, spin]),
+                        ));
+                    }
+                }
+            }
+        }
+        let body = Body::default();
+        for factor in [0.3, 0.5, 0.8] {
+            let spin = factor * routh_threshold(&body, 1.0);
+            let top = vertical_spin_state(&body, 1.0, spin).unwrap();
+            let red = Reduction::of_state(&body, &top).unwrap();
+            for u in [0.9_f64, 0.5, -0.2, -0.7] {
+                let q = red.q(u);
+                if q <= 0.0 {
+                    continue;
+                }
+                let s = (1.0 - u * u).sqrt();
+                let (gamma, omega) = red.omega(u, s, 0.0, q.sqrt() / s, red.jellett_quotient(u));
+                let on = state(&body, gamma, omega);
+                for off in [0.0, 1e-12, 1e-8, 1e-4, 1e-1] {
+                    let mut x = on;
+                    x.m[0] *= 1.0 + off;
+                    out.push((format!("separatrix spin {spin} u {u} off {off:e}"), body, x));
+                }
+            }
+        }
+        for (theta, spin) in [(0.3, 8.0), (1.0, 8.0), (1.3, 5.0), (2.5, 6.0)] {
+            for (k, p) in steady_precessions(&body, theta, spin)
+                .unwrap()
+                .into_iter()
+                .enumerate()
+            {
+                for off in [0.0, 1e-13, 1e-10, 1e-7, 1e-4, 1e-2] {
+                    let mut x = p.state;
+                    x.m[0] += off * (1.0 + x.m[0].abs());
+                    out.push((format!("steady {theta} {spin} {k} off {off:e}"), body, x));
+                }
+            }
+        }
+        out
+    }
+
+    /// What the quadrature gives for one state, as one line of the data file.
+    fn outcome(body: &Body, x: &State) -> String {
+        match ExactSolution::new(body, x) {
+            Ok(exact) => match &exact.motion {
+                Motion::Nutation(n) => format!(
+                    "nutation,{:e},{:e},{:e},{:e}",
+                    n.period, n.advance, n.period_error, n.advance_error
+                ),
+                Motion::Steady { precession, .. } => {
+                    format!("steady,{precession:e},0,{:e},0", exact.accuracy.initial)
+                }
+            },
+            Err(e) => {
+                let kind = match e {
+                    RouthError::Separatrix { .. } => "separatrix",
+                    RouthError::Singular { .. } => "singular",
+                    _ => "other",
+                };
+                format!("{kind},0,0,0,0")
+            }
+        }
+    }
+
+    /// The fields of a line: kind and four numbers.
+    fn parse(line: &str) -> (String, [f64; 4]) {
+        let mut fields = line.split(',');
+        let kind = fields.next().unwrap().to_string();
+        let numbers = std::array::from_fn(|_| fields.next().unwrap().parse().unwrap());
+        (kind, numbers)
+    }
+
+    /// Relative differences of (value 1, value 2) and of the two estimates between two lines.
+    fn differences(a: [f64; 4], b: [f64; 4]) -> ([f64; 2], [f64; 2]) {
+        let rel = |x: f64, y: f64, floor: f64| (x - y).abs() / x.abs().max(y.abs()).max(floor);
+        (
+            [rel(a[0], b[0], f64::MIN_POSITIVE), rel(a[1], b[1], 1.0)],
+            [
+                rel(a[2], b[2], ESTIMATE_FLOOR),
+                rel(a[3], b[3], ESTIMATE_FLOOR),
+            ],
+        )
+    }
+
+    #[test]
+    fn exact_solution_equals_the_stored_one_to_round_off() {
+        let states = states();
+        let lines: Vec<String> = states.iter().map(|(_, b, x)| outcome(b, x)).collect();
+        if std::env::var_os("ROUTH_WRITE_QUADRATURE_REFERENCE").is_some() {
+            std::fs::write(DATA, lines.join("\n") + "\n").unwrap();
+            return;
+        }
+        let data = std::fs::read_to_string(DATA).expect(DATA);
+        let stored: Vec<&str> = data.lines().collect();
+        assert_eq!(stored.len(), states.len());
+        let (mut worst, mut worst_estimate) = (0.0_f64, 0.0_f64);
+        let mut kinds = std::collections::BTreeMap::new();
+        for ((label, _, _), (line, old)) in states.iter().zip(lines.iter().zip(&stored)) {
+            let (kind, new) = parse(line);
+            let (old_kind, old) = parse(old);
+            assert_eq!(kind, old_kind, "{label}: {line} against {old:?}");
+            *kinds.entry(kind).or_insert(0) += 1;
+            let (values, estimates) = differences(new, old);
+            for d in values {
+                assert!(d <= AGREEMENT, "{label}: {line} against {old:?}: {d:e}");
+                worst = worst.max(d);
+            }
+            for d in estimates {
+                assert!(
+                    d <= ESTIMATE_AGREEMENT,
+                    "{label}: estimates {line} against {old:?}: {d:e}"
+                );
+                worst_estimate = worst_estimate.max(d);
+            }
+        }
+        println!(
+            "{} states {kinds:?}: worst relative difference {worst:.1e}, of the estimates \
+         {worst_estimate:.1e}",
+            states.len()
+        );
+        // The data must hold every kind of decision, or the comparison of refusals is empty.
+        for kind in ["nutation", "steady", "separatrix"] {
+            assert!(
+                kinds.get(kind).copied().unwrap_or(0) > 0,
+                "{kind}: {kinds:?}"
+            );
+        }
+        // Negative control: states moved by 1e-11 relative (the momentum) change the period or
+        // the advance by more than AGREEMENT against the stored numbers.
+        let moved = states
+            .iter()
+            .zip(&stored)
+            .take(20)
+            .filter(|(_, old)| old.starts_with("nutation"))
+            .filter(|((_, body, x), old)| {
+                let mut x = *x;
+                x.m = x.m.map(|m| m * (1.0 + 1e-11));
+                let (_, new) = parse(&outcome(body, &x));
+                let (values, _) = differences(new, parse(old).1);
+                values[0].max(values[1]) > AGREEMENT
+            })
+            .count();
+        assert!(moved >= 10, "only {moved} of 20 moved states seen");
+    }
+}
