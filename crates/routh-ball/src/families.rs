@@ -5,6 +5,7 @@
 //! `generated_kernels_are_up_to_date` checks that the file is what it would write.
 
 use crate::ball::Ball;
+use crate::kernels::BallKernels;
 use crate::simulate::ReducedSystem;
 use routh_integrate::taylor::{codegen, Tape};
 
@@ -40,37 +41,21 @@ pub fn families() -> Vec<(&'static str, Ball)> {
 /// The source of `kernels.rs`: the kernels of the tapes of [`families`] as the type
 /// `BallKernels`.
 pub fn kernels_source() -> String {
-    let tapes: Vec<(&str, Tape<6>)> = families()
+    source_of(families())
+}
+
+/// The source of the kernels of `families`' tapes, recorded through the generic field (the
+/// generator reads the tapes' code, never the kernel a tape found).
+fn source_of(families: Vec<(&'static str, Ball)>) -> String {
+    let tapes: Vec<(&str, Tape<6, f64, BallKernels>)> = families
         .into_iter()
-        .map(|(name, ball)| (name, interpreted_tape(&ball)))
+        .map(|(name, ball)| {
+            let tape = Tape::record(&ReducedSystem(&ball), 2).expect("the reduced field records");
+            (name, tape)
+        })
         .collect();
-    let named: Vec<(&str, &Tape<6>)> = tapes.iter().map(|(name, tape)| (*name, tape)).collect();
+    let named: Vec<_> = tapes.iter().map(|(name, tape)| (*name, tape)).collect();
     codegen::source("BallKernels", &named, REGENERATE)
-}
-
-/// The tape of the reduced field of `ball`, recorded without looking for a kernel (the
-/// generator must not depend on the kernels it writes).
-fn interpreted_tape(ball: &Ball) -> Tape<6> {
-    Tape::record(&Interpreted(ReducedSystem(ball)), 2).expect("the reduced field records")
-}
-
-/// A system recorded as `S` is, with no generated kernels.
-struct Interpreted<S>(S);
-
-impl<S: routh_integrate::OdeSystem<6>> routh_integrate::OdeSystem<6> for Interpreted<S> {
-    type Kernels = routh_integrate::taylor::Interpreted;
-
-    fn rhs(&self, t: f64, y: &[f64; 6]) -> [f64; 6] {
-        self.0.rhs(t, y)
-    }
-
-    fn record(
-        &self,
-        t: routh_integrate::taylor::Var,
-        y: &[routh_integrate::taylor::Var; 6],
-    ) -> Option<[routh_integrate::taylor::Var; 6]> {
-        self.0.record(t, y)
-    }
 }
 
 #[cfg(test)]
@@ -95,14 +80,7 @@ mod tests {
             checked_in == generated,
             "{KERNELS} is out of date: rewrite it with `{REGENERATE}`"
         );
-        let mut tapes: Vec<(&str, Tape<6>)> = families()
-            .into_iter()
-            .map(|(name, ball)| (name, super::interpreted_tape(&ball)))
-            .collect();
-        tapes.remove(0);
-        let named: Vec<_> = tapes.iter().map(|(name, tape)| (*name, tape)).collect();
-        let without_one =
-            routh_integrate::taylor::codegen::source("BallKernels", &named, REGENERATE);
+        let without_one = super::source_of(families().split_off(1));
         assert_ne!(without_one, checked_in);
     }
 
