@@ -55,7 +55,7 @@ rolling_methods!(PyBall {
     /// The centre of mass relative to the geometric centre, body frame.
     #[getter]
     fn com(&self) -> (f64, f64, f64) {
-        let [x, y, z] = self.inner.com;
+        let [x, y, z] = self.inner.com();
         (x, y, z)
     }
 
@@ -71,15 +71,16 @@ rolling_methods!(PyBall {
 
     pub fn __repr__(&self) -> String {
         let b = &self.inner;
+        let ([i1, i2, i3], [x, y, z]) = (b.inertia(), b.com());
         format!(
             "Ball(m={:?}, R={:?}, I1={:?}, I2={:?}, I3={:?}, com={:?}, G={:?})",
-            b.m,
-            b.radius,
-            b.inertia[0],
-            b.inertia[1],
-            b.inertia[2],
-            (b.com[0], b.com[1], b.com[2]),
-            b.gravity
+            b.m(),
+            b.radius(),
+            i1,
+            i2,
+            i3,
+            (x, y, z),
+            b.gravity()
         )
     }
 
@@ -88,15 +89,8 @@ rolling_methods!(PyBall {
         slf: &Bound<'py, Self>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let b = slf.get().inner;
-        let args = (
-            b.m,
-            b.radius,
-            b.inertia[0],
-            b.inertia[1],
-            b.inertia[2],
-            (b.com[0], b.com[1], b.com[2]),
-            b.gravity,
-        );
+        let ([i1, i2, i3], [x, y, z]) = (b.inertia(), b.com());
+        let args = (b.m(), b.radius(), i1, i2, i3, (x, y, z), b.gravity());
         Ok((slf.get_type().into_any(), args.into_pyobject(slf.py())?))
     }
 

@@ -121,37 +121,37 @@ macro_rules! rolling_methods {
             /// Mass m.
             #[getter]
             fn m(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).m
+                routh_core::ball::AsBall::ball(&self.inner).m()
             }
 
             /// Radius R.
             #[getter(R)]
             fn radius(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).radius
+                routh_core::ball::AsBall::ball(&self.inner).radius()
             }
 
             /// Principal moment I1 about the centre of mass.
             #[getter(I1)]
             fn i1(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).inertia[0]
+                routh_core::ball::AsBall::ball(&self.inner).inertia()[0]
             }
 
             /// Principal moment I2 about the centre of mass.
             #[getter(I2)]
             fn i2(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).inertia[1]
+                routh_core::ball::AsBall::ball(&self.inner).inertia()[1]
             }
 
             /// Principal moment I3 about the centre of mass (the symmetry axis e3 of a `Body`).
             #[getter(I3)]
             fn i3(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).inertia[2]
+                routh_core::ball::AsBall::ball(&self.inner).inertia()[2]
             }
 
             /// Gravitational acceleration G.
             #[getter(G)]
             fn gravity(&self) -> f64 {
-                routh_core::ball::AsBall::ball(&self.inner).gravity
+                routh_core::ball::AsBall::ball(&self.inner).gravity()
             }
 
             fn __eq__(&self, other: &Self) -> bool {
@@ -210,7 +210,7 @@ rolling_methods!(PyBody {
     /// Offset a of the centre of mass (the centre of mass is at `-a e3`).
     #[getter]
     fn a(&self) -> f64 {
-        self.inner.a
+        self.inner.a()
     }
 
     /// Whether the body is the Routh sphere (I1 = I2): the exact solution, the steady motions
@@ -224,7 +224,7 @@ rolling_methods!(PyBody {
         let b = &self.inner;
         format!(
             "Body(m={:?}, R={:?}, a={:?}, I1={:?}, I3={:?}, G={:?}, I2={:?})",
-            b.m, b.radius, b.a, b.i1, b.i3, b.gravity, b.i2
+            b.m(), b.radius(), b.a(), b.i1(), b.i3(), b.gravity(), b.i2()
         )
     }
 
@@ -233,7 +233,7 @@ rolling_methods!(PyBody {
         slf: &Bound<'py, Self>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let b = slf.get().inner;
-        let args = (b.m, b.radius, b.a, b.i1, b.i3, b.gravity, b.i2);
+        let args = (b.m(), b.radius(), b.a(), b.i1(), b.i3(), b.gravity(), b.i2());
         Ok((slf.get_type().into_any(), args.into_pyobject(slf.py())?))
     }
 

@@ -24,24 +24,26 @@ use serde::Serialize;
 /// computed by a short formula land inside it, a physically different body does not.
 pub const MODEL_TOLERANCE: f64 = 1e-12;
 
-/// Parameters of the general unbalanced ball.
+/// Parameters of the general unbalanced ball. The fields are private: a value is built by
+/// [`Ball::new`] (or [`Ball::without_gravity`] of a valid ball), so that every ball satisfies
+/// the rules.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Ball {
     /// Mass m > 0.
-    pub m: f64,
+    m: f64,
     /// Radius R > 0.
     #[serde(rename = "R")]
-    pub radius: f64,
+    radius: f64,
     /// Principal moments (I1, I2, I3) about the centre of mass, each > 0, satisfying the
     /// triangle inequalities.
     #[serde(rename = "I")]
-    pub inertia: [f64; 3],
+    inertia: [f64; 3],
     /// Position of the centre of mass relative to the geometric centre, body frame,
     /// `|com| < R`.
-    pub com: [f64; 3],
+    com: [f64; 3],
     /// Gravitational acceleration G >= 0 (0: the free rolling of (m-eq)).
     #[serde(rename = "G")]
-    pub gravity: f64,
+    gravity: f64,
 }
 
 /// Which integrable case a ball is, decided with [`MODEL_TOLERANCE`]; each states its
@@ -106,7 +108,10 @@ fn negligible(x: f64, scale: f64) -> bool {
 /// principal moments.
 pub(crate) fn check_parameters(
     named: &[(&'static str, f64)],
-    ball: &Ball,
+    m: f64,
+    radius: f64,
+    inertia: [f64; 3],
+    gravity: f64,
     centre: impl FnOnce() -> Result<()>,
 ) -> Result<()> {
     for &(name, value) in named {
@@ -118,14 +123,8 @@ pub(crate) fn check_parameters(
             });
         }
     }
-    let [i1, i2, i3] = ball.inertia;
-    for (name, value) in [
-        ("m", ball.m),
-        ("R", ball.radius),
-        ("I1", i1),
-        ("I2", i2),
-        ("I3", i3),
-    ] {
+    let [i1, i2, i3] = inertia;
+    for (name, value) in [("m", m), ("R", radius), ("I1", i1), ("I2", i2), ("I3", i3)] {
         if value <= 0.0 {
             return Err(RouthError::Parameter {
                 name,
@@ -134,10 +133,10 @@ pub(crate) fn check_parameters(
             });
         }
     }
-    if ball.gravity < 0.0 {
+    if gravity < 0.0 {
         return Err(RouthError::Parameter {
             name: "G",
-            value: ball.gravity,
+            value: gravity,
             rule: "must be >= 0",
         });
     }
@@ -155,7 +154,10 @@ pub(crate) fn check_parameters(
 }
 
 impl Ball {
-    /// A validated ball; see [`Ball::validate`].
+    /// A validated ball: com finite and |com| < R; then the rules of every ball
+    /// (`check_parameters`): m, R, I1, I2, I3, G finite; m, R, I1, I2, I3 > 0; G >= 0; the
+    /// triangle inequalities of principal moments. The error names the first rule broken, in
+    /// that order.
     pub fn new(
         m: f64,
         radius: f64,
@@ -174,9 +176,8 @@ impl Ball {
         Ok(ball)
     }
 
-    /// Check the rules: all finite; |com| < R; m, R, I1, I2, I3 > 0; G >= 0; the triangle
-    /// inequalities of principal moments ([`check_parameters`], the rules of every ball).
-    pub fn validate(&self) -> Result<()> {
+    /// Check the rules of [`Ball::new`] on the parameters it is building.
+    fn validate(&self) -> Result<()> {
         for (i, c) in self.com.iter().enumerate() {
             if !c.is_finite() {
                 return Err(RouthError::Parameter {
@@ -204,9 +205,53 @@ impl Ball {
                 ("I3", i3),
                 ("G", self.gravity),
             ],
-            self,
+            self.m,
+            self.radius,
+            self.inertia,
+            self.gravity,
             || Ok(()),
         )
+    }
+
+    /// Mass m > 0.
+    #[inline]
+    pub fn m(&self) -> f64 {
+        self.m
+    }
+
+    /// Radius R > 0.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Principal moments (I1, I2, I3) about the centre of mass, each > 0, satisfying the
+    /// triangle inequalities.
+    #[inline]
+    pub fn inertia(&self) -> [f64; 3] {
+        self.inertia
+    }
+
+    /// Position of the centre of mass relative to the geometric centre, body frame,
+    /// `|com| < R`.
+    #[inline]
+    pub fn com(&self) -> [f64; 3] {
+        self.com
+    }
+
+    /// Gravitational acceleration G >= 0 (0: the free rolling of (m-eq)).
+    #[inline]
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
+    /// The same ball without gravity, G = 0: the free rolling of (m-eq). Valid as the ball
+    /// is: G = 0 keeps G >= 0, and no other rule involves G.
+    pub fn without_gravity(&self) -> Ball {
+        Ball {
+            gravity: 0.0,
+            ..*self
+        }
     }
 
     /// Which integrable case the ball is (decided with [`MODEL_TOLERANCE`]).
@@ -399,7 +444,67 @@ impl Ball {
 
 #[cfg(test)]
 mod tests {
-    use super::elementary_symmetric;
+    use super::{elementary_symmetric, Ball};
+
+    /// [`Ball::new`], the one way to a ball, refuses every broken rule with its message, the
+    /// first in the order of the rules (a NaN anywhere, a mass <= 0, the centre of mass on or
+    /// outside the sphere, G < 0, a triangle inequality), and keeps the parameters of a valid
+    /// ball, serialised under the keys m, R, I, com, G.
+    #[test]
+    fn a_ball_exists_only_with_valid_parameters() {
+        let (i, com) = ([0.4, 0.4, 0.5], [0.0, 0.0, -0.3]);
+        let refused = |m, inertia, com, gravity| {
+            Ball::new(m, 1.0, inertia, com, gravity)
+                .unwrap_err()
+                .to_string()
+        };
+        let prefix = "invalid body parameter ";
+        for (message, want) in [
+            (refused(f64::NAN, i, com, 9.81), "m = NaN: must be finite"),
+            (
+                refused(1.0, [0.4, f64::NAN, 0.5], com, 9.81),
+                "I2 = NaN: must be finite",
+            ),
+            (
+                refused(1.0, i, [0.0, f64::NAN, 0.0], 9.81),
+                "com[1] = NaN: must be finite",
+            ),
+            (refused(1.0, i, com, f64::NAN), "G = NaN: must be finite"),
+            (refused(-1.0, i, com, 9.81), "m = -1: must be > 0"),
+            (refused(0.0, i, com, 9.81), "m = 0: must be > 0"),
+            (refused(1.0, i, com, -9.81), "G = -9.81: must be >= 0"),
+            (
+                refused(-1.0, i, [0.0, 0.0, -1.5], 9.81),
+                "|com| = 1.5: must satisfy |com| < R (the centre of mass lies inside the ball)",
+            ),
+            (
+                refused(1.0, i, [0.0, 1.0, 0.0], 9.81),
+                "|com| = 1: must satisfy |com| < R (the centre of mass lies inside the ball)",
+            ),
+        ] {
+            assert_eq!(message, format!("{prefix}{want}"));
+        }
+        assert_eq!(
+            refused(1.0, [0.1, 0.1, 0.5], com, 9.81),
+            "principal moments of inertia violate the triangle inequality I1 + I2 >= I3: \
+             I1 = 0.1, I2 = 0.1, I3 = 0.5"
+        );
+        let ball = Ball::new(1.0, 1.0, i, com, 9.81).unwrap();
+        assert_eq!(
+            (
+                ball.m(),
+                ball.radius(),
+                ball.inertia(),
+                ball.com(),
+                ball.gravity()
+            ),
+            (1.0, 1.0, i, com, 9.81)
+        );
+        assert_eq!(
+            serde_json::to_string(&ball).unwrap(),
+            r#"{"m":1.0,"R":1.0,"I":[0.4,0.4,0.5],"com":[0.0,0.0,-0.3],"G":9.81}"#
+        );
+    }
 
     /// `e_k` against the sums of products written out: exact in binary (small integers), so
     /// tolerance zero; `e_0 = 1` and `e_k = 0` beyond the number of values.

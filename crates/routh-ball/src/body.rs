@@ -13,36 +13,24 @@
 use crate::ball::{check_parameters, AsBall, Ball, Model};
 use crate::error::{Result, RouthError};
 use crate::scalar::Scalar;
-use serde::Serialize;
+use serde::ser::{Serialize, SerializeStruct, Serializer};
 
 /// Parameters of the ball: mass m, radius R, offset a of the centre of mass, principal
-/// moments I1, I2, I3 about the centre of mass, gravitational acceleration G.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+/// moments I1, I2, I3 about the centre of mass, gravitational acceleration G. A view of the
+/// [`Ball`] with `com = (0, 0, -a)`, which it holds (private: a value is built by
+/// [`Body::new`], [`Ball::axial_body`] or [`Body::default`], so that every body satisfies the
+/// rules); serialised and printed in the paper's parameters.
+#[derive(Clone, Copy, PartialEq)]
 pub struct Body {
-    /// Mass m > 0.
-    pub m: f64,
-    /// Radius R > 0.
-    #[serde(rename = "R")]
-    pub radius: f64,
-    /// Signed distance a from the geometric centre to the centre of mass, |a| < R; the centre
-    /// of mass is at `-a e3` from the geometric centre.
-    pub a: f64,
-    /// Principal moment I1 > 0.
-    #[serde(rename = "I1")]
-    pub i1: f64,
-    /// Principal moment I2 > 0 (the Routh sphere has I2 = I1; a case file may omit it).
-    #[serde(rename = "I2")]
-    pub i2: f64,
-    /// Principal moment I3 > 0 about the symmetry axis.
-    #[serde(rename = "I3")]
-    pub i3: f64,
-    /// Gravitational acceleration G >= 0 (0: the free rolling of (m-eq)).
-    #[serde(rename = "G")]
-    pub gravity: f64,
+    /// The ball, with its centre of mass at `(0, 0, -a)`.
+    ball: Ball,
 }
 
 impl Body {
-    /// A validated body; see [`Body::validate`] for the rules.
+    /// A validated body: all finite; m, R, I1, I2, I3 > 0; G >= 0; |a| < R; the triangle
+    /// inequalities of principal moments (the rules of every ball, `check_parameters`,
+    /// with the offset a for the centre of mass). The error names the first rule broken, in
+    /// that order.
     pub fn new(
         m: f64,
         radius: f64,
@@ -52,45 +40,86 @@ impl Body {
         i3: f64,
         gravity: f64,
     ) -> Result<Self> {
-        let body = Body {
-            m,
-            radius,
-            a,
-            i1,
-            i2,
-            i3,
-            gravity,
-        };
-        body.validate()?;
-        Ok(body)
-    }
-
-    /// Check the rules: all finite; m, R, I1, I2, I3 > 0; G >= 0; |a| < R; the triangle
-    /// inequalities of principal moments (the rules of every ball,
-    /// [`check_parameters`], with the offset a for the centre of mass).
-    pub fn validate(&self) -> Result<()> {
+        let inertia = [i1, i2, i3];
         check_parameters(
             &[
-                ("m", self.m),
-                ("R", self.radius),
-                ("a", self.a),
-                ("I1", self.i1),
-                ("I2", self.i2),
-                ("I3", self.i3),
-                ("G", self.gravity),
+                ("m", m),
+                ("R", radius),
+                ("a", a),
+                ("I1", i1),
+                ("I2", i2),
+                ("I3", i3),
+                ("G", gravity),
             ],
-            &self.ball(),
+            m,
+            radius,
+            inertia,
+            gravity,
             || {
-                if self.a.abs() >= self.radius {
+                if a.abs() >= radius {
                     return Err(RouthError::Parameter {
                         name: "a",
-                        value: self.a,
+                        value: a,
                         rule: "must satisfy |a| < R (the centre of mass lies inside the ball)",
                     });
                 }
                 Ok(())
             },
-        )
+        )?;
+        Ok(Body {
+            ball: Ball::new(m, radius, inertia, [0.0, 0.0, -a], gravity)?,
+        })
+    }
+
+    /// Mass m > 0.
+    #[inline]
+    pub fn m(&self) -> f64 {
+        self.ball.m()
+    }
+
+    /// Radius R > 0.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.ball.radius()
+    }
+
+    /// Signed distance a from the geometric centre to the centre of mass, |a| < R; the centre
+    /// of mass is at `-a e3` from the geometric centre.
+    #[inline]
+    pub fn a(&self) -> f64 {
+        -self.ball.com()[2]
+    }
+
+    /// Principal moment I1 > 0.
+    #[inline]
+    pub fn i1(&self) -> f64 {
+        self.ball.inertia()[0]
+    }
+
+    /// Principal moment I2 > 0 (the Routh sphere has I2 = I1; a case file may omit it).
+    #[inline]
+    pub fn i2(&self) -> f64 {
+        self.ball.inertia()[1]
+    }
+
+    /// Principal moment I3 > 0 about the symmetry axis.
+    #[inline]
+    pub fn i3(&self) -> f64 {
+        self.ball.inertia()[2]
+    }
+
+    /// Gravitational acceleration G >= 0 (0: the free rolling of (m-eq)).
+    #[inline]
+    pub fn gravity(&self) -> f64 {
+        self.ball.gravity()
+    }
+
+    /// The same body without gravity, G = 0: the free rolling of (m-eq)
+    /// ([`Ball::without_gravity`]).
+    pub fn without_gravity(&self) -> Body {
+        Body {
+            ball: self.ball.without_gravity(),
+        }
     }
 
     /// Whether the body is dynamically symmetric, I1 = I2 within the relative tolerance
@@ -106,8 +135,8 @@ impl Body {
         } else {
             Err(RouthError::NotSymmetric {
                 what,
-                i1: self.i1,
-                i2: self.i2,
+                i1: self.i1(),
+                i2: self.i2(),
             })
         }
     }
@@ -138,11 +167,9 @@ impl Body {
     #[inline(always)]
     pub fn routh_g<D: Scalar>(&self, gamma: &[D; 3]) -> D {
         let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
-        let h = gamma[2] * self.radius + self.a;
-        (horizontal * (self.i1 * self.m * self.radius * self.radius)
-            + h * h * (self.i3 * self.m)
-            + self.i1 * self.i3)
-            .sqrt()
+        let (m, radius, i1, i3) = (self.m(), self.radius(), self.i1(), self.i3());
+        let h = gamma[2] * radius + self.a();
+        (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt()
     }
 
     /// Potential energy of gravity `U = m G (r, gamma)`, [`Ball::potential`].
@@ -162,13 +189,37 @@ impl AsBall for Body {
     /// The ball with `com = (0, 0, -a)`.
     #[inline(always)]
     fn ball(&self) -> Ball {
-        Ball {
-            m: self.m,
-            radius: self.radius,
-            inertia: [self.i1, self.i2, self.i3],
-            com: [0.0, 0.0, -self.a],
-            gravity: self.gravity,
-        }
+        self.ball
+    }
+}
+
+/// The paper's keys `m`, `R`, `a`, `I1`, `I2`, `I3`, `G`.
+impl Serialize for Body {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let mut s = serializer.serialize_struct("Body", 7)?;
+        s.serialize_field("m", &self.m())?;
+        s.serialize_field("R", &self.radius())?;
+        s.serialize_field("a", &self.a())?;
+        s.serialize_field("I1", &self.i1())?;
+        s.serialize_field("I2", &self.i2())?;
+        s.serialize_field("I3", &self.i3())?;
+        s.serialize_field("G", &self.gravity())?;
+        s.end()
+    }
+}
+
+/// In the paper's parameters, named as the accessors.
+impl std::fmt::Debug for Body {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Body")
+            .field("m", &self.m())
+            .field("radius", &self.radius())
+            .field("a", &self.a())
+            .field("i1", &self.i1())
+            .field("i2", &self.i2())
+            .field("i3", &self.i3())
+            .field("gravity", &self.gravity())
+            .finish()
     }
 }
 
@@ -181,33 +232,89 @@ impl Ball {
         if !self.is_axial() {
             return Err(RouthError::OffAxis {
                 what,
-                com: self.com,
+                com: self.com(),
             });
         }
-        let [i1, i2, i3] = self.inertia;
-        Ok(Body {
-            m: self.m,
-            radius: self.radius,
-            a: -self.com[2],
+        let [i1, i2, i3] = self.inertia();
+        Body::new(
+            self.m(),
+            self.radius(),
+            -self.com()[2],
             i1,
             i2,
             i3,
-            gravity: self.gravity,
-        })
+            self.gravity(),
+        )
     }
 }
 
 impl Default for Body {
     /// The body of the built-in default case `cases/default.toml`.
     fn default() -> Self {
-        Body {
-            m: 1.0,
-            radius: 1.0,
-            a: 0.3,
-            i1: 0.4,
-            i2: 0.4,
-            i3: 0.5,
-            gravity: 9.81,
+        Body::new(1.0, 1.0, 0.3, 0.4, 0.4, 0.5, 9.81).expect("the default body satisfies the rules")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Body;
+    use crate::ball::{AsBall, Ball};
+
+    /// Every way to a body keeps the rules: [`Body::new`] refuses each broken rule with its
+    /// message (a NaN, a mass <= 0, G < 0, the centre of mass on or outside the sphere),
+    /// [`Ball::axial_body`] a ball whose centre of mass is off the axis, and the body of a
+    /// valid ball, the default and their views as a [`Ball`] are valid, with the parameters
+    /// given, serialised under the paper's keys.
+    #[test]
+    fn a_body_exists_only_with_valid_parameters() {
+        let refused = |m, a, gravity| {
+            Body::new(m, 1.0, a, 0.4, 0.4, 0.5, gravity)
+                .unwrap_err()
+                .to_string()
+        };
+        let prefix = "invalid body parameter ";
+        for (message, want) in [
+            (refused(f64::NAN, 0.3, 9.81), "m = NaN: must be finite"),
+            (refused(1.0, f64::NAN, 9.81), "a = NaN: must be finite"),
+            (refused(1.0, 0.3, f64::INFINITY), "G = inf: must be finite"),
+            (refused(-1.0, 0.3, 9.81), "m = -1: must be > 0"),
+            (refused(1.0, 0.3, -9.81), "G = -9.81: must be >= 0"),
+            (
+                refused(1.0, -1.0, 9.81),
+                "a = -1: must satisfy |a| < R (the centre of mass lies inside the ball)",
+            ),
+        ] {
+            assert_eq!(message, format!("{prefix}{want}"));
         }
+        let off_axis = Ball::new(1.0, 1.0, [0.4, 0.4, 0.5], [0.1, 0.0, -0.3], 9.81).unwrap();
+        assert_eq!(
+            off_axis.axial_body("the test").unwrap_err().to_string(),
+            "the test needs the centre of mass on the e3 axis (com = (0, 0, -a)), but \
+             com = [0.1, 0.0, -0.3]"
+        );
+        let ball = Ball::new(1.0, 1.0, [0.4, 0.4, 0.5], [0.0, 0.0, -0.3], 9.81).unwrap();
+        let body = ball.axial_body("the test").unwrap();
+        assert_eq!(body, Body::default());
+        assert_eq!(body.ball(), ball);
+        assert_eq!(
+            (
+                body.m(),
+                body.radius(),
+                body.a(),
+                body.i1(),
+                body.i2(),
+                body.i3()
+            ),
+            (1.0, 1.0, 0.3, 0.4, 0.4, 0.5)
+        );
+        assert_eq!(body.gravity(), 9.81);
+        assert_eq!(
+            serde_json::to_string(&body).unwrap(),
+            r#"{"m":1.0,"R":1.0,"a":0.3,"I1":0.4,"I2":0.4,"I3":0.5,"G":9.81}"#
+        );
+        assert_eq!(
+            format!("{body:?}"),
+            "Body { m: 1.0, radius: 1.0, a: 0.3, i1: 0.4, i2: 0.4, i3: 0.5, gravity: 9.81 }"
+        );
     }
 }

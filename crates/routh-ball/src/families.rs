@@ -61,6 +61,7 @@ fn source_of(families: Vec<(&'static str, Ball)>) -> String {
 #[cfg(test)]
 mod tests {
     use super::{families, kernels_source, KERNELS, REGENERATE};
+    use crate::ball::Ball;
     use crate::kernels::BallKernels;
     use crate::simulate::ReducedSystem;
     use routh_integrate::batch::Lanes;
@@ -162,14 +163,19 @@ mod tests {
         };
         for (name, family) in families() {
             for draw in 0..3 {
-                let mut ball = family;
-                if draw > 0 {
+                let ball = if draw > 0 {
                     let f = uniform(0.8, 1.2);
-                    ball.inertia = ball.inertia.map(|i| if i == 1.0 { i } else { i * f });
-                    ball.com = ball.com.map(|c| c * uniform(0.5, 0.9));
-                    ball.gravity *= uniform(0.5, 2.0);
-                    ball.validate().expect("a valid body");
-                }
+                    Ball::new(
+                        family.m(),
+                        family.radius(),
+                        family.inertia().map(|i| if i == 1.0 { i } else { i * f }),
+                        family.com().map(|c| c * uniform(0.5, 0.9)),
+                        family.gravity() * uniform(0.5, 2.0),
+                    )
+                    .expect("a valid body")
+                } else {
+                    family
+                };
                 let kernel = Tape::record(&ReducedSystem(&ball), p).expect("records");
                 assert_eq!(kernel.kernel(), Some(name), "{name}: found by its shape");
                 // Order 20 runs the kernels at the constant stride, order 30 at a variable one.

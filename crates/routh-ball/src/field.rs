@@ -92,10 +92,10 @@ fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6], form: OmegaForm) -> [D; 6] {
     };
     let gamma_dot = cross(&gamma, &omega);
     // Identity 1: m R dgamma/dt x (omega x r) = s omega, s = (dgamma/dt, -m R com).
-    let roll = ball.com.map(|c| -(ball.m * ball.radius) * c);
+    let roll = ball.com().map(|c| -(ball.m() * ball.radius()) * c);
     let s = gamma_dot[0] * roll[0] + gamma_dot[1] * roll[1] + gamma_dot[2] * roll[2];
     // Identity 2: gamma x dU/dgamma = gamma x (-m G com).
-    let pull = ball.com.map(|c| lift(-(ball.m * ball.gravity) * c));
+    let pull = ball.com().map(|c| lift(-(ball.m() * ball.gravity()) * c));
     let torque = cross(&gamma, &pull);
     let gyroscopic = cross(&m_vec, &omega);
     [

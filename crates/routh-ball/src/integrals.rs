@@ -48,8 +48,8 @@ pub fn routh_integral<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
 pub fn quadratic_integral<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     let k = routh_integral(body, x);
     let h3 = jellett(body, x);
-    energy(body, x) * body.i1 + k * k * ((body.i3 - body.i1) / body.i1)
-        - h3 * h3 * (body.m / body.i1)
+    energy(body, x) * body.i1() + k * k * ((body.i3() - body.i1()) / body.i1())
+        - h3 * h3 * (body.m() / body.i1())
 }
 
 /// The quadratic integral in the form of (int), `H2 = (M, M) - m r^2 H1`, for the free
@@ -59,7 +59,7 @@ pub fn quadratic_integral_free<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     let (gamma, m_vec) = split(x);
     let r = body.contact_vector(&gamma);
     let omega = body.angular_velocity(&gamma, &m_vec);
-    dot(&m_vec, &m_vec) - dot(&r, &r) * dot(&m_vec, &omega) * body.m
+    dot(&m_vec, &m_vec) - dot(&r, &r) * dot(&m_vec, &omega) * body.m()
 }
 
 /// Chaplygin's integral `(M, M)` of the ball with its centre of mass at the geometric centre
@@ -148,7 +148,7 @@ impl Integrals {
         };
         let h2 = match &routh {
             Some(body) => Some(quadratic_integral(body, x)),
-            None if ball.gravity == 0.0 && model == Model::General => ball
+            None if ball.gravity() == 0.0 && model == Model::General => ball
                 .axial_body("the quadratic integral (int)")
                 .ok()
                 .map(|body| quadratic_integral_free(&body, x)),

@@ -190,7 +190,7 @@ mod tests {
             let axis = rotate(&quaternion(&y), &[0.0, 0.0, 1.0]);
             assert!(axis[0].abs() < 1e-15, "{gamma:?}: Q e3 = {axis:?}");
             let contact = full_columns(&body, &y);
-            assert!((contact[6] - (body.radius + body.a * gamma[2])).abs() < 1e-15);
+            assert!((contact[6] - (body.radius() + body.a() * gamma[2])).abs() < 1e-15);
         }
     }
 }

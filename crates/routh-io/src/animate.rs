@@ -249,8 +249,8 @@ mod tests {
         let case = crate::case::Case::default_case().unwrap();
         let table = crate::table::simulate_full(&case, Method::Dop853, 2.0, 101).unwrap();
         let (radius, a) = recover_geometry(&table).unwrap();
-        assert!((radius - case.ball.radius).abs() < 1e-12, "R = {radius}");
-        assert!((a + case.ball.com[2]).abs() < 1e-12, "a = {a}");
+        assert!((radius - case.ball.radius()).abs() < 1e-12, "R = {radius}");
+        assert!((a + case.ball.com()[2]).abs() < 1e-12, "a = {a}");
     }
 
     #[test]

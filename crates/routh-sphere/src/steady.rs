@@ -84,9 +84,9 @@ pub struct SteadyPrecession {
 /// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
 /// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
-    let l = body.radius + body.a * pole;
-    let lift = 4.0 * body.m * body.gravity * body.a * pole * (body.i1 + body.m * l * l);
-    lift.max(0.0).sqrt() / (body.i3 + body.m * body.radius * l)
+    let l = body.radius() + body.a() * pole;
+    let lift = 4.0 * body.m() * body.gravity() * body.a() * pole * (body.i1() + body.m() * l * l);
+    lift.max(0.0).sqrt() / (body.i3() + body.m() * body.radius() * l)
 }
 
 /// The generator `L` of the rotations about e3, `L x = (e3 x gamma, e3 x M)`: the symmetry
@@ -152,12 +152,12 @@ const EXTREME: f64 = 1e50;
 /// (the cause of an overflow or underflow), or all of them if none does.
 fn extreme_parameters(body: &Body, spin: f64) -> String {
     let all = [
-        ("m", body.m),
-        ("R", body.radius),
-        ("a", body.a),
-        ("I1", body.i1),
-        ("I3", body.i3),
-        ("G", body.gravity),
+        ("m", body.m()),
+        ("R", body.radius()),
+        ("a", body.a()),
+        ("I1", body.i1()),
+        ("I3", body.i3()),
+        ("G", body.gravity()),
         ("the spin omega3", spin),
     ];
     let extreme: Vec<String> = all
@@ -187,10 +187,17 @@ fn representable(
     if value.is_finite() && value.abs() <= LARGEST_MAGNITUDE {
         return Ok(value);
     }
-    let large = [body.m, body.radius, body.i1, body.i3, body.gravity, spin]
-        .iter()
-        .chain(state)
-        .any(|v| v.abs() >= EXTREME);
+    let large = [
+        body.m(),
+        body.radius(),
+        body.i1(),
+        body.i3(),
+        body.gravity(),
+        spin,
+    ]
+    .iter()
+    .chain(state)
+    .any(|v| v.abs() >= EXTREME);
     let direction = if large || value.is_infinite() || value.abs() > LARGEST_MAGNITUDE {
         "overflow"
     } else {
@@ -239,7 +246,7 @@ fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
 /// Where the centre of mass of the vertical spin at `gamma3 = pole` lies: "above" or
 /// "below" the geometric centre (the sign of `a pole`), or "at the geometric centre" (a = 0).
 pub fn centre_of_mass(body: &Body, pole: f64) -> &'static str {
-    match (body.a * pole).partial_cmp(&0.0) {
+    match (body.a() * pole).partial_cmp(&0.0) {
         Some(std::cmp::Ordering::Greater) => "above",
         Some(std::cmp::Ordering::Less) => "below",
         _ => "at the geometric centre",
@@ -256,7 +263,7 @@ pub fn require_finite_inertia(body: &Body) -> Result<()> {
     } else {
         Err(RouthError::Parameter {
             name: "m",
-            value: body.m,
+            value: body.m(),
             rule: "too large for the size of the ball: the inertia about the contact point \
                    I_Q = I + m |r|^2 - m r r^T overflows (its determinant is of the size of \
                    (m R^2)^3 I1 I2 I3)",
@@ -283,7 +290,7 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
     let state = vertical_spin_state(body, pole, spin)?;
     Ok(VerticalSpin {
         gamma3: pole,
-        centre_of_mass_above: body.a * pole > 0.0,
+        centre_of_mass_above: body.a() * pole > 0.0,
         centre_of_mass: centre_of_mass(body, pole),
         spin,
         threshold_spin: routh_threshold(body, pole),
@@ -432,7 +439,10 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             .map(|v| (v, 0.0))
         }
     };
-    let w = spin.abs().max((body.gravity / body.radius).sqrt()).max(1.0);
+    let w = spin
+        .abs()
+        .max((body.gravity() / body.radius()).sqrt())
+        .max(1.0);
     // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 w
     // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
     // at theta = pi/2) there is none.

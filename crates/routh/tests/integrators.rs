@@ -1207,6 +1207,7 @@ mod taylor {
     use routh::quadrature::ExactSolution;
     use routh::scalar::Scalar;
     use routh::simulate::ReducedSystem;
+    use routh::Ball;
 
     /// Kepler's problem `q'' = -q / |q|^3`, written once over [`Scalar`] (a square root and a
     /// quotient: every recurrence of the tape but the fused product is used).
@@ -1276,13 +1277,17 @@ mod taylor {
         // and tiny momenta and states near the poles gamma = +-e3.
         let mut rng = Uniform(0x9e37_79b9_7f4a_7c15);
         let case = Case::default_case().unwrap();
-        let mut balls = vec![case.ball];
-        let mut free = case.ball;
-        free.gravity = 0.0;
-        balls.push(free);
-        let mut off_axis = case.ball;
-        off_axis.com = [0.05, -0.02, -0.1];
-        balls.push(off_axis);
+        let b = case.ball;
+        let off_axis = Ball::new(
+            b.m(),
+            b.radius(),
+            b.inertia(),
+            [0.05, -0.02, -0.1],
+            b.gravity(),
+        )
+        .unwrap();
+        let free = b.without_gravity();
+        let balls = [b, free, off_axis];
         for ball in &balls {
             let sys = ReducedSystem(ball);
             let mut tape = Tape::record(&sys, 0).expect("the reduced system records");
@@ -1323,8 +1328,7 @@ mod taylor {
         // Without gravity the torque gamma x grad U is zero: folded away at record time, so the
         // tape is shorter than with gravity; products of constants never reach the tape.
         let case = Case::default_case().unwrap();
-        let mut free = case.ball;
-        free.gravity = 0.0;
+        let free = case.ball.without_gravity();
         let with = Tape::record(&ReducedSystem(&case.ball), 0).unwrap();
         let without = Tape::record(&ReducedSystem(&free), 0).unwrap();
         println!(

@@ -60,17 +60,24 @@ mod ball {
     fn models_are_decided_with_a_relative_tolerance() {
         let routh = Body::default().ball();
         assert_eq!(routh.model(), Model::RouthSphere);
-        let nearly = Ball {
-            inertia: [0.4, 0.4 * (1.0 + 0.1 * MODEL_TOLERANCE), 0.5],
-            com: [0.3 * 0.1 * MODEL_TOLERANCE, 0.0, -0.3],
-            ..routh
-        };
+        let nearly = Ball::new(
+            1.0,
+            1.0,
+            [0.4, 0.4 * (1.0 + 0.1 * MODEL_TOLERANCE), 0.5],
+            [0.3 * 0.1 * MODEL_TOLERANCE, 0.0, -0.3],
+            9.81,
+        )
+        .unwrap();
         assert_eq!(nearly.model(), Model::RouthSphere);
         // Negative controls: beyond the tolerance it is another model.
-        let triaxial = Ball {
-            inertia: [0.4, 0.4 * (1.0 + 10.0 * MODEL_TOLERANCE), 0.5],
-            ..routh
-        };
+        let triaxial = Ball::new(
+            1.0,
+            1.0,
+            [0.4, 0.4 * (1.0 + 10.0 * MODEL_TOLERANCE), 0.5],
+            routh.com(),
+            9.81,
+        )
+        .unwrap();
         assert_eq!(triaxial.model(), Model::General);
         assert_eq!(chaplygin_balls()[0].model(), Model::Chaplygin);
         for ball in general_balls() {
@@ -101,15 +108,17 @@ mod ball {
         // Negative control of the general model: Jellett's (M, r), (M, M), (M, gamma) and
         // Routh's K, integrals of the special cases, all move along the field of a general ball.
         for ball in general_balls() {
-            let body = Body {
-                m: ball.m,
-                radius: ball.radius,
-                a: -ball.com[2],
-                i1: ball.inertia[0],
-                i2: ball.inertia[1],
-                i3: ball.inertia[2],
-                gravity: ball.gravity,
-            };
+            let [i1, i2, i3] = ball.inertia();
+            let body = Body::new(
+                ball.m(),
+                ball.radius(),
+                -ball.com()[2],
+                i1,
+                i2,
+                i3,
+                ball.gravity(),
+            )
+            .unwrap();
             let jellett_general = |y: &[Dual6; 6]| {
                 let r = ball.contact_vector(&[y[0], y[1], y[2]]);
                 y[3] * r[0] + y[4] * r[1] + y[5] * r[2]
@@ -165,10 +174,14 @@ mod ball {
                 wrong.abs() > 1e-6,
                 "the divergence check is not sharp: {wrong:e}"
             );
-            let shifted = Ball {
-                com: [0.0, 0.05, 0.0],
-                ..ball
-            };
+            let shifted = Ball::new(
+                ball.m(),
+                ball.radius(),
+                ball.inertia(),
+                [0.0, 0.05, 0.0],
+                ball.gravity(),
+            )
+            .unwrap();
             let rate = points(13)
                 .iter()
                 .map(|x| relative_rate(momentum_squared, &shifted, x))
@@ -212,10 +225,14 @@ mod ball {
             assert!(div.abs() < 1e-11, "div(X/g) = {div:e}");
         }
         // Negative control: the same body with its centre of mass moved off the axis loses K.
-        let tilted = Ball {
-            com: [0.05, 0.0, 0.25],
-            ..ball
-        };
+        let tilted = Ball::new(
+            ball.m(),
+            ball.radius(),
+            ball.inertia(),
+            [0.05, 0.0, 0.25],
+            ball.gravity(),
+        )
+        .unwrap();
         let rate = points(17)
             .iter()
             .map(|x| relative_rate(|y| routh_integral(&body, y), &tilted, x))
@@ -373,7 +390,7 @@ mod case_file {
     #[test]
     fn default_case_parses_and_i2_defaults_to_i1() {
         let case = Case::default_case().unwrap();
-        assert_eq!(case.ball.inertia[1], case.ball.inertia[0]);
+        assert_eq!(case.ball.inertia()[1], case.ball.inertia()[0]);
         assert_eq!(case.integration.t_end, 100.0);
         let omega = case.initial.omega(&case.ball);
         for (w, expected) in omega.iter().zip([0.5, 0.2, 8.0]) {
@@ -547,11 +564,11 @@ mod field_identities {
         let r = ball.contact_vector(&gamma);
         let omega = ball.angular_velocity(&gamma, &m_vec);
         let gamma_dot = cross(&gamma, &omega);
-        let r_dot = gamma_dot.map(|c| c * ball.radius);
+        let r_dot = gamma_dot.map(|c| c * ball.radius());
         let rolling = cross(&r_dot, &cross(&omega, &r));
         let gyroscopic = cross(&m_vec, &omega);
         let torque = cross(&gamma, &ball.potential_gradient(&gamma));
-        let dm: [D; 3] = std::array::from_fn(|i| gyroscopic[i] + rolling[i] * ball.m + torque[i]);
+        let dm: [D; 3] = std::array::from_fn(|i| gyroscopic[i] + rolling[i] * ball.m() + torque[i]);
         [
             gamma_dot[0],
             gamma_dot[1],
@@ -568,9 +585,9 @@ mod field_identities {
         let (gamma, m_vec) = split(x);
         let omega = ball.angular_velocity(&gamma, &m_vec);
         let gamma_dot = cross(&gamma, &omega);
-        let com = ball.com.map(lift::<D>);
+        let com = ball.com().map(lift::<D>);
         // Subtract the rolling term twice: -m R (gamma_dot, com) omega becomes its opposite.
-        let s = dot(&gamma_dot, &com) * (2.0 * ball.m * ball.radius);
+        let s = dot(&gamma_dot, &com) * (2.0 * ball.m() * ball.radius());
         for i in 0..3 {
             f[3 + i] = f[3 + i] + s * omega[i];
         }
@@ -582,13 +599,7 @@ mod field_identities {
     fn sphere_only<D: Scalar>(ball: &Ball, x: &[D; 6]) -> [D; 6] {
         let (gamma, _) = split(x);
         let mut f = vector_field(ball, x);
-        let free = vector_field(
-            &Ball {
-                gravity: 0.0,
-                ..*ball
-            },
-            x,
-        );
+        let free = vector_field(&ball.without_gravity(), x);
         let norm2 = dot(&gamma, &gamma);
         for i in 3..6 {
             let torque = f[i] - free[i];
@@ -606,11 +617,11 @@ mod field_identities {
         let (gamma, m_vec) = split(x);
         let omega = ball.angular_velocity(&gamma, &m_vec);
         let (g, w) = (norm(&gamma), norm(&omega));
-        let com = norm(&ball.com);
-        let rho = ball.radius * g + com;
+        let com = norm(&ball.com());
+        let rho = ball.radius() * g + com;
         let a = norm(&m_vec) * w;
-        let b = ball.m * ball.radius * g * w * w * rho;
-        let c = ball.m * ball.gravity * g * (2.0 * ball.radius * g + com);
+        let b = ball.m() * ball.radius() * g * w * w * rho;
+        let c = ball.m() * ball.gravity() * g * (2.0 * ball.radius() * g + com);
         a + b + c
     }
 
@@ -641,26 +652,24 @@ mod field_identities {
         let dg = if j < 3 { 1.0 } else { 0.0 };
         let dm = 1.0 - dg;
         let (g, w, mm) = (norm(&gamma), norm(&omega), norm(&m_vec));
-        let com = norm(&ball.com);
-        let rho = ball.radius * g + com;
+        let com = norm(&ball.com());
+        let rho = ball.radius() * g + com;
         let a = dm * w + mm * dw;
-        let b = ball.m
-            * ball.radius
-            * (dg * w * w * rho + g * 2.0 * w * dw * rho + g * w * w * ball.radius * dg);
-        let c = ball.m
-            * ball.gravity
-            * (dg * (2.0 * ball.radius * g + com) + g * 2.0 * ball.radius * dg);
+        let b = ball.m()
+            * ball.radius()
+            * (dg * w * w * rho + g * 2.0 * w * dw * rho + g * w * w * ball.radius() * dg);
+        let c = ball.m()
+            * ball.gravity()
+            * (dg * (2.0 * ball.radius() * g + com) + g * 2.0 * ball.radius() * dg);
         a + b + c
     }
 
     /// The balls of the comparison.
     fn balls() -> Vec<(&'static str, Ball)> {
         let default = Case::default_case().unwrap().ball;
-        let mut free = default;
-        free.gravity = 0.0;
         vec![
             ("default (Routh, com below)", default),
-            ("no gravity", free),
+            ("no gravity", default.without_gravity()),
             (
                 "Routh, com above",
                 Ball::new(1.0, 1.0, [0.4, 0.4, 0.5], [0.0, 0.0, 0.5], 9.81).unwrap(),
@@ -764,7 +773,7 @@ mod field_identities {
             // The rolling term, m R (gamma_dot, com) omega, vanishes for com = 0 (Chaplygin) and
             // is below the round-off of the other terms where |M| is tiny (the torque dominates)
             // or gamma_dot is orthogonal to com; at the other points (a third or more) it counts.
-            if ball.com != [0.0; 3] {
+            if ball.com() != [0.0; 3] {
                 assert!(resolvable * 3 >= points.len(), "{name}: {resolvable}");
             }
         }
@@ -814,7 +823,7 @@ mod field_identities {
             // The sphere-only form differs in d/dgamma of the torque, 2 gamma (gamma x -m G com):
             // zero without gravity or without an offset of the centre of mass, and below the
             // round-off of the other terms where |M| is huge.
-            if ball.gravity > 0.0 && ball.com != [0.0; 3] {
+            if ball.gravity() > 0.0 && ball.com() != [0.0; 3] {
                 assert!(resolvable * 3 >= points.len(), "{name}: {resolvable}");
             }
         }
@@ -853,7 +862,7 @@ mod field_identities {
         let points = points(1500);
         for (name, ball) in balls() {
             let (i_min, i_max) = ball
-                .inertia
+                .inertia()
                 .iter()
                 .fold((f64::INFINITY, 0.0f64), |(lo, hi), &i| {
                     (lo.min(i), hi.max(i))
@@ -864,7 +873,7 @@ mod field_identities {
             for x in &points {
                 let (gamma, m_vec) = split(x);
                 let r = ball.contact_vector(&gamma);
-                let mr2 = ball.m * dot(&r, &r);
+                let mr2 = ball.m() * dot(&r, &r);
                 let kappa = (i_max + mr2) / i_min;
                 let size = kappa * norm(&m_vec) / i_min;
                 let by_cofactors = ball.angular_velocity(&gamma, &m_vec);
@@ -881,7 +890,7 @@ mod field_identities {
                 for j in 0..6 {
                     let dm = if j < 3 { 0.0 } else { 1.0 };
                     let dmr2 = if j < 3 {
-                        2.0 * ball.m * ball.radius * norm(&r)
+                        2.0 * ball.m() * ball.radius() * norm(&r)
                     } else {
                         0.0
                     };
@@ -897,14 +906,16 @@ mod field_identities {
                     );
                     worst_dual = worst_dual.max(d);
                 }
-                let mut swapped = ball;
-                swapped.inertia[0] = ball.inertia[1];
+                let [i1, i2, i3] = ball.inertia();
+                let with_moments = |inertia| {
+                    Ball::new(ball.m(), ball.radius(), inertia, ball.com(), ball.gravity()).unwrap()
+                };
+                let swapped = with_moments([i2, i2, i3]);
                 let wrong = swapped.angular_velocity_by_determinant(&gamma, &m_vec);
                 if discrepancy(&wrong, &by_cofactors, size) > 64.0 {
                     caught += 1;
                 }
-                let mut nudged = ball;
-                nudged.inertia[2] *= 1.0 + 1e-10;
+                let nudged = with_moments([i1, i2, i3 * (1.0 + 1e-10)]);
                 let wrong = nudged.angular_velocity_by_determinant(&gamma, &m_vec);
                 if discrepancy(&wrong, &by_cofactors, size) > 64.0 {
                     nudge_caught += 1;
@@ -915,7 +926,7 @@ mod field_identities {
             points.len()
         );
             assert!(nudge_caught * 3 >= points.len(), "{name}: {nudge_caught}");
-            if ball.inertia[0] != ball.inertia[1] {
+            if ball.inertia()[0] != ball.inertia()[1] {
                 assert!(caught * 3 >= points.len(), "{name}: {caught}");
             }
         }
@@ -1065,10 +1076,7 @@ mod fuzz_properties {
     #[test]
     #[should_panic(expected = "at State")]
     fn the_finiteness_check_fails_on_an_overflowing_body() {
-        let body = routh::Body {
-            m: 1e300,
-            ..routh::Body::default()
-        };
+        let body = routh::Body::new(1e300, 1.0, 0.3, 0.4, 0.4, 0.5, 9.81).unwrap();
         let state = routh::State::new(
             [0.0, 0.6, 0.8],
             [1.0, 2.0, 3.0],
@@ -1111,10 +1119,16 @@ mod fuzz_properties {
         ];
         properties::numerics(&properties::decode_f64s(bytes), true);
         // Negative control: a moment at the limit is accepted.
-        let sane = routh::Body {
-            i3: 1e-59 * 10.0,
-            ..body
-        };
+        let sane = routh::Body::new(
+            body.m(),
+            body.radius(),
+            body.a(),
+            body.i1(),
+            body.i2(),
+            1e-59 * 10.0,
+            body.gravity(),
+        )
+        .unwrap();
         assert!(routh::quadrature::Reduction::new(&sane, 1.0, 0.0, 0.0).is_ok());
     }
 
@@ -1177,10 +1191,7 @@ mod model_integrals {
     fn bodies() -> [Body; 3] {
         [
             Body::default(),
-            Body {
-                gravity: 0.0,
-                ..Body::default()
-            },
+            Body::default().without_gravity(),
             Body::new(2.0, 0.7, -0.25, 0.3, 0.3, 0.45, 3.0).unwrap(),
         ]
     }
@@ -1214,7 +1225,7 @@ mod model_integrals {
                         "{name} not conserved for {body:?} at {x:?}: {rate:e}"
                     );
                 }
-                if body.gravity == 0.0 {
+                if body.gravity() == 0.0 {
                     let rate = relative_rate(|y| quadratic_integral_free(&body, y), &field, &x);
                     assert!(rate < 1e-12, "H2 of (int) not conserved at {x:?}: {rate:e}");
                 }
@@ -1248,13 +1259,17 @@ mod model_integrals {
     /// weighted by the wrong mass.
     fn wrong_field(body: &Body, x: &[Dual6; 6]) -> [Dual6; 6] {
         let right = vector_field(body, x);
-        let gyro_only = vector_field(
-            &Body {
-                m: body.m * 1.5,
-                ..*body
-            },
-            x,
-        );
+        let heavier = Body::new(
+            body.m() * 1.5,
+            body.radius(),
+            body.a(),
+            body.i1(),
+            body.i2(),
+            body.i3(),
+            body.gravity(),
+        )
+        .unwrap();
+        let gyro_only = vector_field(&heavier, x);
         std::array::from_fn(|i| right[i] * 2.0 - gyro_only[i])
     }
 
@@ -1506,7 +1521,8 @@ mod motion {
             worst_down = worst_down.max(norm(&[down[0], down[1], down[2] + 1.0]));
             let columns = full_columns(&body, y);
             let r = body.contact_vector(&gamma);
-            worst_height = worst_height.max((columns[6] - (body.radius + body.a * gamma[2])).abs());
+            worst_height =
+                worst_height.max((columns[6] - (body.radius() + body.a() * gamma[2])).abs());
             // The contact point is on the plane: z_com + (Q r)_z = 0.
             worst_height = worst_height.max((columns[6] + rotate(&quaternion(y), &r)[2]).abs());
             worst_norm = worst_norm.max((quaternion(y).norm() - 1.0).abs());
@@ -1548,7 +1564,7 @@ mod motion {
                 "t = {t}: {offset:?}"
             );
             // z = (r, gamma) = R |gamma|^2: exact up to the drift of |gamma|.
-            assert!((c[6] - body.radius).abs() < 1e-11);
+            assert!((c[6] - body.radius()).abs() < 1e-11);
         }
         let (t_end, y_end) = samples.last().unwrap();
         let travelled = norm(&[y_end[10], y_end[11]]);
@@ -1559,10 +1575,10 @@ mod motion {
     /// gamma: `omega = mu gamma + lambda e3` with lambda from the balance of moments
     /// (docs/motion.md, "Steady motion").
     fn steady_lambda(body: &Body, gamma3: f64, mu: f64) -> f64 {
-        let (m, r, a) = (body.m, body.radius, body.a);
+        let (m, r, a) = (body.m(), body.radius(), body.a());
         let height = r + a * gamma3;
-        (m * body.gravity * a - mu * mu * ((body.i3 - body.i1) * gamma3 - m * a * height))
-            / (mu * (body.i3 + m * r * height))
+        (m * body.gravity() * a - mu * mu * ((body.i3() - body.i1()) * gamma3 - m * a * height))
+            / (mu * (body.i3() + m * r * height))
     }
 
     /// The largest deviation of gamma3 from its start and of the distance between the centre of
@@ -1573,7 +1589,7 @@ mod motion {
             std::array::from_fn(|i| mu * gamma[i] + if i == 2 { lambda } else { 0.0 });
         let state = State::from_omega(body, gamma, omega, Normalise::Reject).unwrap();
         let y0 = initial_full(&state);
-        let k = body.radius * lambda / mu - body.a;
+        let k = body.radius() * lambda / mu - body.a();
         let radius = k.abs() * theta.sin();
         // X_com = C + k n_h with n = Q e3 the symmetry axis in space.
         let axis = rotate(&quaternion(&y0), &[0.0, 0.0, 1.0]);
@@ -1621,7 +1637,7 @@ mod motion {
         let y0 = initial_full(&state);
         let axis = rotate(&quaternion(&y0), &[0.0, 0.0, 1.0]);
         let c0 = full_columns(&body, &y0);
-        let ratio = body.radius * lambda / mu;
+        let ratio = body.radius() * lambda / mu;
         let centre = [c0[7] - ratio * axis[0], c0[8] - ratio * axis[1]];
         let radius = ratio.abs() * theta.sin();
         let times: Vec<f64> = (0..=100).map(|k| k as f64 * 0.05).collect();
@@ -2037,10 +2053,7 @@ mod simulate {
             spread > 1e-6,
             "H3 is not an integral for I1 != I2, yet it moved by only {spread:e}"
         );
-        let heavy = routh::Body {
-            gravity: 9.81,
-            ..free
-        };
+        let heavy = routh::Body::new(1.0, 1.0, 0.3, 0.4, 0.45, 0.5, 9.81).unwrap();
         let s = run(
             &heavy,
             &ReducedSystem(&heavy),

@@ -480,18 +480,18 @@ mod steady {
         for (body, pole) in top_heavy() {
             let wc = routh_threshold(&body, pole);
             assert!(wc > 0.0);
-            let l = body.radius + body.a * pole;
-            let inertia = body.i1 + body.m * l * l;
+            let l = body.radius() + body.a() * pole;
+            let inertia = body.i1() + body.m() * l * l;
             for w in [0.0, 0.5 * wc, wc, 1.5 * wc] {
                 let state = vertical_spin_state(&body, pole, w).unwrap();
                 let (q, dq, q2) = Reduction::of_state(&body, &state)
                     .unwrap()
                     .q_derivatives(pole);
                 let closed = -2.0
-                    * ((body.i3 + body.m * body.radius * l).powi(2) * w * w
-                        - 4.0 * body.m * body.gravity * body.a * pole * inertia)
+                    * ((body.i3() + body.m() * body.radius() * l).powi(2) * w * w
+                        - 4.0 * body.m() * body.gravity() * body.a() * pole * inertia)
                     / (inertia * inertia);
-                let scale = 8.0 * body.m * body.gravity * body.a.abs() / inertia;
+                let scale = 8.0 * body.m() * body.gravity() * body.a().abs() / inertia;
                 assert!(
                     q.abs() < 1e-13 * scale && dq.abs() < 1e-13 * scale,
                     "{q} {dq}"

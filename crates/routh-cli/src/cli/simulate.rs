@@ -147,7 +147,7 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     use std::fmt::Write;
     let mut text = String::new();
     let b = &case.ball;
-    let [i1, i2, i3] = b.inertia;
+    let [i1, i2, i3] = b.inertia();
     let projected = match (s.projected, s.project_every) {
         (false, _) => String::new(),
         (true, 1) => " with projection onto the integrals".to_string(),
@@ -156,19 +156,19 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     let _ = writeln!(text, "routh simulate: {}", case.source);
     // The offset a of a Routh sphere, else the centre of mass.
     let centre = if b.is_axial() {
-        format!("a = {}", Readable(-b.com[2]))
+        format!("a = {}", Readable(-b.com()[2]))
     } else {
-        format!("com = {:?}", b.com)
+        format!("com = {:?}", b.com())
     };
     let _ = writeln!(
         text,
         "  body     m = {}, R = {}, {centre}, I = ({}, {}, {}), G = {}",
-        Readable(b.m),
-        Readable(b.radius),
+        Readable(b.m()),
+        Readable(b.radius()),
         Readable(i1),
         Readable(i2),
         Readable(i3),
-        Readable(b.gravity)
+        Readable(b.gravity())
     );
     let _ = writeln!(text, "  method   {}{projected}", s.method);
     let _ = writeln!(text, "  t_end    {}", s.t_end);

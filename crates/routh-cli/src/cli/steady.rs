@@ -110,7 +110,7 @@ pub fn run(args: Args) -> Result<()> {
         .into_iter()
         .map(|pole| vertical_spin(&body, pole, spin))
         .collect::<routh::Result<Vec<_>>>()?;
-    let top_heavy_gamma3 = (body.a != 0.0).then(|| body.a.signum());
+    let top_heavy_gamma3 = (body.a() != 0.0).then(|| body.a().signum());
     let mut precessions = vec![];
     let mut unlisted_far_precessions = vec![];
     for degrees in TILTS_DEGREES {

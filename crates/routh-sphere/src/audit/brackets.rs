@@ -4,8 +4,8 @@
 
 use super::checks::{self, Function};
 use super::claim::{
-    body, field_of, free_body, generic_first, generic_firsts, h4, of, Claim, Outcome, Sample,
-    CONSTANT_ALPHA, GENERIC_ALPHA, GENERIC_BETA,
+    body, field_of, free_body, generic_first, generic_firsts, h4, of, Claim, Outcome, Potential,
+    Sample, CONSTANT_ALPHA, GENERIC_ALPHA, GENERIC_BETA,
 };
 use crate::body::Body;
 use crate::differential::{jacobian, Dual6};
@@ -86,40 +86,37 @@ type BoxedFunction<'a> = Box<dyn Fn(&[Dual6; 6]) -> Dual6 + 'a>;
 /// An integral of a body, as in [`crate::integrals`].
 pub type Integral = fn(&Body, &[Dual6; 6]) -> Dual6;
 
-/// The bodies of the decomposition checks: without gravity (m-eq); with gravity and our
-/// `U = +m G (r, gamma)`; with the printed `U = -m g (r, gamma)` (the body with G -> -G).
-pub fn decomposition_bodies() -> [Body; 3] {
+/// The potentials of the decomposition checks: without gravity (m-eq); with gravity and our
+/// `U = +m G (r, gamma)`; with the printed `U = -m g (r, gamma)` (ours with G -> -G).
+pub fn decomposition_potentials() -> [Potential; 3] {
     [
-        free_body(),
-        body(),
-        Body {
-            gravity: -body().gravity,
-            ..body()
-        },
+        Potential::Ours(free_body()),
+        Potential::Ours(body()),
+        Potential::Printed(body()),
     ]
 }
 
-/// The largest of `check(X, [H_a])` over [`decomposition_bodies`], with the field X and the
-/// integrals `H_a` of each body (the bivectors and the coefficients do not depend on gravity).
+/// The largest of `check(X, [H_a])` over [`decomposition_potentials`], with the field X and
+/// the integrals `H_a` of each (the bivectors and the coefficients do not depend on gravity).
 fn over_bodies(
     hamiltonians: &[Integral],
     check: impl Fn(&dyn Fn(&[f64; 6]) -> [f64; 6], &[Function]) -> f64,
 ) -> f64 {
-    decomposition_bodies()
+    decomposition_potentials()
         .iter()
-        .map(|b| {
+        .map(|u| {
             let hs: Vec<BoxedFunction> = hamiltonians
                 .iter()
-                .map(|&h| Box::new(move |x: &[Dual6; 6]| h(b, x)) as BoxedFunction)
+                .map(|&h| Box::new(u.integral(h)) as BoxedFunction)
                 .collect();
             let refs: Vec<Function> = hs.iter().map(|h| h.as_ref()).collect();
-            check(&field_of(*b), &refs)
+            check(&u.field(), &refs)
         })
         .fold(0.0, f64::max)
 }
 
 /// A decomposition of the field (ob-vp): `max |X - sum_a c_a P dH_a| / max(|X|, |c_a P dH_a|)` over the points
-/// and over [`decomposition_bodies`].
+/// and over [`decomposition_potentials`].
 pub fn field_decomposition<P: Bivector>(
     p: &P,
     coefficients: checks::Coefficients,
@@ -222,12 +219,12 @@ pub fn claims() -> Vec<Claim> {
                 let pts = s.points(&body());
                 let free = free_body();
                 let worst = over_generic(|p| {
-                    decomposition_bodies()
+                    decomposition_potentials()
                         .iter()
-                        .map(|&b| {
-                            let h1 = of(b, energy);
-                            checks::involution(p, &h1, &of(b, quadratic_integral), &pts)
-                                .max(checks::involution(p, &h1, &of(b, routh_integral), &pts))
+                        .map(|&u| {
+                            let h1 = u.integral(energy);
+                            checks::involution(p, &h1, &u.integral(quadratic_integral), &pts)
+                                .max(checks::involution(p, &h1, &u.integral(routh_integral), &pts))
                         })
                         .fold(checks::involution(p, &of(free, energy), &of(free, quadratic_integral_free), &pts), f64::max)
                 });
@@ -678,7 +675,7 @@ pub fn theta_defect(
     let printed = |x: &[f64; 6]| rate(&map.bracket, &spherical(&map.image(x)));
     let squared = |x: &[f64; 6]| printed(x).powi(2);
     let quadrature = |x: &[f64; 6]| {
-        let c = -routh_integral(&b, x) / (map.bracket.alpha.at(&[x[0], x[1], x[2]]) * b.i1);
+        let c = -routh_integral(&b, x) / (map.bracket.alpha.at(&[x[0], x[1], x[2]]) * b.i1());
         theta_rate_squared(
             &map.bracket,
             &spherical(&map.image(x)),

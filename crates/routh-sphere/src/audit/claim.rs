@@ -74,7 +74,7 @@ impl Sample {
             let x = rng.phase_point(2.0, 0.0, 0.15);
             if x[0].abs() >= 0.15
                 && x[1].abs() >= 0.15
-                && (body.radius * x[2] + body.a).abs() >= 0.1 * body.radius
+                && (body.radius() * x[2] + body.a()).abs() >= 0.1 * body.radius()
             {
                 out.push(x);
             }
@@ -196,22 +196,57 @@ impl Claim {
 /// The body of the audit: m = 1.3, R = 0.8, a = 0.25, I1 = I2 = 0.4, I3 = 0.55, G = 9.81.
 /// Deliberately not m = R = 1, so that a misplaced factor m or R cannot go unnoticed.
 pub fn body() -> Body {
-    Body {
-        m: 1.3,
-        radius: 0.8,
-        a: 0.25,
-        i1: 0.4,
-        i2: 0.4,
-        i3: 0.55,
-        gravity: 9.81,
-    }
+    Body::new(1.3, 0.8, 0.25, 0.4, 0.4, 0.55, 9.81).expect("the audit's body satisfies the rules")
 }
 
 /// The same body rolling without gravity, (m-eq).
 pub fn free_body() -> Body {
-    Body {
-        gravity: 0.0,
-        ..body()
+    body().without_gravity()
+}
+
+/// The potential of gravity of a check: ours, `U = +m G (r, gamma)` (gamma points into the
+/// plane), or the paper's printed `U = -m g (r, gamma)` with g = G, which is ours with G -> -G.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Potential {
+    /// `U = +m G (r, gamma)` of the body.
+    Ours(Body),
+    /// The printed `U = -m G (r, gamma)` of the body: ours with G -> -G. No body has G < 0;
+    /// the field and the integrals are affine in G (through U alone), so a function f of the
+    /// body is taken as `2 f(G = 0) - f(G)`, f at -G up to round-off (exactly f where f does
+    /// not involve G).
+    Printed(Body),
+}
+
+impl Potential {
+    /// The body (G >= 0, as every body's).
+    pub fn body(&self) -> Body {
+        match *self {
+            Potential::Ours(b) | Potential::Printed(b) => b,
+        }
+    }
+
+    /// The field X of (mg-eq) with this potential, in `f64`.
+    pub fn field(self) -> impl Fn(&[f64; 6]) -> [f64; 6] {
+        let (body, free) = (self.body(), self.body().without_gravity());
+        move |x| {
+            let with = vector_field(&body, x);
+            match self {
+                Potential::Ours(_) => with,
+                Potential::Printed(_) => {
+                    let without = vector_field(&free, x);
+                    std::array::from_fn(|i| 2.0 * without[i] - with[i])
+                }
+            }
+        }
+    }
+
+    /// An integral of the body with this potential, as a function on the phase space.
+    pub fn integral(self, h: fn(&Body, &[Dual6; 6]) -> Dual6) -> impl Fn(&[Dual6; 6]) -> Dual6 {
+        let (body, free) = (self.body(), self.body().without_gravity());
+        move |x| match self {
+            Potential::Ours(_) => h(&body, x),
+            Potential::Printed(_) => h(&free, x) * 2.0 - h(&body, x),
+        }
     }
 }
 

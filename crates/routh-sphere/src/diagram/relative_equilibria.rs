@@ -83,9 +83,9 @@ pub fn vertical_spin_at(body: &Body, pole: f64, h3: f64) -> Result<RelativeEquil
 /// A scale of the spin rate at Jellett's `h3` (from H3 = (M, r) ~ I omega R and from
 /// gravity), used only to condition the sampling of the quadratic D(K).
 fn spin_scale(body: &Body, h3: f64) -> f64 {
-    let inertia = body.i1 + body.i3 + body.m * body.radius * body.radius;
-    (h3.abs() / (inertia * body.radius))
-        .max((body.gravity / body.radius).sqrt())
+    let inertia = body.i1() + body.i3() + body.m() * body.radius() * body.radius();
+    (h3.abs() / (inertia * body.radius()))
+        .max((body.gravity() / body.radius()).sqrt())
         .max(1.0)
 }
 

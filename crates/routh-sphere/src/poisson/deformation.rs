@@ -109,8 +109,8 @@ impl TrivialDeformation {
     /// (no real singular latitude: every meridian quadrature starts at the pole gamma3 = 1).
     fn singular_latitude(&self) -> f64 {
         let b = &self.bracket.body;
-        let den = b.i1 - b.i3 + b.a * b.a * b.m;
-        let z = -b.a * b.m * b.radius / den;
+        let den = b.i1() - b.i3() + b.a() * b.a() * b.m();
+        let z = -b.a() * b.m() * b.radius() / den;
         if z.abs() < 1.0 {
             z
         } else {
@@ -122,7 +122,7 @@ impl TrivialDeformation {
     /// `g^2(z)` (see [`super::second_reduction::quadratic_roots`]).
     fn singularities(&self) -> Vec<(f64, f64)> {
         let b = &self.bracket.body;
-        let (m, r, a, i1, i3) = (b.m, b.radius, b.a, b.i1, b.i3);
+        let (m, r, a, i1, i3) = (b.m(), b.radius(), b.a(), b.i1(), b.i3());
         super::second_reduction::quadratic_roots(
             m * r * r * (i3 - i1),
             2.0 * i3 * m * r * a,

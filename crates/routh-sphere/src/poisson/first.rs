@@ -80,11 +80,12 @@ impl Beta {
         match self {
             Beta::Gamma3(c) => polynomial(c, gamma[2]),
             Beta::Function(f) => f.at(gamma[2]),
-            Beta::Cond => alpha * g * (gamma[2].recip() * (body.a / body.radius) + 1.0),
+            Beta::Cond => alpha * g * (gamma[2].recip() * (body.a() / body.radius()) + 1.0),
             Beta::Cond2 => {
-                let num = gamma[2] * (body.i1 * body.radius) - r[2] * body.i3;
-                let den = (gamma[2] * (body.i1 - body.i3) + dot(&r, gamma) * (body.a * body.m))
-                    * body.radius;
+                let num = gamma[2] * (body.i1() * body.radius()) - r[2] * body.i3();
+                let den = (gamma[2] * (body.i1() - body.i3())
+                    + dot(&r, gamma) * (body.a() * body.m()))
+                    * body.radius();
                 alpha * g * num / den
             }
             Beta::Conformal => {
@@ -97,7 +98,7 @@ impl Beta {
 
 /// `I v = (I1 v1, I2 v2, I3 v3)`.
 pub fn inertia_times<D: Real>(body: &Body, v: &[D; 3]) -> [D; 3] {
-    [v[0] * body.i1, v[1] * body.i2, v[2] * body.i3]
+    [v[0] * body.i1(), v[1] * body.i2(), v[2] * body.i3()]
 }
 
 fn polynomial<D: Real>(c: &[f64; 3], t: D) -> D {
@@ -150,7 +151,7 @@ impl FirstBracket {
     /// The bivector P_f of the conformally Hamiltonian section: (p-bv) at `alpha = -R`,
     /// `beta = -g (r, I r)/(gamma, I r)`.
     pub fn conformal(body: Body) -> Self {
-        FirstBracket::new(body, Alpha::constant(-body.radius), Beta::Conformal)
+        FirstBracket::new(body, Alpha::constant(-body.radius()), Beta::Conformal)
     }
 
     /// The values `(alpha, beta)` at gamma.
@@ -175,8 +176,8 @@ impl<D: Real> Common<D> {
         let r = body.contact_vector(&gamma);
         let u = gamma[0] * m[0] + gamma[1] * m[1];
         let c2 = dot(&m, &r);
-        let sigma = (dot(&r, &gamma) * c2 * body.m + u * body.i3 + m[2] * gamma[2] * body.i1)
-            * (body.m * body.radius);
+        let sigma = (dot(&r, &gamma) * c2 * body.m() + u * body.i3() + m[2] * gamma[2] * body.i1())
+            * (body.m() * body.radius());
         Common {
             s: gamma[0] * gamma[0] + gamma[1] * gamma[1],
             h: r[2],
@@ -196,7 +197,7 @@ impl Bivector for FirstBracket {
         let Common { s, h, u, g, sigma } = Common::at(b, x);
         let ag = alpha * g;
         let zero = lift::<D>(0.0);
-        let q = h / (s * b.radius);
+        let q = h / (s * b.radius());
         let t = g3 / s;
         match self.form {
             FirstForm::Brackets => {
@@ -218,8 +219,8 @@ impl Bivector for FirstBracket {
                     ],
                     [
                         ag * u * q + beta * (m[2] - t * u - sg * h),
-                        -ag * m[1] + beta * sg * b.radius * g2,
-                        ag * m[0] - beta * sg * b.radius * g1,
+                        -ag * m[1] + beta * sg * b.radius() * g2,
+                        ag * m[0] - beta * sg * b.radius() * g1,
                     ],
                 )
             }
@@ -236,14 +237,14 @@ impl Bivector for FirstBracket {
                 ];
                 let m_alpha = [u * q, -m[1], m[0]];
                 let printed_factor = match self.form {
-                    FirstForm::Matrix => b.m * b.radius,
+                    FirstForm::Matrix => b.m() * b.radius(),
                     _ => 1.0,
                 };
                 let msr = sigma * printed_factor / (g * g);
                 let m_beta = [
                     m[2] - t * u - msr * h,
-                    msr * b.radius * g2,
-                    -msr * b.radius * g1,
+                    msr * b.radius() * g2,
+                    -msr * b.radius() * g1,
                 ];
                 from_blocks(
                     std::array::from_fn(|i| {
@@ -263,11 +264,11 @@ impl Bivector for FirstBracket {
 pub fn g_eq1_coefficients(bracket: &FirstBracket, gamma: &[f64; 3]) -> [f64; 2] {
     let body = &bracket.body;
     let alpha = bracket.alpha.at(gamma);
-    let h = body.radius * gamma[2] + body.a;
-    let den = 2.0 * alpha * body.routh_g(gamma) * (body.i1 - body.i3) * h;
+    let h = body.radius() * gamma[2] + body.a();
+    let den = 2.0 * alpha * body.routh_g(gamma) * (body.i1() - body.i3()) * h;
     [
-        -(h * body.i1 - body.radius * gamma[2] * body.i3) / den,
-        body.a / den,
+        -(h * body.i1() - body.radius() * gamma[2] * body.i3()) / den,
+        body.a() / den,
     ]
 }
 
@@ -279,10 +280,10 @@ pub fn g_eq2_coefficients(bracket: &FirstBracket, x: &[f64; 6]) -> [f64; 2] {
     let (alpha, beta) = bracket.alpha_beta(&gamma);
     let s = gamma[0] * gamma[0] + gamma[1] * gamma[1];
     let u = gamma[0] * m[0] + gamma[1] * m[1];
-    let h = body.radius * gamma[2] + body.a;
+    let h = body.radius() * gamma[2] + body.a();
     [
         -0.5 / beta,
-        body.a * (m[2] - gamma[2] * u / s)
-            / (alpha * body.i1 * (body.i1 * body.radius * gamma[2] - body.i3 * h)),
+        body.a() * (m[2] - gamma[2] * u / s)
+            / (alpha * body.i1() * (body.i1() * body.radius() * gamma[2] - body.i3() * h)),
     ]
 }

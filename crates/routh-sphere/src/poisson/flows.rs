@@ -79,7 +79,7 @@ impl Field {
     fn weights(&self, body: &routh_ball::Body, k: f64) -> (f64, f64) {
         match self {
             Field::X1 => (1.0, 0.0),
-            Field::X2 => (body.i1, 2.0 * (body.i3 - body.i1) * k / body.i1),
+            Field::X2 => (body.i1(), 2.0 * (body.i3() - body.i1()) * k / body.i1()),
             Field::XHat2 => (0.0, 1.0),
         }
     }
@@ -296,7 +296,7 @@ impl Flow {
             energy: energy(&body, x0),
             start,
             c1,
-            drift: -alpha * body.i1 * f_prime,
+            drift: -alpha * body.i1() * f_prime,
             motion: Motion::Fixed { rate: 0.0 },
         };
         flow.motion = flow.theta_motion(flow.energy)?;
@@ -359,14 +359,14 @@ impl Flow {
         let [_, bb, _, _] = abcv(&self.bracket, &sph, Reading::Corrected);
         let (p, b) = (self.start[2], self.b);
         let alpha = self.bracket.alpha.at(&gamma);
-        let h = body.radius * gamma[2] + body.a;
-        let sqrt_i3 = body.i3.sqrt();
-        let d = alpha * sqrt_i3 * h * p + b * body.routh_g(&gamma) / (body.i1 * sqrt_i3);
+        let h = body.radius() * gamma[2] + body.a();
+        let sqrt_i3 = body.i3().sqrt();
+        let d = alpha * sqrt_i3 * h * p + b * body.routh_g(&gamma) / (body.i1() * sqrt_i3);
         let sin = theta.sin();
         (
-            e - 2.0 * body.potential(&gamma) - alpha * alpha * body.i1 * p * p
-                + b * b * body.m / (body.i1 * body.i3)
-                - d * d / (body.radius * body.radius * sin * sin),
+            e - 2.0 * body.potential(&gamma) - alpha * alpha * body.i1() * p * p
+                + b * b * body.m() / (body.i1() * body.i3())
+                - d * d / (body.radius() * body.radius() * sin * sin),
             bb,
         )
     }

@@ -49,7 +49,8 @@ impl PoissonMap {
         let ag = alpha * body.routh_g(&gamma);
         let s = g1 * g1 + g2 * g2;
         let u = g1 * m[0] + g2 * m[1];
-        let radial = g3 * (u * body.radius - b * ((h * h * body.m + body.i1) / body.i1)) / (ag * h);
+        let radial =
+            g3 * (u * body.radius() - b * ((h * h * body.m() + body.i1()) / body.i1())) / (ag * h);
         let turn = (g2 * m[0] - g1 * m[1]) / beta;
         [
             g1,
@@ -57,7 +58,7 @@ impl PoissonMap {
             g3,
             (g1 * radial + g2 * turn + g1 * self.c) / s,
             (g2 * radial - g1 * turn + g2 * self.c) / s,
-            m[2] / ag + b * h * (body.m / body.i1) / ag,
+            m[2] / ag + b * h * (body.m() / body.i1()) / ag,
         ]
     }
 
@@ -73,8 +74,8 @@ impl PoissonMap {
         let [g1, g2, _] = gamma;
         let (alpha, beta) = self.bracket.alpha_beta(&gamma);
         let h = body.contact_vector(&gamma)[2];
-        let m3 = alpha * body.routh_g(&gamma) * l[2] - b * h * (body.m / body.i1);
-        let u = (b - h * m3) / body.radius;
+        let m3 = alpha * body.routh_g(&gamma) * l[2] - b * h * (body.m() / body.i1());
+        let u = (b - h * m3) / body.radius();
         let turn = (l[0] * g2 - l[1] * g1) * beta;
         let s = g1 * g1 + g2 * g2;
         [
@@ -151,20 +152,20 @@ pub fn abcv(bracket: &FirstBracket, sph: &[f64; 4], reading: Reading) -> [f64; 4
     let (st, ct) = sph[1].sin_cos();
     let gamma = unit_normal(sph);
     let (alpha, beta) = bracket.alpha_beta(&gamma);
-    let (m, rr, a) = (body.m, body.radius, body.a);
+    let (m, rr, a) = (body.m(), body.radius(), body.a());
     let h2 = a * a + 2.0 * a * rr * ct + rr * rr * ct * ct;
     let r2 = a * a + 2.0 * a * rr * ct + rr * rr;
     let g = body.routh_g(&gamma);
     [
-        alpha * alpha * (body.i1 + body.i3 * h2 / (rr * rr * st * st)),
-        beta * beta / (body.i1 + m * r2),
-        2.0 * alpha * g * (rr * ct + a) / (body.i1 * rr * rr * st * st),
-        (body.i1
+        alpha * alpha * (body.i1() + body.i3() * h2 / (rr * rr * st * st)),
+        beta * beta / (body.i1() + m * r2),
+        2.0 * alpha * g * (rr * ct + a) / (body.i1() * rr * rr * st * st),
+        (body.i1()
             + m * match reading {
                 Reading::Printed => r2,
                 Reading::Corrected => h2,
             })
-            / (body.i1 * body.i1 * rr * rr * st * st),
+            / (body.i1() * body.i1() * rr * rr * st * st),
     ]
 }
 
@@ -178,7 +179,7 @@ pub fn energy_spherical(bracket: &FirstBracket, sph: &[f64; 4], b: f64, reading:
 
 /// (int-sph2): Routh's integral `H^2 = -alpha I1 p_phi`.
 pub fn routh_spherical(bracket: &FirstBracket, sph: &[f64; 4]) -> f64 {
-    -bracket.alpha.at(&unit_normal(sph)) * bracket.body.i1 * sph[2]
+    -bracket.alpha.at(&unit_normal(sph)) * bracket.body.i1() * sph[2]
 }
 
 /// The point `gamma = (sin phi sin theta, cos phi sin theta, cos theta)` of (sph-coord).
@@ -217,7 +218,7 @@ pub fn integrals_in_l(bracket: &FirstBracket, y: &[f64; 6], b: f64, reading: Rea
     let gamma = [y[0], y[1], y[2]];
     let l = [y[3], y[4], y[5]];
     let alpha = bracket.alpha.at(&gamma);
-    let (m, rr, i1, i3) = (body.m, body.radius, body.i1, body.i3);
+    let (m, rr, i1, i3) = (body.m(), body.radius(), body.i1(), body.i3());
     let r = body.contact_vector(&gamma);
     let (h, r2) = (r[2], dot(&r, &r));
     let g = body.routh_g(&gamma);

@@ -35,9 +35,10 @@ impl SecondAlphas {
             SecondAlphas::Printed => {
                 let r = body.contact_vector(gamma);
                 let h = r[2];
-                let k = h * h * body.m + body.i1;
-                let ig_r = g1 * r[0] * body.i1 + g2 * r[1] * body.i2 + g3 * r[2] * body.i3;
-                let q = (h * (body.m * body.a) + body.i1) * (body.i1 * body.radius) / ig_r;
+                let k = h * h * body.m() + body.i1();
+                let ig_r = g1 * r[0] * body.i1() + g2 * r[1] * body.i2() + g3 * r[2] * body.i3();
+                let q =
+                    (h * (body.m() * body.a()) + body.i1()) * (body.i1() * body.radius()) / ig_r;
                 let s = g1 * g1 + g2 * g2;
                 [
                     -k / g1 + g2 * g2 * q / g1,
@@ -64,8 +65,8 @@ impl SecondBracket {
     pub fn coupling<D: Real>(&self, gamma: &[D; 3]) -> D {
         let b = &self.body;
         let [a1, a2, _] = self.alphas.at(b, gamma);
-        let h = gamma[2] * b.radius + b.a;
-        (gamma[0] * a1 + gamma[1] * a2) * h * (b.m * b.radius) / (h * h * b.m + b.i1)
+        let h = gamma[2] * b.radius() + b.a();
+        (gamma[0] * a1 + gamma[1] * a2) * h * (b.m() * b.radius()) / (h * h * b.m() + b.i1())
     }
 }
 
@@ -79,7 +80,8 @@ impl Bivector for SecondBracket {
         let h = r[2];
         let u = g1 * m[0] + g2 * m[1];
         let g = b.routh_g(&gamma);
-        let w = dot(&gamma, &r) * dot(&m, &r) * (b.m * b.m) + (u * b.i3 + g3 * m[2] * b.i1) * b.m;
+        let w = dot(&gamma, &r) * dot(&m, &r) * (b.m() * b.m())
+            + (u * b.i3() + g3 * m[2] * b.i1()) * b.m();
         let p = self.coupling(&gamma);
         let wg = w / (g * g);
         let zero = lift::<D>(0.0);
@@ -90,9 +92,10 @@ impl Bivector for SecondBracket {
                 [g1 * g2 * a3, -g1 * g1 * a3, zero],
             ],
             [
-                -a1 * m[0] - a2 * m[1] + a3 * (g1 * m[2] - g3 * m[0]) - a3 * g1 * h * wg * b.radius,
-                p * m[1] + a3 * g1 * g2 * wg * (b.radius * b.radius),
-                -p * m[0] - a3 * g1 * g1 * wg * (b.radius * b.radius),
+                -a1 * m[0] - a2 * m[1] + a3 * (g1 * m[2] - g3 * m[0])
+                    - a3 * g1 * h * wg * b.radius(),
+                p * m[1] + a3 * g1 * g2 * wg * (b.radius() * b.radius()),
+                -p * m[0] - a3 * g1 * g1 * wg * (b.radius() * b.radius()),
             ],
         )
     }
@@ -109,9 +112,9 @@ pub fn g_eq3_coefficients(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2]
     let g = b.routh_g(gamma);
     let gamma_ir = dot(gamma, &super::first::inertia_times(b, &r));
     [
-        -1.0 / (2.0 * gamma[0] * alpha3 * b.i1),
-        (b.i1 * (b.i1 + b.m * b.a * h) - b.m * b.radius * gamma_ir)
-            / (2.0 * g * g * b.radius * b.i1 * b.i1 * h),
+        -1.0 / (2.0 * gamma[0] * alpha3 * b.i1()),
+        (b.i1() * (b.i1() + b.m() * b.a() * h) - b.m() * b.radius() * gamma_ir)
+            / (2.0 * g * g * b.radius() * b.i1() * b.i1() * h),
     ]
 }
 
@@ -126,10 +129,10 @@ pub fn g_eq3_coefficients(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2]
 pub fn g_eq3_coefficients_h1(bracket: &SecondBracket, gamma: &[f64; 3]) -> [f64; 2] {
     let b = &bracket.body;
     let alpha3 = bracket.alphas.at(b, gamma)[2];
-    let h = b.radius * gamma[2] + b.a;
+    let h = b.radius() * gamma[2] + b.a();
     let g = b.routh_g(gamma);
     [
         -1.0 / (2.0 * gamma[0] * alpha3),
-        (b.i1 + b.m * b.a * h) / (2.0 * g * g * b.radius * b.i1 * h),
+        (b.i1() + b.m() * b.a() * h) / (2.0 * g * g * b.radius() * b.i1() * h),
     ]
 }

@@ -85,7 +85,7 @@ impl SecondMap {
         Gauge::solve(
             |g| self.defect(g),
             gamma,
-            -b.a / b.radius,
+            -b.a() / b.radius(),
             &self.singularities(),
         )
     }
@@ -96,7 +96,7 @@ impl SecondMap {
     /// and `z = 0` (the `1/gamma3` of alpha3).
     fn singularities(&self) -> Vec<(f64, f64)> {
         let b = &self.bracket.body;
-        let (m, r, a, i1, i3) = (b.m, b.radius, b.a, b.i1, b.i3);
+        let (m, r, a, i1, i3) = (b.m(), b.radius(), b.a(), b.i1(), b.i3());
         let mut out = vec![(0.0, 0.0)];
         out.extend(quadratic_roots(
             m * r * r * (i3 - i1),

@@ -793,7 +793,7 @@ impl Nutation {
             let (p, _) = nut.cofactor_with_noise(&Phase::at_pole(pole));
             if !through && p > 0.0 && p.is_finite() {
                 let strength = pole * red.frame(pole).remainder
-                    / (2.0 * red.body().i1 * red.body().radius)
+                    / (2.0 * red.body().i1() * red.body().radius())
                     / p.sqrt();
                 nut.poles.push((pole, strength));
             }
@@ -994,9 +994,9 @@ impl Nutation {
         let b = red.body();
         let spin = red.spin(phase.u);
         let rate_noise = f64::EPSILON
-            * ((phase.u * quotient).abs() / (b.i1 * b.radius)
+            * ((phase.u * quotient).abs() / (b.i1() * b.radius())
                 + spin.abs()
-                + quotient_scale / (b.i1 * b.radius));
+                + quotient_scale / (b.i1() * b.radius()));
         let f_noise = 0.5 * f * p_noise;
         let singular: f64 = self
             .poles
@@ -1030,7 +1030,7 @@ impl Nutation {
         } else {
             (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
         };
-        let divided = red.jellett_divided(pole, x) * (red.body().i3 * red.k());
+        let divided = red.jellett_divided(pole, x) * (red.body().i3() * red.k());
         if through {
             (divided / other, (divided / other).abs())
         } else {

@@ -114,18 +114,18 @@ impl PoleGeometry {
     }
 
     fn new(b: &Body, pole: f64) -> Self {
-        let hp = b.radius * pole + b.a;
-        let gp = (b.i1 * b.i3 + b.i3 * b.m * hp * hp).sqrt();
+        let hp = b.radius() * pole + b.a();
+        let gp = (b.i1() * b.i3() + b.i3() * b.m() * hp * hp).sqrt();
         PoleGeometry {
             hp,
-            pr: pole * b.radius,
+            pr: pole * b.radius(),
             gp,
             gp2: gp * gp,
-            amr2: b.i1 * b.m * b.radius * b.radius,
-            cmpr: b.i3 * b.m * pole * b.radius,
-            jellett_even: hp * hp * b.i1 * b.m * b.radius * b.radius,
-            jellett_odd: b.i1 * b.i3 * pole * b.radius,
-            lift: 2.0 * b.m * b.gravity * b.a * pole,
+            amr2: b.i1() * b.m() * b.radius() * b.radius(),
+            cmpr: b.i3() * b.m() * pole * b.radius(),
+            jellett_even: hp * hp * b.i1() * b.m() * b.radius() * b.radius(),
+            jellett_odd: b.i1() * b.i3() * pole * b.radius(),
+            lift: 2.0 * b.m() * b.gravity() * b.a() * pole,
         }
     }
 }
@@ -162,15 +162,15 @@ impl Reduction {
         // Q'' involves g'' ~ (m R^2)^2 / g^3 with g^2 >= A C: moments far below m R^2 make it
         // overflow, and 0 * inf in its derivatives gives NaN (found by fuzzing: I3 = 7e-304,
         // m R^2 = 10).
-        let scale = body.m * body.radius * body.radius;
-        if !(body.i1.min(body.i3) >= MIN_MOMENT_RATIO * scale) {
+        let scale = body.m() * body.radius() * body.radius();
+        if !(body.i1().min(body.i3()) >= MIN_MOMENT_RATIO * scale) {
             return Err(RouthError::Singular {
                 formula: "Routh's g(u) of (rho) and its derivatives",
                 reason: format!(
                     "I1 = {:e} or I3 = {:e} is below {MIN_MOMENT_RATIO:e} m R^2 = {:e}: the \
                      derivatives of g overflow",
-                    body.i1,
-                    body.i3,
+                    body.i1(),
+                    body.i3(),
                     MIN_MOMENT_RATIO * scale
                 ),
             });
@@ -190,10 +190,10 @@ impl Reduction {
             let (hp, gp) = red.at_pole(pole);
             let spin = k / gp;
             red.frames[frame_index(pole)] = PoleFrame {
-                remainder: h3 - body.i3 * hp * spin,
+                remainder: h3 - body.i3() * hp * spin,
                 excess: h1
-                    - 2.0 * body.m * body.gravity * (body.radius + body.a * pole)
-                    - body.i3 * spin * spin,
+                    - 2.0 * body.m() * body.gravity() * (body.radius() + body.a() * pole)
+                    - body.i3() * spin * spin,
             };
         }
         Ok(red)
@@ -248,8 +248,8 @@ impl Reduction {
         let spin = k / gp;
         Reduction {
             body: self.body,
-            h1: e_top + 2.0 * b.m * b.gravity * (b.radius + b.a) + b.i3 * spin * spin,
-            h3: n_top + b.i3 * hp * spin,
+            h1: e_top + 2.0 * b.m() * b.gravity() * (b.radius() + b.a()) + b.i3() * spin * spin,
+            h3: n_top + b.i3() * hp * spin,
             k,
             frames: [
                 PoleFrame {
@@ -312,13 +312,13 @@ impl Reduction {
             omega[2] * r[0] - omega[0] * r[2],
             omega[0] * r[1] - omega[1] * r[0],
         ];
-        let rolling = cross.iter().map(|c| c * c).sum::<f64>() * b.m;
-        let rolling_noise = 2.0 * b.m * norm(cross) * norm(omega) * norm(r);
+        let rolling = cross.iter().map(|c| c * c).sum::<f64>() * b.m();
+        let rolling_noise = 2.0 * b.m() * norm(cross) * norm(omega) * norm(r);
         let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
-        let tangential = b.i1 * b.radius * (omega[0] * gamma[0] + omega[1] * gamma[1]);
+        let tangential = b.i1() * b.radius() * (omega[0] * gamma[0] + omega[1] * gamma[1]);
         let tangential_noise =
-            b.i1 * b.radius * ((omega[0] * gamma[0]).abs() + (omega[1] * gamma[1]).abs());
-        let kinetic = b.i1 * (omega[0] * omega[0] + omega[1] * omega[1]);
+            b.i1() * b.radius() * ((omega[0] * gamma[0]).abs() + (omega[1] * gamma[1]).abs());
+        let kinetic = b.i1() * (omega[0] * omega[0] + omega[1] * omega[1]);
         let e = INTEGRAL_EPSILONS * f64::EPSILON;
         let mut frames = [PoleFrame {
             remainder: 0.0,
@@ -339,9 +339,9 @@ impl Reduction {
             };
             let (_, gp) = self.at_pole(pole);
             let (g2_change, g) = self.g_change(pole, x0);
-            let shift = b.i3 * g * omega[2] * x0 * self.jellett_divided(pole, x0);
-            let lift = 2.0 * b.m * b.gravity * b.a * pole * x0;
-            let spin_change = b.i3 * omega[2] * omega[2] * g2_change / (gp * gp);
+            let shift = b.i3() * g * omega[2] * x0 * self.jellett_divided(pole, x0);
+            let lift = 2.0 * b.m() * b.gravity() * b.a() * pole * x0;
+            let spin_change = b.i3() * omega[2] * omega[2] * g2_change / (gp * gp);
             let i = frame_index(pole);
             frames[i] = PoleFrame {
                 remainder: tangential - shift,
@@ -375,8 +375,11 @@ impl Reduction {
     /// [`Body::routh_g`], written in u so that it can be differentiated at the poles).
     pub fn routh_g<D: Scalar>(&self, u: D) -> D {
         let b = &self.body;
-        let (s2, h) = (lift::<D>(1.0) - u * u, u * b.radius + b.a);
-        (s2 * (b.i1 * b.m * b.radius * b.radius) + h * h * (b.i3 * b.m) + b.i1 * b.i3).sqrt()
+        let (s2, h) = (lift::<D>(1.0) - u * u, u * b.radius() + b.a());
+        (s2 * (b.i1() * b.m() * b.radius() * b.radius())
+            + h * h * (b.i3() * b.m())
+            + b.i1() * b.i3())
+        .sqrt()
     }
 
     /// The spin `omega3 = K / g(u)` of (raus-int).
@@ -393,7 +396,7 @@ impl Reduction {
 
     /// `N` at `x = 1 - p u` from the pole `p`.
     pub fn jellett_remainder_in_frame<D: Real>(&self, pole: f64, x: D) -> D {
-        x * self.jellett_divided(pole, x) * (self.body.i3 * self.k) + self.frame(pole).remainder
+        x * self.jellett_divided(pole, x) * (self.body.i3() * self.k) + self.frame(pole).remainder
     }
 
     /// `Q(u) = (du/dt)^2`, the reduced equation of the tilt (module docs).
@@ -446,20 +449,20 @@ impl Reduction {
         let b = &self.body;
         let geo = self.geometry(pole);
         let [k, remainder, excess] = parameters;
-        let (ai, r) = (b.i1, b.radius);
+        let (ai, r) = (b.i1(), b.radius());
         let h = geo.height(x);
         let s2 = x * (-x + 2.0);
         let (g2_change, g) = g_change_at(geo, x, h);
         let w3 = k / g;
-        let n = x * jellett_divided_at(geo, x, h, g) * k * b.i3 + remainder;
-        let inertia = (s2 * (r * r) + h * h) * b.m + ai;
+        let n = x * jellett_divided_at(geo, x, h, g) * k * b.i3() + remainder;
+        let inertia = (s2 * (r * r) + h * h) * b.m() + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
             s2 * excess / inertia,
             s2 * x * geo.lift / inertia,
-            s2 * k * k * g2_change / (g * g * geo.gp2) * b.i3 / inertia,
+            s2 * k * k * g2_change / (g * g * geo.gp2) * b.i3() / inertia,
             -(n * n) / (ai * r * r) / inertia,
-            -(rolling * rolling * b.m) / inertia,
+            -(rolling * rolling * b.m()) / inertia,
         ]
     }
 
@@ -539,7 +542,7 @@ impl Reduction {
     /// Legendre rules over u bisect toward them ([`crate::quadrature::gauss`]).
     pub fn singularities(&self) -> Vec<(f64, f64)> {
         let b = &self.body;
-        let (ai, c, m, r, a) = (b.i1, b.i3, b.m, b.radius, b.a);
+        let (ai, c, m, r, a) = (b.i1(), b.i3(), b.m(), b.radius(), b.a());
         let mut points = vec![];
         if a != 0.0 {
             points.push((-(ai + m * (r * r + a * a)) / (2.0 * m * r * a), 0.0));
@@ -591,7 +594,7 @@ impl Reduction {
     /// The precession rate `dpsi/dt = u N(u) / (A R (1 - u^2)) - omega3` (module docs),
     /// from Jellett's quotient `N / (1 - u^2)`.
     pub fn precession_from_quotient(&self, u: f64, quotient: f64) -> f64 {
-        u * quotient / (self.body.i1 * self.body.radius) - self.spin(u)
+        u * quotient / (self.body.i1() * self.body.radius()) - self.spin(u)
     }
 
     /// The precession rate `dpsi/dt` at `|u| < 1`.
@@ -612,7 +615,7 @@ impl Reduction {
         omega_n: f64,
         quotient: f64,
     ) -> ([f64; 3], [f64; 3]) {
-        let omega_t = s * quotient / (self.body.i1 * self.body.radius);
+        let omega_t = s * quotient / (self.body.i1() * self.body.radius());
         let (sp, cp) = psi.sin_cos();
         let gamma = [s * cp, s * sp, u];
         let omega = [

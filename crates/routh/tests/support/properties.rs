@@ -84,8 +84,8 @@ pub fn case_text(text: &str) {
     match Case::parse(text, "fuzz.toml") {
         Ok(case) => {
             let b = case.ball;
-            assert!(all_finite(&[b.m, b.radius, b.gravity]));
-            assert!(all_finite(&b.inertia) && all_finite(&b.com));
+            assert!(all_finite(&[b.m(), b.radius(), b.gravity()]));
+            assert!(all_finite(&b.inertia()) && all_finite(&b.com()));
             assert!(state_finite(&case.initial));
             field_and_integrals_finite(&b, &case.initial);
             let i = case.integration;
