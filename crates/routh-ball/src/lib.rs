@@ -28,6 +28,7 @@ pub mod projection;
 pub mod range;
 pub mod simulate;
 pub mod state;
+pub mod units;
 
 pub(crate) use routh_integrate::{self as integrate, batch, differential, scalar};
 

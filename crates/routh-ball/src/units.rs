@@ -1,0 +1,265 @@
+//! The units of a problem: the radius R, the mass m and a time of the motion, in which a
+//! computation that decides something (a threshold, a tolerance, the root of a polynomial) is
+//! made dimensionless once, at its entry, so that the same motion written in other units gets
+//! the same answer.
+//!
+//! The reduced equations (mg-eq) are covariant under the three scalings: lengths by `l`
+//! (`R, a, com -> l R, ...`, `I -> l^2 I`, `G -> l G`, `M -> l^2 M`), masses by `k`
+//! (`m, I, M -> k m, k I, k M`) and times by `s` (`t -> s t`, `omega -> omega / s`,
+//! `G -> G / s^2`, `M -> M / s`). In the units `(R, m, T)` a ball has `R = m = 1`, moments
+//! `I / (m R^2)`, offset `a / R` and gravity `G T^2 / R`; a state keeps gamma and has
+//! `M T / (m R^2)`. The time T is that of the motion: the faster of the fall,
+//! `sqrt(R / G)`, and the spin, `1 / |omega|`, so that both the dimensionless gravity and
+//! the dimensionless spin are at most 1 and one of them is 1 (T = 1 for a ball at rest
+//! without gravity, whose motion has no time).
+
+use crate::ball::{AsBall, Ball};
+use crate::body::Body;
+use crate::error::Result;
+use crate::state::State;
+
+/// The units of length, mass and time of a problem (see the module's documentation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Units {
+    length: f64,
+    mass: f64,
+    time: f64,
+}
+
+impl Units {
+    /// The units of `ball` moving with angular velocity `omega`: R, m and
+    /// `T = 1 / max(sqrt(G / R), |omega|)` (1 when both vanish).
+    pub fn of(ball: &impl AsBall, omega: &[f64; 3]) -> Units {
+        let ball = ball.ball();
+        let spin = omega[0].hypot(omega[1]).hypot(omega[2]);
+        Self::with_rate(&ball, spin)
+    }
+
+    /// The units of `ball` for a motion whose angular velocity is about `rate` (finite,
+    /// >= 0): `T = 1 / max(sqrt(G / R), rate)` (1 when both vanish).
+    pub fn with_rate(ball: &impl AsBall, rate: f64) -> Units {
+        let ball = ball.ball();
+        // Square roots taken apart, so that neither R / G nor G / R overflows.
+        let fall = if ball.gravity() > 0.0 {
+            ball.radius().sqrt() / ball.gravity().sqrt()
+        } else {
+            f64::INFINITY
+        };
+        let spin = if rate > 0.0 {
+            1.0 / rate
+        } else {
+            f64::INFINITY
+        };
+        let time = fall.min(spin);
+        Units {
+            length: ball.radius(),
+            mass: ball.m(),
+            time: if time > 0.0 && time.is_finite() {
+                time
+            } else {
+                1.0
+            },
+        }
+    }
+
+    /// The unit of length, R.
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// The unit of mass, m.
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// The unit of time, T.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The unit of moments of inertia, `m R^2`.
+    pub fn inertia(&self) -> f64 {
+        self.mass * self.length * self.length
+    }
+
+    /// The unit of angular momentum, `m R^2 / T`.
+    pub fn momentum(&self) -> f64 {
+        self.inertia() / self.time
+    }
+
+    /// The unit of energy, `m R^2 / T^2`.
+    pub fn energy(&self) -> f64 {
+        self.momentum() / self.time
+    }
+
+    /// A moment of inertia in these units, `I / (m R^2)` (divided in turn, so that `m R^2`
+    /// never overflows).
+    fn moment(&self, i: f64) -> f64 {
+        i / self.mass / self.length / self.length
+    }
+
+    /// A gravity in these units, `G T^2 / R`.
+    fn gravity(&self, g: f64) -> f64 {
+        g * self.time / self.length * self.time
+    }
+
+    /// A ball in these units (`R = m = 1` when the units are its own).
+    pub fn ball(&self, ball: &Ball) -> Result<Ball> {
+        let l = self.length;
+        Ball::new(
+            ball.m() / self.mass,
+            ball.radius() / l,
+            ball.inertia().map(|i| self.moment(i)),
+            ball.com().map(|c| c / l),
+            self.gravity(ball.gravity()),
+        )
+    }
+
+    /// A Routh sphere in these units.
+    pub fn body(&self, body: &Body) -> Result<Body> {
+        Body::new(
+            body.m() / self.mass,
+            body.radius() / self.length,
+            body.a() / self.length,
+            self.moment(body.i1()),
+            self.moment(body.i2()),
+            self.moment(body.i3()),
+            self.gravity(body.gravity()),
+        )
+    }
+
+    /// A state in these units: gamma as it is, `M T / (m R^2)`.
+    pub fn state(&self, state: &State) -> State {
+        State {
+            gamma: state.gamma,
+            m: state.m.map(|v| self.moment(v) * self.time),
+        }
+    }
+
+    /// A state of these units back in the problem's units: `M (m R^2 / T)`.
+    pub fn state_back(&self, state: &State) -> State {
+        let unit = self.momentum();
+        State {
+            gamma: state.gamma,
+            m: state.m.map(|v| v * unit),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::vector_field;
+
+    /// A Routh sphere and a state scaled in mass by `k`, length by `l` and time by `s`: the
+    /// same motion in other units.
+    fn scaled(body: &Body, state: &State, [k, l, s]: [f64; 3]) -> (Body, State) {
+        let b = Body::new(
+            k * body.m(),
+            l * body.radius(),
+            l * body.a(),
+            k * l * l * body.i1(),
+            k * l * l * body.i2(),
+            k * l * l * body.i3(),
+            l / (s * s) * body.gravity(),
+        )
+        .unwrap();
+        let x = State {
+            gamma: state.gamma,
+            m: state.m.map(|v| k * l * l / s * v),
+        };
+        (b, x)
+    }
+
+    fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
+        a.iter()
+            .zip(b)
+            .all(|(x, y)| (x - y).abs() <= tol * y.abs().max(1.0))
+    }
+
+    /// Copies of one motion in units from 1e-30 to 1e30 have the same dimensionless body and
+    /// state to a few ulp (each scaling is a handful of correctly rounded operations), and
+    /// the dimensionless field (mg-eq) is the original one in units of 1 / T: the field is
+    /// covariant, so a computation made at the entry in these units cannot see the units.
+    #[test]
+    fn copies_in_other_units_are_one_dimensionless_problem() {
+        let body = Body::default();
+        let state = State::from_omega(
+            &body,
+            [0.3_f64.sin(), 0.0, 0.3_f64.cos()],
+            [0.5, 0.2, 8.0],
+            crate::state::Normalise::Reject,
+        )
+        .unwrap();
+        for gravity in [true, false] {
+            let body = if gravity {
+                body
+            } else {
+                body.without_gravity()
+            };
+            let units = Units::of(&body, &state.omega(&body));
+            let (b0, x0) = (units.body(&body).unwrap(), units.state(&state));
+            assert_eq!((b0.m(), b0.radius()), (1.0, 1.0));
+            let f0 = vector_field(&b0, &x0.to_array());
+            let f = vector_field(&body, &state.to_array());
+            let t = units.time();
+            let back: Vec<f64> = (0..6)
+                .map(|i| {
+                    if i < 3 {
+                        f0[i] / t
+                    } else {
+                        f0[i] * units.momentum() / t
+                    }
+                })
+                .collect();
+            assert!(close(&back, &f, 1e-13), "{back:?} {f:?}");
+            for factors in [
+                [1e12, 1.0, 1.0],
+                [1e-30, 1e10, 1e-5],
+                [1e30, 1e-8, 1e7],
+                [3.0, 7.0, 0.1],
+            ] {
+                let (b, x) = scaled(&body, &state, factors);
+                let u = Units::of(&b, &x.omega(&b));
+                let (b1, x1) = (u.body(&b).unwrap(), u.state(&x));
+                let p = |b: &Body| {
+                    [
+                        b.m(),
+                        b.radius(),
+                        b.a(),
+                        b.i1(),
+                        b.i2(),
+                        b.i3(),
+                        b.gravity(),
+                    ]
+                };
+                assert!(close(&p(&b1), &p(&b0), 1e-14), "{factors:?}: {b1:?} {b0:?}");
+                assert!(close(&x1.to_array(), &x0.to_array(), 1e-14), "{factors:?}");
+                assert!(close(&u.state_back(&x1).to_array(), &x.to_array(), 1e-14));
+            }
+        }
+    }
+
+    /// The time unit is the faster of the fall and the spin, finite and positive for every
+    /// valid body, including ones whose G / R overflows, and 1 for a ball at rest without
+    /// gravity.
+    #[test]
+    fn the_time_unit_is_always_finite() {
+        let body = Body::new(1.0, 1e-300, 0.0, 1e-301, 1e-301, 1e-301, 1e300).unwrap();
+        let t = Units::with_rate(&body, 0.0).time();
+        assert!(
+            t > 0.0 && t.is_finite() && (t / 1e-300 - 1.0).abs() < 1e-15,
+            "{t}"
+        );
+        assert_eq!(
+            Units::with_rate(&Body::default().without_gravity(), 0.0).time(),
+            1.0
+        );
+        assert_eq!(
+            Units::with_rate(&Body::default().without_gravity(), 4.0).time(),
+            0.25
+        );
+        let fall = (1.0_f64 / 9.81).sqrt();
+        assert!((Units::with_rate(&Body::default(), 1.0).time() - fall).abs() < 1e-16);
+    }
+}
