@@ -8,12 +8,12 @@
 use pyo3::{PyErr, PyResult};
 use routh_core::ball::AsBall;
 use routh_core::integrate::{
-    locate, Direction, EventSpec, Method, OdeSystem, Stats, Stepper, Unlocated,
+    locate, Control, Direction, EventSpec, Method, OdeSystem, Stats, Stepper, Stop, Unlocated,
 };
 use routh_core::problem::{DenseSolution, Status};
 use routh_core::projection::LevelSet;
 use routh_core::simulate::{
-    integrate_span, project_onto, reduced, Drift, Next, Settings as LibrarySettings, Span,
+    integrate_span, project_onto, reduced, Drift, Settings as LibrarySettings, Span,
 };
 use routh_core::RouthError;
 use std::cell::RefCell;
@@ -102,27 +102,21 @@ pub struct Hooks<'h, const N: usize> {
     pub interrupt: &'h mut dyn FnMut() -> PyResult<()>,
 }
 
-/// Why a run ended with an error: the library refused it, or a hook raised an exception
-/// (raised after the run). The error type of the run's callbacks.
-enum Halt {
-    /// Invalid settings or samples.
-    Refused(RouthError),
-    /// An exception of a hook.
-    Python(PyErr),
-}
+/// The error of a run's callbacks: an exception of a hook, or the library's refusal of the
+/// settings or samples as one, raised after the run. The type [`integrate_span`] asks of its
+/// callbacks' error is one that converts from [`RouthError`], which `PyErr` cannot here
+/// (neither is of this crate).
+struct Raised(PyErr);
 
-impl From<RouthError> for Halt {
+impl From<RouthError> for Raised {
     fn from(e: RouthError) -> Self {
-        Halt::Refused(e)
+        Raised(crate::convert::python_error(e))
     }
 }
 
-impl From<Halt> for PyErr {
-    fn from(halt: Halt) -> Self {
-        match halt {
-            Halt::Refused(e) => crate::convert::python_error(e),
-            Halt::Python(e) => e,
-        }
+impl From<Raised> for PyErr {
+    fn from(raised: Raised) -> Self {
+        raised.0
     }
 }
 
@@ -177,7 +171,7 @@ impl<const N: usize> Events<'_, N> {
         y: &[f64; N],
         raw: &[f64; N],
         project: &dyn Fn([f64; N]) -> [f64; N],
-    ) -> Result<Next<N>, PyErr> {
+    ) -> Result<Control<N>, PyErr> {
         let g_end = (0..self.g_prev.len())
             .map(|i| (self.hooks.event)(i, t, raw))
             .collect::<PyResult<Vec<f64>>>()?;
@@ -208,7 +202,7 @@ impl<const N: usize> Events<'_, N> {
                     "event {i} could not be located in [{ta}, {tb}] (its function is not \
                      finite there)"
                 ));
-                return Ok(Next::Stop);
+                return Ok(Control::Stop);
             }
         };
         for (i, g1) in g_end.into_iter().enumerate() {
@@ -224,10 +218,10 @@ impl<const N: usize> Events<'_, N> {
             self.t_events[crossing.event].push(te);
             self.y_events[crossing.event].push(ye);
             if crossing.terminal {
-                return Ok(Next::StopAt { t: te, y: ye });
+                return Ok(Control::StopAt { t: te, y: ye });
             }
         }
-        Ok(Next::Continue)
+        Ok(Control::Continue)
     }
 }
 
@@ -293,7 +287,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         None,
         &mut |t, y| {
             reported.borrow_mut().push((t, *y));
-            Ok::<_, Halt>(())
+            Ok::<_, Raised>(())
         },
         &mut |t, y, stepper| {
             if dense {
@@ -306,22 +300,26 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             };
             let next = events
                 .on_step(stepper, t, y, &raw, &project)
-                .map_err(Halt::Python)?;
+                .map_err(Raised)?;
             let end = match next {
-                Next::Stop => return Ok(next),
-                Next::StopAt { t, y } => (t, y),
-                Next::Continue => (t, *y),
+                Control::Stop => return Ok(next),
+                Control::StopAt { t, y } => (t, y),
+                Control::Continue => (t, *y),
             };
             if steps_output {
                 reported.borrow_mut().push(end);
             }
-            if next == Next::Continue && stepper.stats().steps % SIGNAL_CHECK_STEPS == 0 {
-                (events.hooks.interrupt)().map_err(Halt::Python)?;
+            if next == Control::Continue && stepper.stats().steps % SIGNAL_CHECK_STEPS == 0 {
+                (events.hooks.interrupt)().map_err(Raised)?;
             }
             Ok(next)
         },
     )?;
-    let (status, failure) = events.ending(observed.failure.map(|e| e.to_string()));
+    let failure = match &observed.stop {
+        Stop::Failed(e) => Some(e.to_string()),
+        Stop::Reached | Stop::Event | Stop::Stopped => None,
+    };
+    let (status, failure) = events.ending(failure);
     let reported = reported.into_inner();
     let summary = observed.summary;
     Ok(Run {

@@ -235,17 +235,17 @@ impl Problem {
                 }
             },
         )?;
-        let (status, message, events) = match (&run.failure, run.stop) {
-            (Some(e), _) => (Status::Failed, e.to_string(), Vec::new()),
-            (None, Stop::Event { t, y }) => (
+        let (status, message, events) = match &run.stop {
+            Stop::Failed(e) => (Status::Failed, e.to_string(), Vec::new()),
+            Stop::Event => (
                 Status::Event,
-                format!("the event was found at t = {t}"),
+                format!("the event was found at t = {}", run.t),
                 vec![Sample {
-                    t,
-                    state: State::from_array(&y),
+                    t: run.t,
+                    state: State::from_array(&run.y),
                 }],
             ),
-            (None, _) => (
+            Stop::Reached | Stop::Stopped => (
                 Status::Reached,
                 format!("t_end = {} was reached", self.settings.t_end),
                 Vec::new(),

@@ -8,8 +8,8 @@ use crate::error::{Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
-    check_samples, drive, stepper, Control, Drive, EventFn, IntegrateError, Method, OdeSystem,
-    OnSample, Options, Projection, Stepper, Stop,
+    check_samples, drive, stepper, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
+    Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -315,28 +315,26 @@ pub fn run<S: OdeSystem<N>, const N: usize>(
 }
 
 /// What [`integrate_observed`] and [`integrate_span`] return: the summary, how the run
-/// stopped, the time and state reached, and the integrator's failure (then the summary holds
-/// the state reached).
+/// stopped (with the integrator's failure, if any: then the summary holds the state reached),
+/// and the time and state reached.
 #[derive(Debug, Clone)]
 pub struct Observed<const N: usize> {
     /// The summary of the run (up to the failure, if any).
     pub summary: Summary,
-    /// How the driver stopped (meaningless after a failure).
-    pub stop: Stop<N>,
+    /// How the driver stopped; [`Stop::Failed`] with the integrator's error if it failed.
+    pub stop: Stop,
     /// The time reached.
     pub t: f64,
     /// The (whole, possibly extended) state reached.
     pub y: [f64; N],
-    /// The integrator's error, if it failed.
-    pub failure: Option<IntegrateError>,
 }
 
 impl<const N: usize> Observed<N> {
     /// The summary of a run that reached its end, or the integrator's failure as an error.
     pub fn summary(self) -> Result<Summary> {
-        match self.failure {
-            Some(e) => Err(e.into()),
-            None => Ok(self.summary),
+        match self.stop {
+            Stop::Failed(e) => Err(e.into()),
+            _ => Ok(self.summary),
         }
     }
 }
@@ -355,40 +353,11 @@ pub struct Span<'a, const N: usize> {
     pub samples: &'a [f64],
 }
 
-/// What the per-step observer of [`integrate_span`] asks for.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Next<const N: usize> {
-    /// Go on.
-    Continue,
-    /// Stop after this step.
-    Stop,
-    /// Stop at the time `t` within this step, with the state `y` there (an event the
-    /// observer located): the samples after `t` are not reported and the run ends at `(t, y)`.
-    StopAt {
-        /// The time within the step.
-        t: f64,
-        /// The state there.
-        y: [f64; N],
-    },
-}
-
 /// The per-step observer of [`integrate_span`]: `on_step(t, y, stepper)` after each accepted
-/// step, with the (projected) step end and the stepper (for its dense output on the step).
+/// step, with the (projected) step end and the stepper (for its dense output on the step); it
+/// may stop the run after the step or within it ([`Control`]).
 pub type StepObserver<'a, E, const N: usize> =
-    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> std::result::Result<Next<N>, E> + 'a;
-
-/// Why the driver stopped early inside [`integrate_span`]: the integrator failed (reported in
-/// [`Observed::failure`]) or a callback returned its error `E` (returned as is).
-enum Halt<E> {
-    Integrate(IntegrateError),
-    Callback(E),
-}
-
-impl<E> From<IntegrateError> for Halt<E> {
-    fn from(e: IntegrateError) -> Self {
-        Halt::Integrate(e)
-    }
-}
+    dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> std::result::Result<Control<N>, E> + 'a;
 
 /// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: [`integrate_span`]
 /// over `[0, settings.t_end]` with `settings.samples` equally spaced samples, `on_step(stepper)`
@@ -428,7 +397,7 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         on_sample,
         &mut |_, _, stepper| {
             on_step(stepper);
-            Ok(Next::Continue)
+            Ok(Control::Continue)
         },
     )
 }
@@ -438,15 +407,16 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
 /// `settings` (its `t_end` and `samples` are not used): the one use of the library's driver
 /// [`drive`] by `simulate`, [`crate::problem::Problem`], the sweep and Python.
 ///
-/// After each accepted step, in this order: a non-finite state ends the run with
-/// [`IntegrateError::NonFinite`]; `on_step(t, y, stepper)` sees the (projected) step end and
-/// may stop the run, possibly at a time within the step ([`Next::StopAt`]); the samples up to
-/// the end (projected, with `settings.project`) go to `on_sample`; the integrals are tracked at
-/// the samples and the step end. `event` stops the run at its first sign change (as in
-/// [`drive`]). Invalid settings or samples and errors of the callbacks are errors; a failure of
-/// the integrator is reported in [`Observed::failure`] with the state reached. The callbacks'
-/// error type `E` (the library's [`RouthError`], or one holding it, such as the front ends'
-/// `AppError`) is the error type of the result.
+/// After each accepted step, as in [`drive`]: a non-finite state ends the run with
+/// [`IntegrateError::NonFinite`](crate::integrate::IntegrateError::NonFinite);
+/// `on_step(t, y, stepper)` sees the (projected) step end and may stop the run, possibly at a
+/// time within the step ([`Control::StopAt`]); the samples up to the end (projected, with
+/// `settings.project`) go to `on_sample`; the integrals are tracked at the samples and the step
+/// end. `event` stops the run at its first sign change (as in [`drive`]). Invalid settings or
+/// samples and errors of the callbacks are errors; a failure of the integrator is reported in
+/// [`Observed::stop`] ([`Stop::Failed`]) with the state reached. The callbacks' error type `E`
+/// (the library's [`RouthError`], or one holding it, such as the front ends' `AppError`) is the
+/// error type of the result.
 #[allow(clippy::too_many_arguments)]
 pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     body: &impl AsBall,
@@ -470,17 +440,13 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     })?;
     check_samples(t0, t1, samples).map_err(RouthError::from)?;
     let start = Instant::now();
-    let dir = if t1 >= t0 { 1.0 } else { -1.0 };
     let x0 = reduced(&y0);
     let level = settings.project.then(|| LevelSet::through(body, &x0));
     let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
     let project_step = project_every(level.as_ref(), settings.project_every);
-    let opts = Options {
-        rtol: settings.rtol,
-        atol: settings.atol,
-        max_steps: settings.max_steps,
-        ..Options::default()
-    };
+    let opts = Options::new(settings.rtol, settings.atol)
+        .and_then(|opts| opts.with_max_steps(settings.max_steps))
+        .map_err(RouthError::from)?;
     let method = auto::resolve(
         settings.method,
         settings.rtol.min(settings.atol),
@@ -495,60 +461,35 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         event,
     };
     let drift = RefCell::new(DriftTracker::new(body, &x0));
-    // The samples of a step wait for the observer, which may end the run within the step.
-    let pending: RefCell<Vec<(f64, [f64; N])>> = RefCell::new(Vec::new());
-    let mut report = |until: f64| -> std::result::Result<(), E> {
-        let mut pending = pending.borrow_mut();
-        for (s, mut y) in pending.drain(..) {
-            if (s - until) * dir <= 0.0 {
-                project(&mut y);
-                drift.borrow_mut().observe(body, &reduced(&y));
-                on_sample(s, &y)?;
-            }
-        }
-        Ok(())
-    };
-    let mut stopped_at = None;
-    let mut last_good = t0;
+    // The point where a step ended, tracked after the samples of its step, which `drive`
+    // reports after `on_step`.
+    let mut step_end = None;
     let outcome = drive(
         stepper.as_mut(),
         &plan,
-        &mut |t, y| {
-            pending.borrow_mut().push((t, *y));
-            Ok(())
+        &mut |s, y| {
+            let mut y = *y;
+            project(&mut y);
+            drift.borrow_mut().observe(body, &reduced(&y));
+            on_sample(s, &y)
         },
         &mut |t, y, stepper| {
-            if y.iter().any(|v| !v.is_finite()) {
-                return Err(Halt::Integrate(IntegrateError::NonFinite { t }));
+            if let Some(end) = step_end.take() {
+                drift.borrow_mut().observe(body, &reduced(&end));
             }
-            last_good = t;
-            let next = on_step(t, y, stepper).map_err(Halt::Callback)?;
-            let (until, y_last) = match next {
-                Next::StopAt { t, y } => (t, y),
-                Next::Continue | Next::Stop => (t, *y),
-            };
-            report(until).map_err(Halt::Callback)?;
-            drift.borrow_mut().observe(body, &reduced(&y_last));
-            Ok(match next {
-                Next::Continue => Control::Continue,
-                Next::Stop => Control::Stop,
-                Next::StopAt { t, y } => {
-                    stopped_at = Some((t, y));
-                    Control::Stop
-                }
-            })
+            let control = on_step(t, y, stepper)?;
+            step_end = Some(match control {
+                Control::StopAt { y, .. } => y,
+                Control::Continue | Control::Stop => *y,
+            });
+            Ok(control)
         },
-    );
-    let (stop, t, y_end, failure) = match outcome {
-        Ok(o) => match stopped_at {
-            Some((t, y)) => (Stop::Stopped { t }, t, y, None),
-            None => (o.stop, o.t, o.y, None),
-        },
-        Err(Halt::Integrate(e)) => (Stop::Reached, stepper.t(), *stepper.y(), Some(e)),
-        Err(Halt::Callback(e)) => return Err(e),
-    };
-    report(if failure.is_some() { last_good } else { t })?;
-    let stats = stepper.stats();
+    )?;
+    let mut drift = drift.into_inner();
+    if let Some(end) = step_end {
+        drift.observe(body, &reduced(&end));
+    }
+    let stats = outcome.stats;
     Ok(Observed {
         summary: Summary {
             method: method.to_string(),
@@ -559,14 +500,13 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
             projected: settings.project,
             project_every: settings.project_every,
             initial_state: State::from_array(&x0),
-            final_state: State::from_array(&reduced(&y_end)),
-            integrals: drift.into_inner().report(),
+            final_state: State::from_array(&reduced(&outcome.y)),
+            integrals: drift.report(),
             elapsed_s: start.elapsed().as_secs_f64(),
         },
-        stop,
-        t,
-        y: y_end,
-        failure,
+        stop: outcome.stop,
+        t: outcome.t,
+        y: outcome.y,
     })
 }
 

@@ -57,8 +57,8 @@ pub enum Law {
 }
 
 /// The options of `steps` equal steps from `t0` to `t_end` without error control: the step
-/// as the initial step, a budget of `steps` steps. `steps = 0` is refused
-/// ([`IntegrateError::InvalidOption`]).
+/// as the initial step, a budget of `steps` steps. `steps = 0`, and a step that is not
+/// finite, are refused ([`IntegrateError::InvalidOption`]).
 pub(crate) fn fixed_step_options(
     t0: f64,
     t_end: f64,
@@ -72,11 +72,12 @@ pub(crate) fn fixed_step_options(
         });
     }
     let h = (t_end - t0) / steps as f64;
-    Ok(Options {
-        h_init: (h != 0.0).then_some(h),
-        max_steps: steps,
-        ..Options::default()
-    })
+    let opts = Options::default().with_max_steps(steps)?;
+    if h == 0.0 {
+        Ok(opts)
+    } else {
+        opts.with_h_init(h)
+    }
 }
 
 /// The clock of a run as its stepper shows it ([`Stepper`](super::Stepper)): the time, the
@@ -133,10 +134,10 @@ pub struct StepControl {
 impl StepControl {
     /// The control of a run from `t0` to `t_end` (either direction) with the step limits of
     /// `opts` (`h_max`, by default `|t_end - t0|`, and `max_steps`), before its first step.
-    /// The first proposal is `opts.h_init` in the direction of integration, or else
+    /// The first proposal is `opts.h_init()` in the direction of integration, or else
     /// `guess(posneg, hmax)` (Hairer's `HINIT`, say); none when `t_end = t0`, which is done at
-    /// once. The arguments are checked by the stepper ([`Options::validate`],
-    /// `check_start`).
+    /// once. The options are valid as built ([`Options`]); the times are checked by the stepper
+    /// (`check_start`).
     pub fn new(
         law: Law,
         t0: f64,
@@ -145,9 +146,9 @@ impl StepControl {
         guess: impl FnOnce(f64, f64) -> f64,
     ) -> Self {
         let posneg = if t_end >= t0 { 1.0 } else { -1.0 };
-        let hmax = opts.h_max.unwrap_or((t_end - t0).abs());
+        let hmax = opts.h_max().unwrap_or((t_end - t0).abs());
         let done = t_end == t0;
-        let h = match opts.h_init {
+        let h = match opts.h_init() {
             Some(h) => h.abs().copysign(posneg),
             None if done => 0.0,
             None => guess(posneg, hmax),
@@ -159,7 +160,7 @@ impl StepControl {
             t_end,
             posneg,
             hmax,
-            max_steps: opts.max_steps,
+            max_steps: opts.max_steps(),
             h,
             h_try: 0.0,
             h_last: 0.0,
@@ -376,13 +377,11 @@ mod tests {
     use super::{Law, StepControl};
     use crate::{IntegrateError, Options};
 
+    /// The control of a run from 0 to `t_end` whose first proposal is `h` (as the initial
+    /// guess: a series step does not use it, and may give 0).
     fn control(law: Law, t_end: f64, h: f64, max_steps: usize) -> StepControl {
-        let opts = Options {
-            h_init: Some(h),
-            max_steps,
-            ..Options::default()
-        };
-        StepControl::new(law, 0.0, t_end, &opts, |_, _| unreachable!())
+        let opts = Options::default().with_max_steps(max_steps).unwrap();
+        StepControl::new(law, 0.0, t_end, &opts, |_, _| h)
     }
 
     /// Hairer's rules, checked by hand: a step of 0.3 towards 1 is accepted at err = 1 with
@@ -450,10 +449,7 @@ mod tests {
             })
         );
         let far = |law| {
-            let opts = Options {
-                h_init: Some(1.0),
-                ..Options::default()
-            };
+            let opts = Options::default().with_h_init(1.0).unwrap();
             StepControl::new(law, 1e20, 2e20, &opts, |_, _| 0.0)
         };
         let too_small = IntegrateError::StepSizeTooSmall { t: 1e20, h: 1.0 };

@@ -1,12 +1,12 @@
 //! The DOP853 integrator: explicit Runge–Kutta 8(5,3) of Dormand & Prince with
 //! the step-size control and 7th-order dense output of Hairer's `dop853.f`.
 
-use std::cell::Cell;
+use std::convert::Infallible;
 
-use super::compensated::compensated_add;
-use super::control::{fixed_step_options, Clock, Law, StepControl};
+use super::control::{Clock, Law};
+use super::pair::{rk_start, RkRun, RkStart, RungeKutta};
 use super::tableau::{dense_at, dense_rows, A, B, BHH, C, ER};
-use super::{check_start, drive, Control, Drive, IntegrateError, OdeSystem, Options, Stepper};
+use super::{drive, Control, Drive, IntegrateError, OdeSystem, Options, Stepper};
 
 /// Stage buffer: stages 0..=12 of a step and the three dense-output stages.
 type Stages<const N: usize> = [[f64; N]; 16];
@@ -81,122 +81,6 @@ fn stages<S: OdeSystem<N>, const N: usize>(
     inc
 }
 
-/// Hairer's initial step size guess `HINIT` for a method of order `order`, given
-/// `f0 = f(t, y)` (one right-hand-side call).
-#[allow(clippy::too_many_arguments)] // Hairer's argument list
-pub fn hinit<S: OdeSystem<N>, const N: usize>(
-    sys: &S,
-    t: f64,
-    y: &[f64; N],
-    f0: &[f64; N],
-    posneg: f64,
-    hmax: f64,
-    opts: &Options,
-    order: i32,
-) -> f64 {
-    let (mut dnf, mut dny) = (0.0, 0.0);
-    for i in 0..N {
-        let sk = opts.atol + opts.rtol * y[i].abs();
-        dnf += (f0[i] / sk).powi(2);
-        dny += (y[i] / sk).powi(2);
-    }
-    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
-        1.0e-6
-    } else {
-        (dny / dnf).sqrt() * 0.01
-    };
-    h = h.min(hmax).copysign(posneg);
-    let mut y1 = [0.0; N];
-    for i in 0..N {
-        y1[i] = y[i] + h * f0[i];
-    }
-    let f1 = sys.rhs(t + h, &y1);
-    let mut der2 = 0.0;
-    for i in 0..N {
-        let sk = opts.atol + opts.rtol * y[i].abs();
-        der2 += ((f1[i] - f0[i]) / sk).powi(2);
-    }
-    der2 = der2.sqrt() / h;
-    let der12 = der2.abs().max(dnf.sqrt());
-    let h1 = if der12 <= 1e-15 {
-        1.0e-6_f64.max(h.abs() * 1.0e-3)
-    } else {
-        (0.01 / der12).powf(1.0 / f64::from(order))
-    };
-    (100.0 * h.abs()).min(h1).min(hmax).copysign(posneg)
-}
-
-/// A run of a Runge–Kutta pair at its start ([`RungeKutta::from_start`]): the arguments
-/// checked, `f(t0, y0)` evaluated and the run's [`StepControl`] made.
-pub struct RkStart<'a, S, const N: usize> {
-    pub(crate) sys: &'a S,
-    pub(crate) y0: [f64; N],
-    pub(crate) f0: [f64; N],
-    pub(crate) control: StepControl,
-    pub(crate) opts: Options,
-}
-
-/// The start of a run of a Runge–Kutta pair of `order` under `law` from `(t0, y0)` to
-/// `t_end`, for the steppers and the lanes: the checks of the options and of the arguments,
-/// `f(t0, y0)` (refused when not finite: [`IntegrateError::NonFinite`]) and the run's
-/// [`StepControl`], its first step `opts.h_init` or Hairer's `HINIT` for a method of order
-/// `order` (the evaluations counted: one, two with `HINIT`).
-pub(crate) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
-    sys: &'a S,
-    t0: f64,
-    y0: [f64; N],
-    t_end: f64,
-    opts: &Options,
-    law: Law,
-    order: i32,
-) -> Result<RkStart<'a, S, N>, IntegrateError> {
-    opts.validate()?;
-    check_start(t0, &y0, t_end)?;
-    let f0 = sys.rhs(t0, &y0);
-    if f0.iter().any(|v| !v.is_finite()) {
-        return Err(IntegrateError::NonFinite { t: t0 });
-    }
-    let mut guessed = false;
-    let mut control = StepControl::new(law, t0, t_end, opts, |posneg, hmax| {
-        guessed = true;
-        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, order)
-    });
-    control.count_evals(1 + usize::from(guessed));
-    Ok(RkStart {
-        sys,
-        y0,
-        f0,
-        control,
-        opts: *opts,
-    })
-}
-
-/// The adaptive Runge–Kutta pairs ([`Dop853`], [`Vern9`](super::Vern9)): built from their
-/// start under a step-size [`Law`], and so with equal steps by the same code.
-pub trait RungeKutta<'a, S: OdeSystem<N> + 'a, const N: usize>: Sized {
-    /// The order of Hairer's initial step guess (`HINIT`) for this pair.
-    const ORDER: i32;
-
-    /// The stepper from the start of its run.
-    fn from_start(start: RkStart<'a, S, N>) -> Self;
-
-    /// `steps` equal steps of `sys` from `(t0, y0)` to `t_end`, each accepted without error
-    /// control ([`Law::Fixed`]), the last landing on `t_end`: the method's own order, for
-    /// convergence studies. The dense output and the driver work as for the adaptive steps.
-    /// Fails as the pair's `new` does, and with [`IntegrateError::InvalidOption`] for
-    /// `steps = 0`.
-    fn fixed_steps(
-        sys: &'a S,
-        t0: f64,
-        y0: [f64; N],
-        t_end: f64,
-        steps: usize,
-    ) -> Result<Self, IntegrateError> {
-        let opts = fixed_step_options(t0, t_end, steps)?;
-        rk_start(sys, t0, y0, t_end, &opts, Law::Fixed, Self::ORDER).map(Self::from_start)
-    }
-}
-
 /// DOP853's scaled error of an attempt of size `h` in dimension `n` from the sums of squares
 /// of its scaled 5th- and 3rd-order error estimates: `|h| err5 / sqrt(n (err5 + 0.01 err3))`
 /// (Hairer's `dop853.f`; the denominator 1 when it vanishes).
@@ -216,43 +100,29 @@ pub(crate) fn scaled_error(err5: f64, err3: f64, h: f64, n: usize) -> f64 {
 /// the same stages, the combined 5th/3rd-order error estimate
 /// `err = err5^2 / sqrt(err5^2 + 0.01 err3^2)`, the same controller
 /// (`fac1 = 0.333`, `fac2 = 6`, safety 0.9, `beta = 0`: [`Law::Dop853`] of the step control
-/// [`StepControl`], shared with the batched lanes) and the same initial
+/// [`StepControl`](super::StepControl), shared with the batched lanes) and the same initial
 /// step guess, so step counts agree with the published code. The stiffness
 /// detection of `dop853.f` is not implemented. One departure: the update
-/// `y + h sum b_i k_i` is summed with compensation ([`compensated_add`]), which
+/// `y + h sum b_i k_i` is summed with compensation
+/// ([`compensated_add`](super::compensated::compensated_add)), which
 /// removes the accumulated rounding of long runs. All state lives inline in the
 /// struct; a step performs no heap allocation.
 pub struct Dop853<'a, S, const N: usize> {
-    sys: &'a S,
-    /// Time, step sizes, acceptance, end and counters of the run.
-    ctl: StepControl,
-    y: [f64; N],
-    /// Rounding residue of the compensated update (zero after [`set_state`](Self::set_state)).
-    carry: [f64; N],
-    /// `f(t, y)` for the current (possibly projected) state.
-    f: [f64; N],
-    y_prev: [f64; N],
+    /// The field, step control, state and dense-output coefficients of the run ([`RkRun`]).
+    run: RkRun<'a, S, [[f64; N]; 8], N>,
     /// Step end as computed by the last accepted step, before any `set_state`.
     y_raw: [f64; N],
     /// Stages of the last accepted step (stage 12 = `f(t, y_raw)`).
     k: Stages<N>,
-    rtol: f64,
-    atol: f64,
-    compensated: bool,
-    /// Dense-output coefficients of the last accepted step, built on demand.
-    cont: Cell<Option<[[f64; N]; 8]>>,
-    /// Field evaluations of the dense output (counted beside [`StepControl::stats`]).
-    dense_evals: Cell<usize>,
 }
 
 impl<'a, S: OdeSystem<N>, const N: usize> Dop853<'a, S, N> {
     /// Prepares an integration of `sys` from `(t0, y0)` towards `t_end`, which may
     /// lie before `t0` (backward integration). The initial step is
-    /// `opts.h_init` or else Hairer's `HINIT` guess. Evaluates `f(t0, y0)`.
+    /// `opts.h_init()` or else Hairer's `HINIT` guess. Evaluates `f(t0, y0)`.
     ///
-    /// Fails with [`IntegrateError::InvalidOption`] for invalid options or
-    /// non-finite `t0`, `t_end`, and with [`IntegrateError::NonFinite`] if
-    /// `y0` or `f(t0, y0)` is not finite.
+    /// Fails with [`IntegrateError::InvalidOption`] for non-finite `t0`, `t_end`,
+    /// and with [`IntegrateError::NonFinite`] if `y0` or `f(t0, y0)` is not finite.
     pub fn new(
         sys: &'a S,
         t0: f64,
@@ -268,23 +138,12 @@ impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Dop853<'a, S,
     const ORDER: i32 = 8;
 
     fn from_start(start: RkStart<'a, S, N>) -> Self {
-        let (y, opts) = (start.y0, start.opts);
         let mut k = [[0.0; N]; 16];
         k[12] = start.f0;
         Dop853 {
-            sys: start.sys,
-            ctl: start.control,
-            f: start.f0,
+            y_raw: start.y0,
             k,
-            y,
-            y_prev: y,
-            y_raw: y,
-            carry: [0.0; N],
-            rtol: opts.rtol,
-            atol: opts.atol,
-            compensated: opts.compensated,
-            cont: Cell::new(None),
-            dense_evals: Cell::new(0),
+            run: RkRun::new(start),
         }
     }
 }
@@ -294,7 +153,7 @@ impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
     /// and returns `Ok(true)` once `t_end` is reached; the last step lands
     /// exactly on `t_end`. After that, further calls do nothing and return
     /// `Ok(true)`. The attempts, their acceptance and the failures are those of the
-    /// [`StepControl`].
+    /// [`StepControl`](super::StepControl).
     ///
     /// Errors: [`IntegrateError::StepSizeTooSmall`] when `0.1 |h| <= |t| * 2.3e-16`,
     /// [`IntegrateError::TooManySteps`] when `max_steps` attempts were made,
@@ -302,21 +161,20 @@ impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
     /// derivative is not finite. After a failed call only [`t`](Self::t),
     /// [`y`](Self::y) and [`stats`](Self::stats) remain meaningful.
     pub fn step(&mut self) -> Result<bool, IntegrateError> {
-        if self.ctl.done() {
+        let run = &mut self.run;
+        if run.ctl.done() {
             return Ok(true);
         }
         loop {
-            let h = self.ctl.attempt()?;
-            let t = self.ctl.t();
-            self.k[0] = self.f;
-            let inc = stages(self.sys, t, h, &self.y, &mut self.k);
-            self.ctl.count_evals(11);
-            let mut y_new = [0.0; N];
+            let h = run.ctl.attempt()?;
+            let t = run.ctl.t();
+            self.k[0] = run.f;
+            let inc = stages(run.sys, t, h, &run.y, &mut self.k);
+            run.ctl.count_evals(11);
             let (mut err5, mut err3) = (0.0, 0.0);
             let k = &self.k;
             for i in 0..N {
-                y_new[i] = self.y[i] + h * inc[i];
-                let sk = self.atol + self.rtol * self.y[i].abs().max(y_new[i].abs());
+                let sk = run.weight(i, run.y[i] + h * inc[i]);
                 let e3 = inc[i] - BHH[0] * k[0][i] - BHH[8] * k[8][i] - BHH[11] * k[11][i];
                 err3 += (e3 / sk) * (e3 / sk);
                 let e5 = ER[0] * k[0][i]
@@ -329,48 +187,34 @@ impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
                     + ER[11] * k[11][i];
                 err5 += (e5 / sk) * (e5 / sk);
             }
-            if !self.ctl.judge(scaled_error(err5, err3, h, N)) {
+            if !run.ctl.judge(scaled_error(err5, err3, h, N)) {
                 continue;
             }
-            let t_new = self.ctl.t_next();
-            let mut carry = self.carry;
-            if self.compensated {
-                y_new = self.y;
-                compensated_add(&mut y_new, &mut carry, &std::array::from_fn(|i| h * inc[i]));
-            }
-            let f_new = self.sys.rhs(t_new, &y_new);
-            self.ctl.count_evals(1);
-            let finite = y_new.iter().chain(f_new.iter()).all(|v| v.is_finite());
-            let last = self.ctl.advance(finite)?;
-            self.k[12] = f_new;
-            self.y_prev = self.y;
-            self.y = y_new;
-            self.carry = carry;
-            self.y_raw = y_new;
-            self.f = f_new;
-            self.cont.set(None);
+            let last = run.accept(&std::array::from_fn(|i| h * inc[i]))?;
+            self.k[12] = run.f;
+            self.y_raw = run.y;
             return Ok(last);
         }
     }
 
     /// Hairer's `CONT` array of the last accepted step (`CONTD8` coefficients).
     fn dense_coefficients(&self) -> [[f64; N]; 8] {
-        let h = self.ctl.h_last();
-        let (t, y) = (self.ctl.t_prev(), &self.y_prev);
+        let run = &self.run;
+        let h = run.ctl.h_last();
+        let (t, y) = (run.ctl.t_prev(), &run.y_prev);
         let mut k = self.k;
-        k[13] = self.sys.rhs(
+        k[13] = run.sys.rhs(
             t + C[13] * h,
             &combine::<13, 8, N>(y, h, &k, [0, 6, 7, 8, 9, 10, 11, 12]),
         );
-        k[14] = self.sys.rhs(
+        k[14] = run.sys.rhs(
             t + C[14] * h,
             &combine::<14, 8, N>(y, h, &k, [0, 5, 6, 7, 10, 11, 12, 13]),
         );
-        k[15] = self.sys.rhs(
+        k[15] = run.sys.rhs(
             t + C[15] * h,
             &combine::<15, 8, N>(y, h, &k, [0, 5, 6, 7, 8, 12, 13, 14]),
         );
-        self.dense_evals.set(self.dense_evals.get() + 3);
         dense_rows(y, &self.y_raw, h, &k)
     }
 }
@@ -381,12 +225,12 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
     }
 
     fn clock(&self) -> Clock {
-        self.ctl.clock().with_evals(self.dense_evals.get())
+        self.run.clock()
     }
 
     /// Current state.
     fn y(&self) -> &[f64; N] {
-        &self.y
+        &self.run.y
     }
 
     /// Evaluates the 7th-order continuous extension of the last accepted step
@@ -398,18 +242,13 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
     /// three right-hand-side calls (Hairer's stages 14–16); later calls on the
     /// same step are free. Before the first step it returns the initial state.
     fn dense(&self, t: f64) -> [f64; N] {
-        if self.ctl.stats().steps == 0 {
-            return self.y;
-        }
-        let cont = match self.cont.get() {
-            Some(c) => c,
-            None => {
-                let c = self.dense_coefficients();
-                self.cont.set(Some(c));
-                c
+        match self.run.dense(3, || self.dense_coefficients()) {
+            Some(cont) => {
+                let ctl = &self.run.ctl;
+                dense_at(&cont, (t - ctl.t_prev()) / ctl.h_last())
             }
-        };
-        dense_at(&cont, (t - self.ctl.t_prev()) / self.ctl.h_last())
+            None => self.run.y,
+        }
     }
 
     /// Replaces the current state after a step (e.g. a projection onto
@@ -417,10 +256,7 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Dop853<'_, S, N> {
     /// the next step (one right-hand-side call). The dense output of the last
     /// step is unaffected and still interpolates the unprojected step.
     fn set_state(&mut self, y: [f64; N]) {
-        self.y = y;
-        self.carry = [0.0; N];
-        self.f = self.sys.rhs(self.ctl.t(), &self.y);
-        self.ctl.count_evals(1);
+        self.run.set_state(y);
     }
 }
 
@@ -435,11 +271,11 @@ pub fn fixed_step_solve<S: OdeSystem<N>, const N: usize>(
     n: usize,
 ) -> Result<[f64; N], IntegrateError> {
     let mut solver: Dop853<S, N> = RungeKutta::fixed_steps(sys, t0, y0, t_end, n)?;
-    let outcome = drive::<_, IntegrateError, N>(
+    let Ok(outcome) = drive::<_, Infallible, N>(
         &mut solver,
         &Drive::default(),
         &mut |_, _| Ok(()),
         &mut |_, _, _| Ok(Control::Continue),
-    )?;
-    Ok(outcome.y)
+    );
+    Ok(outcome.into_result()?.y)
 }

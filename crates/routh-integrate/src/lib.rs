@@ -29,6 +29,7 @@ pub mod control;
 pub mod differential;
 mod dop853;
 mod event;
+mod pair;
 mod rk4;
 pub mod sampling;
 pub mod scalar;
@@ -37,13 +38,16 @@ pub mod taylor;
 mod vern9;
 pub mod vern9_tableau;
 
+use std::convert::Infallible;
 use std::fmt;
 use std::str::FromStr;
 
 pub use control::{Clock, Law, StepControl};
-pub use dop853::{fixed_step_solve, hinit, Dop853, RkStart, RungeKutta};
-pub(crate) use dop853::{rk_start, scaled_error};
+pub(crate) use dop853::scaled_error;
+pub use dop853::{fixed_step_solve, Dop853};
 pub use event::{brent, locate, Crossing, Direction, EventSpec, Unlocated};
+pub(crate) use pair::rk_start;
+pub use pair::{hinit, RkStart, RungeKutta};
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};
 pub use taylor::Taylor;
 pub use vern9::Vern9;
@@ -190,28 +194,25 @@ pub fn stepper<'a, S: OdeSystem<N>, const N: usize>(
     })
 }
 
-/// Options of the adaptive integrator.
+/// Options of the adaptive integrator, valid once built: [`Options::new`] and the `with_*`
+/// setters refuse a value that breaks its rule ([`IntegrateError::InvalidOption`] naming it),
+/// so that a stepper never sees invalid options.
 ///
 /// The local error of component `i` is kept below roughly
 /// `atol + rtol * |y_i|` (scalar tolerances, Hairer's `ITOL = 0`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// Relative tolerance (finite, > 0).
-    pub rtol: f64,
-    /// Absolute tolerance (finite, > 0).
-    pub atol: f64,
-    /// Initial step size (its sign is ignored); `None` selects it by Hairer's `HINIT`.
-    pub h_init: Option<f64>,
-    /// Maximal step size; `None` means `|t_end - t0|`.
-    pub h_max: Option<f64>,
-    /// Maximal number of attempted steps (accepted and rejected).
-    pub max_steps: usize,
-    /// Sum the update `y + h sum b_i k_i` with compensation ([`compensated::compensated_add`]);
-    /// `false` gives the plain sum of the published codes (bit-for-bit comparisons with them).
-    pub compensated: bool,
+    rtol: f64,
+    atol: f64,
+    h_init: Option<f64>,
+    h_max: Option<f64>,
+    max_steps: usize,
+    compensated: bool,
 }
 
 impl Default for Options {
+    /// `rtol = atol = 1e-10`, the initial step by `HINIT`, no step limit but `|t_end - t0|`,
+    /// at most 10,000,000 steps, the compensated update.
     fn default() -> Self {
         Options {
             rtol: 1e-10,
@@ -224,37 +225,97 @@ impl Default for Options {
     }
 }
 
+/// `value` when it is finite and > 0, else [`IntegrateError::InvalidOption`] naming `name`.
+fn positive(name: &'static str, value: f64) -> Result<f64, IntegrateError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(IntegrateError::InvalidOption {
+            name,
+            value,
+            rule: "must be finite and > 0",
+        })
+    }
+}
+
 impl Options {
-    /// Checks the options: `rtol` and `atol` finite and > 0, `h_init` finite and
-    /// nonzero, `h_max` finite and > 0, `max_steps` > 0.
-    pub fn validate(&self) -> Result<(), IntegrateError> {
-        let positive = |name: &'static str, value: f64| {
-            if value.is_finite() && value > 0.0 {
-                Ok(())
-            } else {
-                Err(IntegrateError::InvalidOption {
-                    name,
-                    value,
-                    rule: "must be finite and > 0",
-                })
-            }
-        };
-        positive("rtol", self.rtol)?;
-        positive("atol", self.atol)?;
-        if let Some(h) = self.h_init {
-            positive("h_init (absolute value)", h.abs())?;
-        }
-        if let Some(h) = self.h_max {
-            positive("h_max", h)?;
-        }
-        if self.max_steps == 0 {
+    /// The default options with the tolerances `rtol` and `atol` (each finite and > 0).
+    pub fn new(rtol: f64, atol: f64) -> Result<Options, IntegrateError> {
+        Ok(Options {
+            rtol: positive("rtol", rtol)?,
+            atol: positive("atol", atol)?,
+            ..Options::default()
+        })
+    }
+
+    /// The same options with the initial step size `h` (its sign is ignored; `|h|` finite and
+    /// > 0).
+    pub fn with_h_init(self, h: f64) -> Result<Options, IntegrateError> {
+        positive("h_init (absolute value)", h.abs())?;
+        Ok(Options {
+            h_init: Some(h),
+            ..self
+        })
+    }
+
+    /// The same options with the maximal step size `h` (finite and > 0).
+    pub fn with_h_max(self, h: f64) -> Result<Options, IntegrateError> {
+        Ok(Options {
+            h_max: Some(positive("h_max", h)?),
+            ..self
+        })
+    }
+
+    /// The same options with at most `max_steps` attempted steps (> 0).
+    pub fn with_max_steps(self, max_steps: usize) -> Result<Options, IntegrateError> {
+        if max_steps == 0 {
             return Err(IntegrateError::InvalidOption {
                 name: "max_steps",
                 value: 0.0,
                 rule: "must be > 0",
             });
         }
-        Ok(())
+        Ok(Options { max_steps, ..self })
+    }
+
+    /// The same options with the update summed with compensation or not
+    /// ([`Options::compensated`]).
+    pub fn with_compensated(self, compensated: bool) -> Options {
+        Options {
+            compensated,
+            ..self
+        }
+    }
+
+    /// Relative tolerance (finite, > 0).
+    pub fn rtol(&self) -> f64 {
+        self.rtol
+    }
+
+    /// Absolute tolerance (finite, > 0).
+    pub fn atol(&self) -> f64 {
+        self.atol
+    }
+
+    /// Initial step size (its sign is ignored); `None` selects it by Hairer's `HINIT`.
+    pub fn h_init(&self) -> Option<f64> {
+        self.h_init
+    }
+
+    /// Maximal step size; `None` means `|t_end - t0|`.
+    pub fn h_max(&self) -> Option<f64> {
+        self.h_max
+    }
+
+    /// Maximal number of attempted steps (accepted and rejected).
+    pub fn max_steps(&self) -> usize {
+        self.max_steps
+    }
+
+    /// Sum the update `y + h sum b_i k_i` with compensation ([`compensated::compensated_add`]);
+    /// `false` gives the plain sum of the published codes (bit-for-bit comparisons with them).
+    pub fn compensated(&self) -> bool {
+        self.compensated
     }
 }
 
@@ -320,23 +381,19 @@ pub enum IntegrateError {
     },
 }
 
-/// How a successful integration ended.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Stop<const N: usize> {
+/// How a run of [`drive`] ended; the time and state where it ended are the [`Outcome`]'s.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stop {
     /// `t_end` was reached.
     Reached,
-    /// The event function vanished at `t` with state `y`.
-    Event {
-        /// Time of the event.
-        t: f64,
-        /// State at the event (after projection, if any).
-        y: [f64; N],
-    },
-    /// The per-step observer asked to stop (e.g. on Ctrl-C) after the step ending at `t`.
-    Stopped {
-        /// Time reached.
-        t: f64,
-    },
+    /// The event function vanished (the state there projected, if a projection is given).
+    Event,
+    /// The per-step observer asked to stop: after the step ([`Control::Stop`], e.g. on
+    /// Ctrl-C) or within it ([`Control::StopAt`]).
+    Stopped,
+    /// The stepper failed, or a state was not finite: the run ended at the last step it
+    /// reached.
+    Failed(IntegrateError),
 }
 
 /// A one-step method as the driver sees it: the taylor, Verner, DOP853 and RK4 integrators
@@ -384,15 +441,24 @@ pub type OnSample<'a, E, const N: usize> = dyn FnMut(f64, &[f64; N]) -> Result<(
 
 /// The per-step observer of [`drive`]: `on_step(t, y, stepper)` after each accepted step.
 pub type OnStep<'a, St, E, const N: usize> =
-    dyn FnMut(f64, &[f64; N], &St) -> Result<Control, E> + 'a;
+    dyn FnMut(f64, &[f64; N], &St) -> Result<Control<N>, E> + 'a;
 
 /// What the per-step observer of [`drive`] asks for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Control {
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Control<const N: usize> {
     /// Go on.
     Continue,
     /// Stop after this step ([`Stop::Stopped`]).
     Stop,
+    /// Stop at the time `t` within this step, with the state `y` there (e.g. an event the
+    /// observer located on the step's dense output, projected as it wishes): the samples
+    /// after `t` are not reported and the run ends at `(t, y)` ([`Stop::Stopped`]).
+    StopAt {
+        /// The time within the step.
+        t: f64,
+        /// The state there, as the run ends with it.
+        y: [f64; N],
+    },
 }
 
 /// What [`drive`] does besides stepping: dense samples, a projection after each step, an
@@ -419,16 +485,26 @@ impl<const N: usize> Default for Drive<'_, N> {
 }
 
 /// How a run of [`drive`] ended, the final time and state, and the work counters.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Outcome<const N: usize> {
     /// Why it stopped.
-    pub stop: Stop<N>,
+    pub stop: Stop,
     /// Final time.
     pub t: f64,
     /// Final state.
     pub y: [f64; N],
     /// Work counters.
     pub stats: Stats,
+}
+
+impl<const N: usize> Outcome<N> {
+    /// The outcome of a run that did not fail, or its failure ([`Stop::Failed`]) as an error.
+    pub fn into_result(self) -> Result<Outcome<N>, IntegrateError> {
+        match self.stop {
+            Stop::Failed(e) => Err(e),
+            _ => Ok(self),
+        }
+    }
 }
 
 /// The checks of a stepper's start: `t0` and `t_end` finite
@@ -476,15 +552,23 @@ pub fn check_samples(t0: f64, t_end: f64, samples: &[f64]) -> Result<(), Integra
 /// The step loop: steps `stepper` to its `t_end`.
 ///
 /// After every accepted step, in this order: if `event` changes sign on the step, its zero is
-/// located on the dense output by [`locate`] (Brent's method to about 2 ulp of `t`), the
-/// state there is projected, the samples before it are reported, `on_step` sees it and the
-/// run ends with [`Stop::Event`]; otherwise the step end is projected (`set_state`), the samples up to it
-/// are reported through `on_sample` from the dense output (a sample on the step end gets the
-/// projected state), and `on_step(t, y, stepper)` sees the step end (and the stepper, for its
-/// dense output on the step) and may stop the run. A zero of
-/// `event` exactly at `t0` is not an event; samples at `t0` are reported first. Errors of the
-/// stepper are converted into `E`; errors of the callbacks end the run.
-pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
+/// located on the dense output by [`locate`] (Brent's method to about 2 ulp of `t`) and the
+/// state there is projected, and the run ends there ([`Stop::Event`]); otherwise the step end
+/// is projected (`set_state`). Then `on_step(t, y, stepper)` sees that point, the event or the
+/// step end (and the stepper, for its dense output on the step), and may stop the run after
+/// the step or at a time within it ([`Control`]). Then the samples of the step are reported
+/// through `on_sample` from the dense output (a sample on the step end gets the projected
+/// state): those before the event, or up to the step end, and none after a
+/// [`Control::StopAt`]. The observer sees a step before its samples, so that it can end the
+/// run within the step. A zero of `event` exactly at `t0` is not an event; samples at `t0` are
+/// reported first.
+///
+/// A failure of the stepper, an event that cannot be located (its function not finite on the
+/// step) and a state that is not finite (the event's or the step end's, after projection) end
+/// the run with [`Stop::Failed`], at the time and state the stepper reached, without the
+/// samples of the failed step. Errors of the callbacks end the run and are returned as they
+/// are: they are the only `Err`.
+pub fn drive<St: Stepper<N> + ?Sized, E, const N: usize>(
     stepper: &mut St,
     run: &Drive<'_, N>,
     on_sample: &mut OnSample<'_, E, N>,
@@ -498,62 +582,61 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
         on_sample(t0, &y0)?;
         next += 1;
     }
+    let failed = |stepper: &St, e: IntegrateError| Outcome {
+        stop: Stop::Failed(e),
+        t: stepper.t(),
+        y: *stepper.y(),
+        stats: stepper.stats(),
+    };
     let mut g_prev = run.event.map(|g| g(t0, &y0));
     loop {
-        let done = stepper.step()?;
+        let done = match stepper.step() {
+            Ok(done) => done,
+            Err(e) => return Ok(failed(stepper, e)),
+        };
         let t = stepper.t();
-        if let (Some(g), Some(g0)) = (run.event, g_prev) {
-            let ta = stepper.t_prev();
-            let g1 = g(t, stepper.y());
-            let found = locate(
-                &|s| stepper.dense(s),
-                (ta, t),
-                &[EventSpec {
-                    direction: Direction::Either,
-                    terminal: true,
-                }],
-                &mut |_, s, y| g(s, y),
-                &[g0],
-                &[g1],
-            )
-            .map_err(|_| IntegrateError::NonFinite { t })?;
-            if let Some(&Crossing { t: te, .. }) = found.first() {
-                let mut ye = if te == t {
-                    *stepper.y()
-                } else {
-                    stepper.dense(te)
-                };
+        let event = match (run.event, g_prev) {
+            (Some(g), Some(g0)) => match event_on_step(stepper, g, g0, run.project) {
+                Ok(event) => event,
+                Err(e) => return Ok(failed(stepper, e)),
+            },
+            _ => None,
+        };
+        let (t_seen, y_seen) = match event {
+            Some(event) => event,
+            None => {
                 if let Some(p) = run.project {
-                    p(&mut ye);
+                    let mut y = *stepper.y();
+                    p(&mut y);
+                    // A projection that leaves the state as it is (bit for bit; e.g. one that
+                    // projects every n-th step only) keeps the stepper's carried state (the
+                    // field at the step end, the compensation of the update).
+                    if y.map(f64::to_bits) != stepper.y().map(f64::to_bits) {
+                        stepper.set_state(y);
+                    }
                 }
-                while next < samples.len() && (samples[next] - te) * dir < 0.0 {
-                    on_sample(samples[next], &stepper.dense(samples[next]))?;
-                    next += 1;
+                if let Some(g) = run.event {
+                    g_prev = Some(g(t, stepper.y()));
                 }
-                on_step(te, &ye, stepper)?;
-                return Ok(Outcome {
-                    stop: Stop::Event { t: te, y: ye },
-                    t: te,
-                    y: ye,
-                    stats: stepper.stats(),
-                });
+                (t, *stepper.y())
             }
+        };
+        if y_seen.iter().any(|v| !v.is_finite()) {
+            return Ok(failed(stepper, IntegrateError::NonFinite { t: t_seen }));
         }
-        if let Some(p) = run.project {
-            let mut y = *stepper.y();
-            p(&mut y);
-            // A projection that leaves the state as it is (bit for bit; e.g. one that
-            // projects every n-th step only) keeps the stepper's carried state (the field at
-            // the step end, the compensation of the update).
-            if y.map(f64::to_bits) != stepper.y().map(f64::to_bits) {
-                stepper.set_state(y);
+        let control = on_step(t_seen, &y_seen, stepper)?;
+        let stop_at = match control {
+            Control::StopAt { t, y } => Some((t, y)),
+            Control::Continue | Control::Stop => None,
+        };
+        while let Some(&s) = samples.get(next) {
+            let on_the_step = match event {
+                Some((te, _)) => (s - te) * dir < 0.0,
+                None => (s - t) * dir <= 0.0,
+            };
+            if !on_the_step || stop_at.is_some_and(|(ts, _)| (s - ts) * dir > 0.0) {
+                break;
             }
-        }
-        if let Some(g) = run.event {
-            g_prev = Some(g(t, stepper.y()));
-        }
-        while next < samples.len() && (samples[next] - t) * dir <= 0.0 {
-            let s = samples[next];
             let y = if s == t {
                 *stepper.y()
             } else {
@@ -562,19 +645,57 @@ pub fn drive<St: Stepper<N> + ?Sized, E: From<IntegrateError>, const N: usize>(
             on_sample(s, &y)?;
             next += 1;
         }
-        let control = on_step(t, stepper.y(), stepper)?;
-        let stop = match (control, done) {
-            (Control::Stop, false) => Stop::Stopped { t },
-            (_, true) => Stop::Reached,
-            (Control::Continue, false) => continue,
+        let (stop, t, y) = match (stop_at, event) {
+            (Some((ts, ys)), _) => (Stop::Stopped, ts, ys),
+            (None, Some((te, ye))) => (Stop::Event, te, ye),
+            (None, None) if done => (Stop::Reached, t, y_seen),
+            (None, None) if control == Control::Stop => (Stop::Stopped, t, y_seen),
+            (None, None) => continue,
         };
         return Ok(Outcome {
             stop,
             t,
-            y: *stepper.y(),
+            y,
             stats: stepper.stats(),
         });
     }
+}
+
+/// The first zero of the event function `g` on the last step of `stepper` (`g0` its value at
+/// the step's start), located by [`locate`], and the state there projected by `project`;
+/// `None` without a sign change. An event that cannot be located (`g` not finite on the step)
+/// is [`IntegrateError::NonFinite`] at the step end.
+fn event_on_step<St: Stepper<N> + ?Sized, const N: usize>(
+    stepper: &St,
+    g: EventFn<'_, N>,
+    g0: f64,
+    project: Option<Projection<'_, N>>,
+) -> Result<Option<(f64, [f64; N])>, IntegrateError> {
+    let (ta, t) = (stepper.t_prev(), stepper.t());
+    let g1 = g(t, stepper.y());
+    let found = locate(
+        &|s| stepper.dense(s),
+        (ta, t),
+        &[EventSpec {
+            direction: Direction::Either,
+            terminal: true,
+        }],
+        &mut |_, s, y| g(s, y),
+        &[g0],
+        &[g1],
+    )
+    .map_err(|_| IntegrateError::NonFinite { t })?;
+    Ok(found.first().map(|&Crossing { t: te, .. }| {
+        let mut ye = if te == t {
+            *stepper.y()
+        } else {
+            stepper.dense(te)
+        };
+        if let Some(p) = project {
+            p(&mut ye);
+        }
+        (te, ye)
+    }))
 }
 
 /// A projection of the state onto invariant manifolds, applied in place.
@@ -592,10 +713,11 @@ pub type EventFn<'e, const N: usize> = &'e dyn Fn(f64, &[f64; N]) -> f64;
 /// If `event` is given, the first sign change of `event(t, y)` after `t0` is
 /// located on the dense output of the step where it occurs (Brent's method to
 /// about 2 ulp of `t`); the integration stops there, the event state is
-/// projected, passed to `observer` and returned in [`Stop::Event`]. A zero of
+/// projected, passed to `observer`, and the run ends with [`Stop::Event`] there. A zero of
 /// `event` exactly at `t0` is not an event.
 ///
-/// Returns how it ended, the final state, the final time and the work counters.
+/// Returns how it ended ([`Stop::Reached`] or [`Stop::Event`]), the final state, the final
+/// time and the work counters; a failure of the integrator is the error.
 #[allow(clippy::too_many_arguments)] // the argument list is the agreed API
 pub fn solve<S: OdeSystem<N>, const N: usize>(
     sys: &S,
@@ -606,17 +728,19 @@ pub fn solve<S: OdeSystem<N>, const N: usize>(
     project: Option<Projection<'_, N>>,
     event: Option<EventFn<'_, N>>,
     observer: &mut dyn FnMut(f64, &[f64; N]),
-) -> Result<(Stop<N>, [f64; N], f64, Stats), IntegrateError> {
+) -> Result<(Stop, [f64; N], f64, Stats), IntegrateError> {
     let mut solver = Dop853::new(sys, t0, y0, t_end, opts)?;
     let run = Drive {
         samples: &[],
         project,
         event,
     };
-    let outcome = drive(&mut solver, &run, &mut |_, _| Ok(()), &mut |t, y, _| {
-        observer(t, y);
-        Ok(Control::Continue)
-    })?;
+    let Ok(outcome) =
+        drive::<_, Infallible, N>(&mut solver, &run, &mut |_, _| Ok(()), &mut |t, y, _| {
+            observer(t, y);
+            Ok(Control::Continue)
+        });
+    let outcome = outcome.into_result()?;
     Ok((outcome.stop, outcome.y, outcome.t, outcome.stats))
 }
 
@@ -650,7 +774,7 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
         project,
         event: None,
     };
-    let outcome = drive(
+    let Ok(outcome) = drive::<_, Infallible, N>(
         &mut solver,
         &run,
         &mut |t, y| {
@@ -658,7 +782,8 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
             Ok(())
         },
         &mut |_, _, _| Ok(Control::Continue),
-    )?;
+    );
+    let outcome = outcome.into_result()?;
     Ok((outcome.y, outcome.stats))
 }
 

@@ -1,8 +1,10 @@
 //! The classical Runge–Kutta method of order 4 with fixed steps, as a table
 //! (Butcher tableau and continuous extension) and a [`Stepper`].
 
+use std::convert::Infallible;
+
 use super::compensated::compensated_add;
-use super::{Clock, IntegrateError, OdeSystem, Stats, Stepper};
+use super::{drive, Clock, Control, Drive, IntegrateError, OdeSystem, Stats, Stepper};
 
 /// Nodes `c_i` of the classical Runge–Kutta method.
 pub const RK4_C: [f64; 4] = [0.0, 0.5, 0.5, 1.0];
@@ -74,8 +76,8 @@ impl<'a, S: OdeSystem<N>, const N: usize> Rk4<'a, S, N> {
 }
 
 impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
-    /// One step; never fails (a state that becomes non-finite is carried to the end, where
-    /// the caller sees it).
+    /// One step; never fails (a state that becomes non-finite is refused by the driver,
+    /// [`drive`]).
     fn step(&mut self) -> Result<bool, IntegrateError> {
         if self.done_steps >= self.steps {
             return Ok(true);
@@ -149,7 +151,8 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Rk4<'_, S, N> {
 /// `steps` equal steps of the classical Runge–Kutta method of order 4, calling
 /// `observer(t, &y)` after every step (not at `t0`). The last step ends exactly
 /// at `t_end`. Returns the final state and the work counters (4 right-hand-side
-/// calls per step). With `steps == 0` nothing is integrated and `y0` is returned.
+/// calls per step); a state that becomes non-finite ends the run there ([`drive`]) and is
+/// returned. With `steps == 0` nothing is integrated and `y0` is returned.
 pub fn rk4<S: OdeSystem<N>, const N: usize>(
     sys: &S,
     t0: f64,
@@ -159,18 +162,14 @@ pub fn rk4<S: OdeSystem<N>, const N: usize>(
     mut observer: impl FnMut(f64, &[f64; N]),
 ) -> ([f64; N], Stats) {
     let mut stepper = Rk4::new(sys, t0, y0, t_end, steps);
-    let outcome = super::drive::<_, IntegrateError, N>(
+    let Ok(outcome) = drive::<_, Infallible, N>(
         &mut stepper,
-        &super::Drive::default(),
+        &Drive::default(),
         &mut |_, _| Ok(()),
         &mut |t, y, _| {
             observer(t, y);
-            Ok(super::Control::Continue)
+            Ok(Control::Continue)
         },
     );
-    match outcome {
-        Ok(outcome) => (outcome.y, outcome.stats),
-        // Unreachable: `Rk4::step` never fails and the callbacks do not either.
-        Err(_) => (*stepper.y(), stepper.stats()),
-    }
+    (outcome.y, outcome.stats)
 }

@@ -4,19 +4,17 @@
 //!
 //! Sixteen stages per step (the 16th only for the error estimate), local extrapolation
 //! (the step advances with the 9th-order solution), an error estimate from the embedded
-//! 8th-order solution, the step control of every method ([`StepControl`], with the
-//! step-size law [`Law::Vern9`]: exponent 1/9) and the initial step of
-//! [`Dop853`](super::Dop853), and compensated summation of the update
-//! ([`compensated_add`]). The interpolant costs nine more right-hand-side calls, made only
-//! when a step's dense output is first asked for. A [`Stepper`]: it runs in the one driver
-//! [`drive`](super::drive); [`RungeKutta::fixed_steps`] takes equal steps without error control
-//! (for convergence-order studies) through the same step code.
+//! 8th-order solution, the step control of every method
+//! ([`StepControl`](super::StepControl), with the step-size law [`Law::Vern9`]: exponent
+//! 1/9), the initial step of [`Dop853`](super::Dop853) and the bookkeeping of its run
+//! ([`RkRun`]: compensated summation of the update, projection, dense output on demand). The
+//! interpolant costs nine more right-hand-side calls, made only when a step's dense output is
+//! first asked for. A [`Stepper`]: it runs in the one driver [`drive`](super::drive);
+//! [`RungeKutta::fixed_steps`] takes equal steps without error control (for convergence-order
+//! studies) through the same step code.
 
-use std::cell::Cell;
-
-use super::compensated::compensated_add;
-use super::control::{Clock, Law, StepControl};
-use super::dop853::{rk_start, RkStart, RungeKutta};
+use super::control::{Clock, Law};
+use super::pair::{rk_start, RkRun, RkStart, RungeKutta};
 use super::vern9_tableau::{A, B, C, E, R, STAGES, STEP_STAGES};
 use super::{IntegrateError, OdeSystem, Options, Stepper};
 
@@ -74,29 +72,16 @@ fn stages<S: OdeSystem<N>, const N: usize>(
 
 /// Adaptive Verner 9(8) with its 9th-order interpolant, compensated summation of the update.
 pub struct Vern9<'a, S, const N: usize> {
-    sys: &'a S,
-    /// Time, step sizes, acceptance, end and counters of the run.
-    ctl: StepControl,
-    y: [f64; N],
-    /// Rounding residue of the compensated update (zero after [`set_state`](Self::set_state)).
-    carry: [f64; N],
-    /// `f(t, y)` for the current (possibly projected) state: the first stage of the next step.
-    f: [f64; N],
-    y_prev: [f64; N],
+    /// The field, step control, state and interpolant stages of the run ([`RkRun`]: stages
+    /// 17..=25 of the last accepted step, computed on the first dense request).
+    run: RkRun<'a, S, [[f64; N]; STAGES - 17], N>,
     /// Stages of the last accepted step (`k[16] = f(t, y)` at its end before any projection).
     k: Stages<N>,
-    rtol: f64,
-    atol: f64,
-    compensated: bool,
-    /// Stages 17..=25 of the last accepted step, computed on the first dense request.
-    extra: Cell<Option<[[f64; N]; STAGES - 17]>>,
-    /// Field evaluations of the interpolant (counted beside [`StepControl::stats`]).
-    dense_evals: Cell<usize>,
 }
 
 impl<'a, S: OdeSystem<N>, const N: usize> Vern9<'a, S, N> {
     /// Prepares an integration of `sys` from `(t0, y0)` towards `t_end` (forward or
-    /// backward). The initial step is `opts.h_init` or else Hairer's `HINIT` guess for
+    /// backward). The initial step is `opts.h_init()` or else Hairer's `HINIT` guess for
     /// order 9. Errors as for [`Dop853::new`](super::Dop853::new).
     pub fn new(
         sys: &'a S,
@@ -117,36 +102,27 @@ impl<'a, S: OdeSystem<N>, const N: usize> RungeKutta<'a, S, N> for Vern9<'a, S, 
         k[16] = start.f0;
         Vern9 {
             k,
-            y: start.y0,
-            y_prev: start.y0,
-            f: start.f0,
-            carry: [0.0; N],
-            sys: start.sys,
-            ctl: start.control,
-            rtol: start.opts.rtol,
-            atol: start.opts.atol,
-            compensated: start.opts.compensated,
-            extra: Cell::new(None),
-            dense_evals: Cell::new(0),
+            run: RkRun::new(start),
         }
     }
 }
 
 impl<S: OdeSystem<N>, const N: usize> Vern9<'_, S, N> {
     fn advance(&mut self) -> Result<bool, IntegrateError> {
-        if self.ctl.done() {
+        let run = &mut self.run;
+        if run.ctl.done() {
             return Ok(true);
         }
-        let fixed = self.ctl.law() == Law::Fixed;
+        let fixed = run.ctl.law() == Law::Fixed;
         loop {
-            let h = self.ctl.attempt()?;
-            let t = self.ctl.t();
+            let h = run.ctl.attempt()?;
+            let t = run.ctl.t();
             let k = &mut self.k;
-            k[0] = self.f;
+            k[0] = run.f;
             // The last stage only serves the error estimate (B[15] = 0).
             let used = if fixed { STEP_STAGES - 1 } else { STEP_STAGES };
-            stages(self.sys, t, h, &self.y, k, 1..used);
-            self.ctl.count_evals(used - 1);
+            stages(run.sys, t, h, &run.y, k, 1..used);
+            run.ctl.count_evals(used - 1);
             let inc = weighted(&B, k);
             let err = if fixed {
                 0.0
@@ -154,36 +130,29 @@ impl<S: OdeSystem<N>, const N: usize> Vern9<'_, S, N> {
                 let est = weighted(&E, k);
                 let mut err = 0.0;
                 for i in 0..N {
-                    let y_new = self.y[i] + h * inc[i];
-                    let sk = self.atol + self.rtol * self.y[i].abs().max(y_new.abs());
+                    let sk = run.weight(i, run.y[i] + h * inc[i]);
                     err += (est[i] / sk) * (est[i] / sk);
                 }
                 h.abs() * (err / N as f64).sqrt()
             };
-            if !self.ctl.judge(err) {
+            if !run.ctl.judge(err) {
                 continue;
             }
-            let t_new = self.ctl.t_next();
-            let mut y_new = self.y;
-            let mut carry = self.carry;
-            let delta: [f64; N] = std::array::from_fn(|i| h * inc[i]);
-            if self.compensated {
-                compensated_add(&mut y_new, &mut carry, &delta);
-            } else {
-                (0..N).for_each(|i| y_new[i] += delta[i]);
-            }
-            let f_new = self.sys.rhs(t_new, &y_new);
-            self.ctl.count_evals(1);
-            let finite = y_new.iter().chain(f_new.iter()).all(|v| v.is_finite());
-            let last = self.ctl.advance(finite)?;
-            self.k[16] = f_new;
-            self.f = f_new;
-            self.y_prev = self.y;
-            self.y = y_new;
-            self.carry = carry;
-            self.extra.set(None);
+            let last = run.accept(&std::array::from_fn(|i| h * inc[i]))?;
+            self.k[16] = run.f;
             return Ok(last);
         }
+    }
+
+    /// Stages 17..=25 of the last accepted step (nine field evaluations).
+    fn interpolant_stages(&self) -> [[f64; N]; STAGES - 17] {
+        let run = &self.run;
+        let mut k = self.k;
+        let (t_prev, h) = (run.ctl.t_prev(), run.ctl.h_last());
+        stages(run.sys, t_prev, h, &run.y_prev, &mut k, 17..STAGES);
+        let mut extra = [[0.0; N]; STAGES - 17];
+        extra.copy_from_slice(&k[17..]);
+        extra
     }
 }
 
@@ -195,12 +164,12 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
     }
 
     fn clock(&self) -> Clock {
-        self.ctl.clock().with_evals(self.dense_evals.get())
+        self.run.clock()
     }
 
     /// Current state.
     fn y(&self) -> &[f64; N] {
-        &self.y
+        &self.run.y
     }
 
     /// Evaluates the 9th-order interpolant of the last accepted step `[t_prev, t]` at `t`.
@@ -210,21 +179,12 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
     /// stages of the interpolant (nine right-hand-side calls); later calls on the same step
     /// are free. Before the first step it returns the initial state.
     fn dense(&self, t: f64) -> [f64; N] {
-        if self.ctl.stats().steps == 0 {
-            return self.y;
-        }
-        let (t_prev, h) = (self.ctl.t_prev(), self.ctl.h_last());
+        let Some(extra) = self.run.dense(STAGES - 17, || self.interpolant_stages()) else {
+            return self.run.y;
+        };
+        let (t_prev, h) = (self.run.ctl.t_prev(), self.run.ctl.h_last());
         let mut k = self.k;
-        match self.extra.get() {
-            Some(extra) => k[17..].copy_from_slice(&extra),
-            None => {
-                stages(self.sys, t_prev, h, &self.y_prev, &mut k, 17..STAGES);
-                self.dense_evals.set(self.dense_evals.get() + STAGES - 17);
-                let mut extra = [[0.0; N]; STAGES - 17];
-                extra.copy_from_slice(&k[17..]);
-                self.extra.set(Some(extra));
-            }
-        }
+        k[17..].copy_from_slice(&extra);
         let theta = (t - t_prev) / h;
         let mut acc = [0.0; N];
         for (j, r) in R.iter().enumerate() {
@@ -235,15 +195,12 @@ impl<S: OdeSystem<N>, const N: usize> Stepper<N> for Vern9<'_, S, N> {
                 }
             }
         }
-        std::array::from_fn(|i| self.y_prev[i] + h * acc[i])
+        std::array::from_fn(|i| self.run.y_prev[i] + h * acc[i])
     }
 
     /// Replaces the current state after a step (e.g. a projection). Recomputes the first
     /// stage of the next step (one right-hand-side call) and clears the summation residue.
     fn set_state(&mut self, y: [f64; N]) {
-        self.y = y;
-        self.carry = [0.0; N];
-        self.f = self.sys.rhs(self.ctl.t(), &self.y);
-        self.ctl.count_evals(1);
+        self.run.set_state(y);
     }
 }

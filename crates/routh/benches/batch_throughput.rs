@@ -80,7 +80,7 @@ fn lanes<const L: usize>(
     if taylor {
         batch::taylor::integrate_in::<_, _, 6, L>(&sys, opts, &mut queue)?;
     } else {
-        batch::integrate::<_, _, 6, L>(&sys, opts, &mut queue)?;
+        batch::integrate::<_, _, 6, L>(&sys, opts, &mut queue);
     }
     match queue.failure {
         Some(e) => Err(e),
@@ -136,11 +136,7 @@ fn measure(
     x0: &[[f64; 6]],
 ) -> Option<(f64, Ensemble)> {
     let body = Body::default();
-    let opts = Options {
-        rtol: tol,
-        atol: tol,
-        ..Options::default()
-    };
+    let opts = Options::new(tol, tol).expect("a valid tolerance");
     let mut best = f64::INFINITY;
     let mut result = None;
     for _ in 0..repeat.max(1) {

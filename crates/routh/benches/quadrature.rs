@@ -37,12 +37,9 @@ fn quadrature(c: &mut Criterion) {
 fn dop853_once() {
     let case = Case::default_case().unwrap();
     let (body, x0) = (case.body("").unwrap(), case.initial);
-    let opts = Options {
-        rtol: case.integration.rtol,
-        atol: case.integration.atol,
-        max_steps: usize::MAX,
-        ..Options::default()
-    };
+    let opts = Options::new(case.integration.rtol, case.integration.atol)
+        .and_then(|opts| opts.with_max_steps(usize::MAX))
+        .unwrap();
     let field = |_t: f64, x: &[f64; 6]| vector_field(&body, x);
     let start = Instant::now();
     let (_, y, _, stats) = solve(
@@ -68,8 +65,8 @@ fn dop853_once() {
     println!(
         "DOP853 (rtol = {:e}, atol = {:e}) from 0 to {T_LONG:e}: {:.2} s, {} steps, {} rhs evaluations; \
          max |difference| to the quadrature at t = 1e6: {diff:.3e}",
-        opts.rtol,
-        opts.atol,
+        opts.rtol(),
+        opts.atol(),
         elapsed.as_secs_f64(),
         stats.steps,
         stats.rhs_evals

@@ -26,6 +26,7 @@ use routh::integrals::Integrals;
 use routh::integrate::{drive, stepper, Control, Drive, IntegrateError, Method, Options, Stats};
 use routh::projection::LevelSet;
 use routh::simulate::{project_every, ReducedSystem};
+use std::convert::Infallible;
 use std::io::BufRead;
 use std::path::Path;
 use std::time::Instant;
@@ -53,12 +54,7 @@ fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), Integra
     let method: Method = name.parse().unwrap_or_else(|e| panic!("{e}"));
     // `auto` by the plain runs' table, as the benchmark has always resolved it.
     let method = auto::resolve(method, tol, false);
-    let opts = Options {
-        rtol: tol,
-        atol: tol,
-        compensated,
-        ..Options::default()
-    };
+    let opts = Options::new(tol, tol)?.with_compensated(compensated);
     let mut s = stepper(method, &sys, 0.0, x0, T_END, &opts)?;
     match every {
         None => while !s.step()? {},
@@ -71,12 +67,11 @@ fn run(case: &Case, method: &str, tol: f64) -> Result<([f64; 6], Stats), Integra
                 project: Some(&project),
                 ..Drive::default()
             };
-            drive::<_, IntegrateError, 6>(
-                s.as_mut(),
-                &plan,
-                &mut |_, _| Ok(()),
-                &mut |_, _, _| Ok(Control::Continue),
-            )?;
+            let Ok(outcome) =
+                drive::<_, Infallible, 6>(s.as_mut(), &plan, &mut |_, _| Ok(()), &mut |_, _, _| {
+                    Ok(Control::Continue)
+                });
+            outcome.into_result()?;
         }
     }
     Ok((*s.y(), s.stats()))

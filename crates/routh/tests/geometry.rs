@@ -940,11 +940,7 @@ mod flows {
 
     fn dop853<const N: usize>(f: impl Fn(&[f64; N]) -> [f64; N], x0: [f64; N], t: f64) -> [f64; N] {
         let sys = |_t: f64, y: &[f64; N]| f(y);
-        let opts = Options {
-            rtol: 1e-13,
-            atol: 1e-13,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-13, 1e-13).unwrap();
         solve(&sys, 0.0, x0, t, &opts, None, None, &mut |_, _| {})
             .unwrap()
             .1

@@ -18,6 +18,7 @@ mod batch {
     use routh::simulate::ReducedSystem;
     use routh::state::{Normalise, State};
     use routh::Body;
+    use std::convert::Infallible;
 
     /// What is recorded of a run: per accepted step its end time, its state and the dense output
     /// in its middle; then the end.
@@ -99,7 +100,10 @@ mod batch {
     ) -> Result<(), IntegrateError> {
         let sys = ReducedSystem(body);
         match method {
-            Method::Dop853 => batch::integrate_on::<_, _, 6, LANES>(isa, &sys, opts, queue),
+            Method::Dop853 => {
+                batch::integrate_on::<_, _, 6, LANES>(isa, &sys, opts, queue);
+                Ok(())
+            }
             Method::Taylor if batch::taylor::lanes() == 8 => {
                 batch::taylor::integrate_in_on::<_, _, 6, 8>(isa, &sys, opts, queue)
             }
@@ -142,10 +146,10 @@ mod batch {
                 return record;
             }
         };
-        let outcome = drive(
+        let Ok(outcome) = drive::<_, Infallible, 6>(
             stepper.as_mut(),
             &Drive::default(),
-            &mut |_, _| Ok::<_, IntegrateError>(()),
+            &mut |_, _| Ok(()),
             &mut |_, _, s| {
                 // `drive` shows a zero-length span (t_end = t0) as one step that made no step;
                 // the batch ends such a run at once.
@@ -155,7 +159,7 @@ mod batch {
                 Ok(Control::Continue)
             },
         );
-        let failure = outcome.err();
+        let failure = outcome.into_result().err();
         record.end = Some((stepper.t(), *stepper.y(), stepper.stats(), failure));
         record
     }
@@ -192,11 +196,7 @@ mod batch {
     }
 
     fn options(tol: f64) -> Options {
-        Options {
-            rtol: tol,
-            atol: tol,
-            ..Options::default()
-        }
+        Options::new(tol, tol).unwrap()
     }
 
     /// Bitwise equality of two records (f64 `==` would let -0.0 pass for 0.0 and fail on NaN).
@@ -231,10 +231,7 @@ mod batch {
         let opts = options(1e-12);
         let jobs = runs(&body, 1024, 10.0);
         let lanes = in_lanes(method, &body, &jobs, &opts);
-        let plain = Options {
-            compensated: false,
-            ..opts
-        };
+        let plain = opts.with_compensated(false);
         let mut differ = 0;
         for (j, (job, record)) in jobs.iter().zip(&lanes).enumerate() {
             let alone = one_at_a_time(method, &body, job, &opts);
@@ -301,11 +298,7 @@ mod batch {
     #[test]
     fn taylor_lanes_of_different_orders_are_bitwise_the_one_at_a_time_runs() {
         let body = Body::default();
-        let opts = Options {
-            rtol: 1e-10 / 3.0,
-            atol: 1e-10,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-10 / 3.0, 1e-10).unwrap();
         let jobs: Vec<Job<6>> = tilts(64)
             .into_iter()
             .enumerate()
@@ -396,10 +389,7 @@ mod batch {
 
     fn a_failing_lane_does_not_disturb_the_others_with(method: Method) {
         let body = Body::default();
-        let opts = Options {
-            max_steps: 400,
-            ..options(1e-10)
-        };
+        let opts = options(1e-10).with_max_steps(400).unwrap();
         let good = runs(&body, 61, 5.0);
         let mut jobs = good.clone();
         jobs.insert(
@@ -492,26 +482,6 @@ mod batch {
             &one_at_a_time(Method::Taylor, &body, &jobs[6], &opts)
         ));
     }
-
-    /// Invalid options are refused before any run starts, as by the one-at-a-time integrator.
-    #[test]
-    fn invalid_options_are_refused_before_any_run() {
-        let body = Body::default();
-        let mut queue = Recorder::new(vec![Job {
-            t0: 0.0,
-            y0: tilted(&body, 0.3),
-            t_end: 1.0,
-        }]);
-        let bad = options(-1e-10);
-        for method in [Method::Dop853, Method::Taylor] {
-            let err = integrate(method, &body, &bad, &mut queue);
-            assert!(matches!(
-                err,
-                Err(IntegrateError::InvalidOption { name: "rtol", .. })
-            ));
-            assert_eq!(queue.next, 0, "no run should have started");
-        }
-    }
 }
 
 mod driver {
@@ -581,11 +551,7 @@ mod driver {
 
     #[test]
     fn the_observer_stops_a_run_between_steps() {
-        let opts = Options {
-            rtol: 1e-10,
-            atol: 1e-10,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-10, 1e-10).unwrap();
         let mut solver = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 100.0, &opts).unwrap();
         let mut seen = 0;
         let outcome = drive::<_, IntegrateError, 2>(
@@ -604,7 +570,8 @@ mod driver {
         .unwrap();
         assert_eq!(seen, 5);
         assert_eq!(outcome.stats.steps, 5);
-        assert!(matches!(outcome.stop, Stop::Stopped { t } if t > 0.0 && t < 100.0));
+        assert_eq!(outcome.stop, Stop::Stopped);
+        assert!(outcome.t > 0.0 && outcome.t < 100.0, "{}", outcome.t);
         // Negative control: without the stop the run reaches t_end.
         let mut solver = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 100.0, &opts).unwrap();
         let outcome = drive::<_, IntegrateError, 2>(
@@ -625,11 +592,7 @@ mod driver {
         // h^4 ~ 1e-12, interpolant ~1e-12).
         let samples: Vec<f64> = (0..16).map(|i| 0.1 * i as f64).collect();
         let event = |_: f64, y: &[f64; 2]| y[0];
-        let opts = Options {
-            rtol: 1e-12,
-            atol: 1e-12,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-12, 1e-12).unwrap();
         let mut dop = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 3.0, &opts).unwrap();
         let mut rk = Rk4::new(&oscillator, 0.0, [1.0, 0.0], 3.0, 3000);
         let steppers: [&mut dyn Stepper<2>; 2] = [&mut dop, &mut rk];
@@ -649,9 +612,8 @@ mod driver {
                 &mut |_, _, _| Ok(Control::Continue),
             )
             .unwrap();
-            let Stop::Event { t, .. } = outcome.stop else {
-                panic!("no event: {:?}", outcome.stop)
-            };
+            assert_eq!(outcome.stop, Stop::Event);
+            let t = outcome.t;
             assert!((t - PI / 2.0).abs() < 1e-10, "event at {t}");
             assert_eq!(got.len(), samples.len());
             for (t, y) in got {
@@ -662,6 +624,130 @@ mod driver {
                 );
             }
         }
+    }
+
+    /// An observer that stops the run within a step ([`Control::StopAt`], as Python's events
+    /// do): the run ends at the time and state it gives, the samples after that time are not
+    /// reported, and the observer sees the step before its samples. Control: a stop after the
+    /// same step reports the samples up to the step end.
+    #[test]
+    fn the_observer_stops_a_run_within_a_step() {
+        let samples: Vec<f64> = (0..=300).map(|i| 0.01 * i as f64).collect();
+        let opts = Options::new(1e-10, 1e-10).unwrap();
+        for within in [true, false] {
+            let mut solver = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 3.0, &opts).unwrap();
+            let got = std::cell::RefCell::new(Vec::new());
+            let mut stop_at = None;
+            let outcome = drive::<_, IntegrateError, 2>(
+                &mut solver,
+                &Drive {
+                    samples: &samples,
+                    ..Drive::default()
+                },
+                &mut |t, _| {
+                    got.borrow_mut().push(t);
+                    Ok(())
+                },
+                &mut |t, _, s| {
+                    // The samples of this step come after the observer.
+                    assert!(got.borrow().iter().all(|&g| g <= s.t_prev()));
+                    if t < 1.0 {
+                        return Ok(Control::Continue);
+                    }
+                    let mid = 0.5 * (s.t_prev() + t);
+                    stop_at = Some((s.t_prev(), mid, t));
+                    Ok(if within {
+                        Control::StopAt {
+                            t: mid,
+                            y: [7.0, 8.0],
+                        }
+                    } else {
+                        Control::Stop
+                    })
+                },
+            )
+            .unwrap();
+            let (t_prev, mid, t) = stop_at.expect("the run passed t = 1");
+            let got = got.into_inner();
+            assert_eq!(outcome.stop, Stop::Stopped);
+            let end = if within { mid } else { t };
+            assert_eq!(outcome.t, end);
+            let expected: Vec<f64> = samples.iter().copied().filter(|&s| s <= end).collect();
+            assert_eq!(got, expected, "within the step: {within}");
+            assert!(got.iter().any(|&s| s > t_prev), "a sample on the last step");
+            if within {
+                assert_eq!(outcome.y, [7.0, 8.0]);
+                assert!(
+                    samples.iter().any(|&s| s > mid && s <= t),
+                    "a sample left out"
+                );
+            } else {
+                assert_eq!(outcome.y, *solver.y());
+            }
+        }
+    }
+
+    /// A failure of the stepper, and a state that is not finite after the projection, end the
+    /// run with [`Stop::Failed`] at the last step reached, not with an error (which only a
+    /// callback returns).
+    #[test]
+    fn a_failure_ends_the_run_as_a_stop() {
+        let opts = Options::default().with_max_steps(5).unwrap();
+        let mut solver = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 100.0, &opts).unwrap();
+        let mut seen = Vec::new();
+        let outcome = drive::<_, IntegrateError, 2>(
+            &mut solver,
+            &Drive::default(),
+            &mut |_, _| Ok(()),
+            &mut |t, _, _| {
+                seen.push(t);
+                Ok(Control::Continue)
+            },
+        )
+        .unwrap();
+        assert!(matches!(
+            outcome.stop,
+            Stop::Failed(IntegrateError::TooManySteps { max_steps: 5, .. })
+        ));
+        assert_eq!(outcome.t, *seen.last().unwrap());
+        assert_eq!((outcome.y, outcome.stats), (*solver.y(), solver.stats()));
+        assert!(outcome.clone().into_result().is_err());
+        let nan = |y: &mut [f64; 2]| {
+            if y[0] < 0.5 {
+                y[0] = f64::NAN;
+            }
+        };
+        let mut rk = Rk4::new(&oscillator, 0.0, [1.0, 0.0], 3.0, 30);
+        let outcome = drive::<_, IntegrateError, 2>(
+            &mut rk,
+            &Drive {
+                project: Some(&nan),
+                ..Drive::default()
+            },
+            &mut |_, _| Ok(()),
+            &mut |_, y, _| {
+                assert!(y[0].is_finite(), "the observer sees no NaN");
+                Ok(Control::Continue)
+            },
+        )
+        .unwrap();
+        let Stop::Failed(IntegrateError::NonFinite { t }) = outcome.stop else {
+            panic!("{:?}", outcome.stop)
+        };
+        assert!(
+            (t - 1.1).abs() < 1e-12,
+            "cos t < 0.5 first at the step end 1.1: {t}"
+        );
+        assert_eq!(outcome.t, t);
+        // Control: a callback's error is the error.
+        let mut solver = Dop853::new(&oscillator, 0.0, [1.0, 0.0], 1.0, &opts).unwrap();
+        let err = drive(
+            &mut solver,
+            &Drive::default(),
+            &mut |_, _| Ok(()),
+            &mut |_, _, _| Err("stop"),
+        );
+        assert_eq!(err, Err("stop"));
     }
 }
 
@@ -698,11 +784,7 @@ mod integrate_published {
     const AREN_T: f64 = 17.0652165601579625588917206249;
 
     fn tol_opts(tol: f64) -> Options {
-        Options {
-            rtol: tol,
-            atol: tol,
-            ..Options::default()
-        }
+        Options::new(tol, tol).unwrap()
     }
 
     fn max_abs_diff<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
@@ -814,10 +896,7 @@ mod integrate_published {
             let tol = 10f64.powi(-k);
             // The plain update of the Fortran (no compensated summation), so that the
             // arithmetic is the same operation for operation.
-            let opts = Options {
-                compensated: false,
-                ..tol_opts(tol)
-            };
+            let opts = tol_opts(tol).with_compensated(false);
             let (y, stats) = run_to_end(&arenstorf, 0.0, AREN_Y0, AREN_T, &opts);
             println!(
                 "tol 1e-{k}: {stats:?}, endpoint error {:e}",
@@ -911,7 +990,7 @@ mod integrate_published {
         let opts = tol_opts(1e-12);
         let g = |_t: f64, y: &[f64; 2]| y[0];
         let mut last_t = 0.0;
-        let (stop, y, t, _) = solve(
+        let (stop, ye, te, _) = solve(
             &oscillator,
             0.0,
             [1.0, 0.0],
@@ -922,11 +1001,8 @@ mod integrate_published {
             &mut |t, _| last_t = t,
         )
         .unwrap();
-        let Stop::Event { t: te, y: ye } = stop else {
-            panic!("no event found: {stop:?}");
-        };
+        assert_eq!(stop, Stop::Event, "no event found");
         println!("event at t = {te:.17}, error {:e}", te - FRAC_PI_2);
-        assert_eq!((te, ye), (t, y));
         assert_eq!(last_t, te, "the observer sees the event point last");
         assert!((te - FRAC_PI_2).abs() < 1e-12);
         assert!((ye[1] + 1.0).abs() < 1e-12);
@@ -1002,65 +1078,30 @@ mod integrate_published {
 
     #[test]
     fn invalid_options_are_rejected() {
-        let cases: [(Options, &str); 7] = [
+        let cases = [
+            (Options::new(f64::NAN, 1e-10), "rtol"),
+            (Options::new(0.0, 1e-10), "rtol"),
+            (Options::new(1e-10, -1e-8), "atol"),
+            (Options::new(1e-10, f64::INFINITY), "atol"),
             (
-                Options {
-                    rtol: f64::NAN,
-                    ..Options::default()
-                },
-                "rtol",
-            ),
-            (
-                Options {
-                    rtol: 0.0,
-                    ..Options::default()
-                },
-                "rtol",
-            ),
-            (
-                Options {
-                    atol: -1e-8,
-                    ..Options::default()
-                },
-                "atol",
-            ),
-            (
-                Options {
-                    atol: f64::INFINITY,
-                    ..Options::default()
-                },
-                "atol",
-            ),
-            (
-                Options {
-                    h_init: Some(0.0),
-                    ..Options::default()
-                },
+                Options::default().with_h_init(0.0),
                 "h_init (absolute value)",
             ),
-            (
-                Options {
-                    h_max: Some(f64::NAN),
-                    ..Options::default()
-                },
-                "h_max",
-            ),
-            (
-                Options {
-                    max_steps: 0,
-                    ..Options::default()
-                },
-                "max_steps",
-            ),
+            (Options::default().with_h_max(f64::NAN), "h_max"),
+            (Options::default().with_max_steps(0), "max_steps"),
         ];
         for (opts, expected) in cases {
-            match Dop853::new(&oscillator, 0.0, [1.0, 0.0], 1.0, &opts) {
+            match opts {
                 Err(IntegrateError::InvalidOption { name, .. }) => assert_eq!(name, expected),
                 Err(e) => panic!("wrong error for {expected}: {e}"),
                 Ok(_) => panic!("{expected} accepted"),
             }
         }
-        assert!(Options::default().validate().is_ok());
+        assert_eq!(Options::new(1e-10, 1e-10), Ok(Options::default()));
+        assert_eq!(
+            Options::new(0.0, 1e-10).unwrap_err().to_string(),
+            "invalid option rtol = 0: must be finite and > 0"
+        );
         let err = solve_dense(
             &oscillator,
             0.0,
@@ -1098,10 +1139,7 @@ mod integrate_published {
             }
             e => panic!("unexpected error {e}"),
         }
-        let opts = Options {
-            max_steps: 5,
-            ..Options::default()
-        };
+        let opts = Options::default().with_max_steps(5).unwrap();
         let err = solve(&f, 0.0, [1.0], 2.0, &opts, None, None, &mut |_, _| {}).unwrap_err();
         assert!(
             matches!(err, IntegrateError::TooManySteps { t, max_steps: 5 } if t > 0.0 && t < 1.0),
@@ -1244,11 +1282,7 @@ mod taylor {
     }
 
     fn tolerances(tol: f64) -> Options {
-        Options {
-            rtol: tol,
-            atol: tol,
-            ..Options::default()
-        }
+        Options::new(tol, tol).unwrap()
     }
 
     fn run_to_end<const N: usize>(s: &mut dyn Stepper<N>) -> Result<[f64; N], IntegrateError> {
@@ -1534,9 +1568,8 @@ mod taylor {
             &mut |_, _, _| Ok(Control::Continue),
         )
         .unwrap();
-        let Stop::Event { t, y } = outcome.stop else {
-            panic!("no event: {:?}", outcome.stop)
-        };
+        assert_eq!(outcome.stop, Stop::Event);
+        let (t, y) = (outcome.t, outcome.y);
         println!("event at t = {t}, y = {y:?}");
         assert!((t - std::f64::consts::PI).abs() < 1e-10, "{t}");
         assert!((y[0] + 1.6).abs() < 1e-10, "apocentre {y:?}");
@@ -1868,11 +1901,7 @@ mod vern9 {
         let period = 2.0 * std::f64::consts::PI;
         let mut last_err = f64::INFINITY;
         for tol in [1e-6, 1e-8, 1e-10, 1e-12] {
-            let opts = Options {
-                rtol: tol,
-                atol: tol,
-                ..Options::default()
-            };
+            let opts = Options::new(tol, tol).unwrap();
             let mut solver = Vern9::new(&kepler, 0.0, y0, 3.0 * period, &opts).unwrap();
             while !solver.step().unwrap() {}
             let err = max_abs_diff(solver.y(), &y0);
@@ -1883,11 +1912,7 @@ mod vern9 {
         }
         // Dense output: one period later the orbit repeats, so y(t + T) = y(t).
         let tol = 1e-12;
-        let opts = Options {
-            rtol: tol,
-            atol: tol,
-            ..Options::default()
-        };
+        let opts = Options::new(tol, tol).unwrap();
         let mut reference = Vern9::new(&kepler, 0.0, y0, period, &opts).unwrap();
         let mut first = vec![];
         while !reference.step().unwrap() {

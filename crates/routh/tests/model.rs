@@ -1405,11 +1405,7 @@ mod motion {
         y0: [f64; FULL_DIM],
         times: &[f64],
     ) -> Vec<Sample> {
-        let opts = Options {
-            rtol: TOLERANCE,
-            atol: TOLERANCE,
-            ..Options::default()
-        };
+        let opts = Options::new(TOLERANCE, TOLERANCE).unwrap();
         let mut out = Vec::with_capacity(times.len());
         let t_end = *times.last().expect("at least one sample");
         solve_dense(system, 0.0, y0, t_end, &opts, None, times, &mut |t, y| {

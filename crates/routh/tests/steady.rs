@@ -561,11 +561,7 @@ mod steady {
     #[test]
     fn steady_precessions_keep_their_tilt_under_the_integrator() {
         let body = Body::default();
-        let opts = Options {
-            rtol: 1e-13,
-            atol: 1e-15,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-13, 1e-15).unwrap();
         let field = |_t: f64, x: &[f64; 6]| vector_field(&body, x);
         let mut count = 0;
         for theta in [0.3, 1.0, 2.0] {

@@ -9,11 +9,10 @@
 //! lane in `f64`, in the same code as the one-at-a-time stepper's. A lane is bitwise the
 //! one-at-a-time integrator (see the module [`crate::batch`]).
 
-use std::cell::Cell;
-
 use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Field, Job, Lanes};
+use crate::pair::DenseCache;
 use crate::scalar::Scalar;
 use crate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
 use crate::taylor::tape::Isa;
@@ -43,7 +42,7 @@ pub fn integrate_in_lanes<F: Field<N>, Q: Queue<N>, const N: usize>(
     field: &F,
     opts: &Options,
     queue: &mut Q,
-) -> Result<(), IntegrateError> {
+) {
     if lanes() == 8 {
         integrate::<F, Q, N, 8>(field, opts, queue)
     } else {
@@ -135,15 +134,14 @@ struct Dop853Lanes<'f, F, const N: usize, const L: usize> {
 
 /// Integrates the runs of `queue` with DOP853 (`opts` as for
 /// [`crate::Dop853`]), `L` at a time in lanes; each lane's run is bitwise the
-/// one-at-a-time integration. Returns when the queue is empty and every lane has ended.
-/// Invalid options are refused before any run starts; a run that fails ends with its
-/// failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other
-/// lanes.
+/// one-at-a-time integration. Returns when the queue is empty and every lane has ended; a run
+/// that fails ends with its failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does
+/// not disturb the other lanes.
 pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     field: &F,
     opts: &Options,
     queue: &mut Q,
-) -> Result<(), IntegrateError> {
+) {
     integrate_on::<F, Q, N, L>(Isa::detect(), field, opts, queue)
 }
 
@@ -155,8 +153,7 @@ pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     field: &F,
     opts: &Options,
     queue: &mut Q,
-) -> Result<(), IntegrateError> {
-    opts.validate()?;
+) {
     let zero = [Lanes::splat(0.0); N];
     let mut method = Dop853Lanes::<F, N, L> {
         field,
@@ -165,7 +162,6 @@ pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
         k: [zero; 16],
     };
     Runs::integrate(isa, &mut method, queue);
-    Ok(())
 }
 
 impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lanes<'_, F, N, L> {
@@ -205,7 +201,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
         self.k[0] = self.f;
         let inc = stages(self.field, h, &runs.y, &mut self.k);
         let k = &self.k;
-        let (rtol, atol) = (self.opts.rtol, self.opts.atol);
+        let (rtol, atol) = (self.opts.rtol(), self.opts.atol());
         let (mut err5, mut err3) = (Lanes::splat(0.0), Lanes::splat(0.0));
         for i in 0..N {
             let y_new = runs.y[i] + h * inc[i];
@@ -231,7 +227,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
         let mut y_acc = runs.y;
         for l in (0..L).filter(|&l| accepted[l]) {
             let delta = std::array::from_fn(|i| h.0[l] * inc[i].0[l]);
-            let y = runs.add(l, &delta, self.opts.compensated);
+            let y = runs.add(l, &delta, self.opts.compensated());
             set_lane(&mut y_acc, l, &y);
         }
         if !accepted.contains(&true) {
@@ -278,11 +274,10 @@ impl<F: Field<N>, const N: usize, const L: usize> Dop853Lanes<'_, F, N, L> {
             control,
             y_prev,
             y,
-            cont: Cell::new(None),
-            dense_evals: Cell::new(0),
+            cont: DenseCache::new(),
         };
         queue.step(l, &view);
-        let dense_evals = view.dense_evals.get();
+        let dense_evals = view.cont.evals();
         if let Some(control) = runs.control[l].as_mut() {
             control.count_evals(dense_evals);
         }
@@ -303,8 +298,8 @@ struct LaneStep<'b, F, const N: usize, const L: usize> {
     control: StepControl,
     y_prev: [f64; N],
     y: [f64; N],
-    cont: Cell<Option<[[f64; N]; 8]>>,
-    dense_evals: Cell<usize>,
+    /// The dense-output coefficients of the step, built on the first request.
+    cont: DenseCache<[[f64; N]; 8]>,
 }
 
 impl<F: Field<N>, const N: usize, const L: usize> LaneStep<'_, F, N, L> {
@@ -334,7 +329,6 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneStep<'_, F, N, L> {
             &k,
             [0, 5, 6, 7, 8, 12, 13, 14],
         ));
-        self.dense_evals.set(self.dense_evals.get() + 3);
         dense_rows(y, &self.y, h, &k)
     }
 }
@@ -347,7 +341,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
     }
 
     fn clock(&self) -> Clock {
-        self.control.clock().with_evals(self.dense_evals.get())
+        self.control.clock().with_evals(self.cont.evals())
     }
 
     fn y(&self) -> &[f64; N] {
@@ -357,14 +351,7 @@ impl<F: Field<N>, const N: usize, const L: usize> Stepper<N> for LaneStep<'_, F,
     /// The 7th-order continuous extension of the step at `t`, as
     /// [`crate::Dop853`] evaluates it.
     fn dense(&self, t: f64) -> [f64; N] {
-        let cont = match self.cont.get() {
-            Some(c) => c,
-            None => {
-                let c = self.dense_coefficients();
-                self.cont.set(Some(c));
-                c
-            }
-        };
+        let cont = self.cont.get(3, || self.dense_coefficients());
         dense_at(&cont, (t - self.control.t_prev()) / self.control.h_last())
     }
 

@@ -48,9 +48,9 @@ pub fn lanes() -> usize {
 /// Integrates the runs of `queue` with the Taylor method (`opts` as for
 /// [`Taylor::new`](crate::Taylor::new)), in [`lanes`] lanes; each lane's run is
 /// bitwise the one-at-a-time integration. Returns when the queue is empty and every lane has
-/// ended. Invalid options, and a system that cannot be recorded
-/// ([`OdeSystem::record`]), are refused before any run starts; a run that fails ends with
-/// its failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other lanes.
+/// ended. A system that cannot be recorded ([`OdeSystem::record`]) is refused before any run
+/// starts; a run that fails ends with its failure in
+/// [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other lanes.
 pub fn integrate<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize>(
     sys: &S,
     opts: &Options,
@@ -81,8 +81,7 @@ pub fn integrate_in_on<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, co
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
-    opts.validate()?;
-    let max_order = taylor_order(opts.rtol.min(opts.atol));
+    let max_order = taylor_order(opts.rtol().min(opts.atol()));
     let tape = Tape::record(sys, max_order).ok_or(IntegrateError::Unsupported {
         method: "taylor",
         reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
@@ -90,7 +89,7 @@ pub fn integrate_in_on<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, co
     let mut method = TaylorLanes::<N, L, S::Kernels> {
         tape: tape.with_coefficients(),
         opts: *opts,
-        rule: SeriesRule::new(opts.rtol, opts.atol, max_order),
+        rule: SeriesRule::new(opts.rtol(), opts.atol(), max_order),
         order: [0; L],
     };
     Runs::integrate(isa, &mut method, queue);
@@ -206,7 +205,7 @@ impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLane
                 runs.end(l, Some(e), self, queue);
                 continue;
             }
-            let y = runs.add(l, &d, self.opts.compensated);
+            let y = runs.add(l, &d, self.opts.compensated());
             set_lane(&mut runs.y, l, &y);
             let Some(control) = runs.control[l].as_mut() else {
                 continue;

@@ -192,8 +192,8 @@ pub struct Taylor<const N: usize, K = Interpreted> {
 
 impl<const N: usize, K: Kernels> Taylor<N, K> {
     /// Prepares an integration of `sys` from `(t0, y0)` towards `t_end` (forward or backward),
-    /// with the Jorba–Zou order and step for `opts.rtol`, `opts.atol` (`opts.h_init` is not
-    /// used: the first step comes from the series as every other). Records the field of `sys`
+    /// with the Jorba–Zou order and step for `opts.rtol()`, `opts.atol()` (`opts.h_init()` is
+    /// not used: the first step comes from the series as every other). Records the field of `sys`
     /// once; fails with [`IntegrateError::Unsupported`] if `sys` cannot be recorded
     /// ([`OdeSystem::record`]), and as [`Dop853::new`](super::Dop853::new) otherwise.
     pub fn new<S: OdeSystem<N, Kernels = K> + ?Sized>(
@@ -203,9 +203,8 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
         t_end: f64,
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
-        opts.validate()?;
-        let max_order = taylor_order(opts.rtol.min(opts.atol));
-        let control = Control::Adaptive(SeriesRule::new(opts.rtol, opts.atol, max_order));
+        let max_order = taylor_order(opts.rtol().min(opts.atol()));
+        let control = Control::Adaptive(SeriesRule::new(opts.rtol(), opts.atol(), max_order));
         Self::build(sys, t0, y0, t_end, control, max_order, opts)
     }
 
@@ -232,10 +231,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
             order,
             h: (t_end - t0) / steps as f64,
         };
-        let opts = Options {
-            max_steps: steps,
-            ..Options::default()
-        };
+        let opts = Options::default().with_max_steps(steps)?;
         Self::build(sys, t0, y0, t_end, control, order, &opts)
     }
 
@@ -260,7 +256,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
             carry: [0.0; N],
             p_last: 0,
             control,
-            compensated: opts.compensated,
+            compensated: opts.compensated(),
         })
     }
 

@@ -379,16 +379,8 @@ impl Sweep {
                 &mut |_, _| Ok::<_, AppError>(()),
                 &mut |step| turning.observe(step),
             )?;
-            match observed.failure {
-                Some(e) => Err(e.into()),
-                None => Ok::<_, AppError>(self.finished(
-                    k,
-                    &body,
-                    &case,
-                    observed.summary,
-                    turning.summary(),
-                )),
-            }
+            let summary = observed.summary()?;
+            Ok::<_, AppError>(self.finished(k, &body, &case, summary, turning.summary()))
         }));
         match attempt {
             Ok(Ok(row)) => row,
@@ -436,12 +428,8 @@ impl Sweep {
                     }
                 }
             }
-            let opts = Options {
-                rtol: self.settings.rtol,
-                atol: self.settings.atol,
-                max_steps: self.settings.max_steps,
-                ..Options::default()
-            };
+            let opts = Options::new(self.settings.rtol, self.settings.atol)
+                .and_then(|opts| opts.with_max_steps(self.settings.max_steps))?;
             for (body, group) in &bodies {
                 let mut queue = LaneQueue {
                     sweep: self,
@@ -454,7 +442,7 @@ impl Sweep {
                 let sys = ReducedSystem(body);
                 match self.settings.method {
                     Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
-                    _ => batch::integrate_in_lanes(&sys, &opts, &mut queue)?,
+                    _ => batch::integrate_in_lanes(&sys, &opts, &mut queue),
                 }
             }
             Ok::<_, AppError>(rows.into_iter().flatten().collect())

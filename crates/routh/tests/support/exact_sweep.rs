@@ -82,12 +82,9 @@ pub fn dop853(case: &SweepCase, t: f64) -> State {
 /// DOP853 (compensated summation) at relative tolerance `rtol`, absolute `rtol / 100`, from
 /// `x0` at time 0 to `t`: the independent reference of the tests of the exact solution.
 pub fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
-    let opts = Options {
-        rtol,
-        atol: 1e-2 * rtol,
-        max_steps: 10_000_000,
-        ..Options::default()
-    };
+    let opts = Options::new(rtol, 1e-2 * rtol)
+        .and_then(|opts| opts.with_max_steps(10_000_000))
+        .unwrap();
     let field = |_t: f64, x: &[f64; 6]| vector_field(body, x);
     let (_, y, _, _) = solve(
         &field,
