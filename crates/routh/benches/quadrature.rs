@@ -38,8 +38,8 @@ fn dop853_once() {
     let case = Case::default_case().unwrap();
     let (body, x0) = (case.body("").unwrap(), case.initial);
     let opts = Options {
-        rtol: case.integration.rtol,
-        atol: case.integration.atol,
+        rtol: case.integration.rtol(),
+        atol: case.integration.atol(),
         max_steps: usize::MAX,
         ..Options::default()
     };
