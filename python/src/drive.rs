@@ -8,13 +8,11 @@
 use pyo3::{PyErr, PyResult};
 use routh_core::ball::AsBall;
 use routh_core::integrate::{
-    locate, Control, Direction, EventSpec, Method, OdeSystem, Stats, Stepper, Stop, Unlocated,
+    locate, Control, Direction, EventSpec, OdeSystem, Stats, Stepper, Stop, Unlocated,
 };
 use routh_core::problem::{DenseSolution, Status};
 use routh_core::projection::LevelSet;
-use routh_core::simulate::{
-    integrate_span, project_onto, reduced, Drift, Settings as LibrarySettings, Span,
-};
+use routh_core::simulate::{integrate_span, project_onto, reduced, Drift, Settings, Span};
 use routh_core::RouthError;
 use std::cell::RefCell;
 use std::collections::BTreeMap;
@@ -22,23 +20,6 @@ use std::collections::BTreeMap;
 /// Steps between two checks for a pending Ctrl-C (a DOP853 step of (mg-eq) takes about a
 /// microsecond, so the check runs about every 0.3 ms and costs nothing measurable).
 pub const SIGNAL_CHECK_STEPS: usize = 256;
-
-/// The integration settings of a run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settings {
-    /// The integrator.
-    pub method: Method,
-    /// Relative tolerance of DOP853.
-    pub rtol: f64,
-    /// Absolute tolerance of DOP853.
-    pub atol: f64,
-    /// Project the reduced state onto the level set of the integrals through `x0` after every
-    /// step and at every reported state.
-    pub project: bool,
-    /// With `project`, the step ends are projected after every `project_every`-th step only
-    /// (the reported states always).
-    pub project_every: usize,
-}
 
 /// How an event is counted: SciPy's `terminal` (0: never stops, n: stops at the n-th
 /// occurrence) and `direction` (> 0: only from negative to positive, < 0: the reverse,
@@ -227,8 +208,8 @@ impl<const N: usize> Events<'_, N> {
 
 /// Integrate `sys` from `(t0, y0)` to `t1` (either direction) with `settings`, reporting
 /// states at `output`, locating the events of `hooks`, keeping the dense output of every step
-/// if `dense`. Fails only with the error of a hook or invalid settings; a failure of the
-/// integrator is returned as [`Status::Failed`] with what was computed.
+/// if `dense`. Fails only with the error of a hook or a span or samples the library refuses;
+/// a failure of the integrator is returned as [`Status::Failed`] with what was computed.
 #[allow(clippy::too_many_arguments)]
 pub fn drive<S: OdeSystem<N>, const N: usize>(
     body: &impl AsBall,
@@ -260,7 +241,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
         unlocated: None,
     };
     let level = settings
-        .project
+        .project()
         .then(|| LevelSet::through(body, &reduced(&y0)));
     let project = |mut y: [f64; N]| {
         project_onto(level.as_ref(), &mut y);
@@ -276,14 +257,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             t1,
             samples,
         },
-        &LibrarySettings {
-            method: settings.method,
-            rtol: settings.rtol,
-            atol: settings.atol,
-            project: settings.project,
-            project_every: settings.project_every,
-            ..LibrarySettings::default()
-        },
+        settings,
         None,
         &mut |t, y| {
             reported.borrow_mut().push((t, *y));
@@ -293,7 +267,7 @@ pub fn drive<S: OdeSystem<N>, const N: usize>(
             if dense {
                 dense_solution.record(stepper);
             }
-            let raw = if settings.project {
+            let raw = if settings.project() {
                 stepper.dense(t)
             } else {
                 *y

@@ -4,7 +4,7 @@
 use crate::ball::Rolling;
 use crate::convert::{bad_argument, check_size, phase_point, python_error, times, vector};
 use crate::dense::DenseOutput;
-use crate::drive::{drive, EventRule, Hooks, Output, Settings};
+use crate::drive::{drive, EventRule, Hooks, Output};
 use crate::solution::Solution;
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
@@ -14,7 +14,7 @@ use routh_core::ball::AsBall;
 use routh_core::case::Case;
 use routh_core::integrate::{Method, OdeSystem};
 use routh_core::motion::{initial_full, FullMotion};
-use routh_core::simulate::{self as model, validate, ReducedSystem};
+use routh_core::simulate::{ReducedSystem, Settings};
 use routh_core::State;
 use std::path::PathBuf;
 
@@ -221,12 +221,9 @@ pub struct PyProblem {
     body: Rolling,
     x0: [f64; 6],
     t_span: (f64, f64),
-    rtol: f64,
-    atol: f64,
-    method: Method,
-    project: bool,
-    /// With `project`, the step ends are projected after every `project_every`-th step.
-    project_every: usize,
+    /// The method, the tolerances and the projection (t_end the length of `t_span`),
+    /// validated when the problem was made.
+    settings: Settings,
     full: bool,
 }
 
@@ -254,13 +251,6 @@ impl PyProblem {
         events: &[Py<PyEvent>],
         dense_output: bool,
     ) -> PyResult<Solution> {
-        let settings = Settings {
-            method: self.method,
-            rtol: self.rtol,
-            atol: self.atol,
-            project: self.project,
-            project_every: self.project_every,
-        };
         let rules: Vec<EventRule> = events.iter().map(|e| e.get().rule).collect();
         let kinds: Vec<&What> = events.iter().map(|e| &e.get().what).collect();
         let body = self.body.ball();
@@ -289,7 +279,7 @@ impl PyProblem {
                 t0,
                 y0,
                 t1,
-                &settings,
+                &self.settings,
                 out,
                 dense_output,
                 Hooks {
@@ -301,7 +291,7 @@ impl PyProblem {
         })?;
         let dense = std::mem::take(&mut run.dense);
         let sol = if dense_output {
-            DenseOutput::new(self.body, self.project, dense, &y0, run.t_last)
+            DenseOutput::new(self.body, self.settings.project(), dense, &y0, run.t_last)
         } else {
             None
         };
@@ -309,8 +299,8 @@ impl PyProblem {
             py,
             &body,
             run,
-            self.method.to_string(),
-            self.project,
+            self.settings.method().to_string(),
+            self.settings.project(),
             self.t_span,
             y0,
             sol,
@@ -408,25 +398,18 @@ impl PyProblem {
                 .map_err(|e: routh_core::integrate::ParseMethodError| {
                     PyValueError::new_err(e.to_string())
                 })?;
-        validate(&model::Settings {
-            method,
-            t_end: (t_span.1 - t_span.0).abs(),
-            rtol,
-            atol,
-            project,
-            project_every: project_every as usize,
-            ..model::Settings::default()
-        })
-        .map_err(python_error)?;
+        let settings = Settings::builder()
+            .method(method)
+            .t_end((t_span.1 - t_span.0).abs())
+            .tolerances(rtol, atol)
+            .projection(project, project_every as usize)
+            .build()
+            .map_err(python_error)?;
         Ok(PyProblem {
             body: Rolling::extract("body", body)?,
             x0,
             t_span,
-            rtol,
-            atol,
-            method,
-            project,
-            project_every: project_every as usize,
+            settings,
             full,
         })
     }
@@ -437,15 +420,17 @@ impl PyProblem {
     #[pyo3(signature = (path = None, full = false))]
     fn from_case(path: Option<PathBuf>, full: bool) -> PyResult<Self> {
         let case = Case::load(path.as_deref()).map_err(python_error)?;
+        let i = case.integration;
+        let settings = Settings::builder()
+            .t_end(i.t_end())
+            .tolerances(i.rtol(), i.atol())
+            .build()
+            .map_err(python_error)?;
         Ok(PyProblem {
             body: Rolling::of_case(&case, "a Python Problem"),
             x0: case.initial.to_array(),
-            t_span: (0.0, case.integration.t_end),
-            rtol: case.integration.rtol,
-            atol: case.integration.atol,
-            method: Method::Dop853,
-            project: false,
-            project_every: 1,
+            t_span: (0.0, i.t_end()),
+            settings,
             full,
         })
     }
@@ -471,25 +456,25 @@ impl PyProblem {
     /// Relative tolerance.
     #[getter]
     fn rtol(&self) -> f64 {
-        self.rtol
+        self.settings.rtol()
     }
 
     /// Absolute tolerance.
     #[getter]
     fn atol(&self) -> f64 {
-        self.atol
+        self.settings.atol()
     }
 
     /// The method, `"dop853"` or `"rk4:<steps>"`.
     #[getter]
     fn method(&self) -> String {
-        self.method.to_string()
+        self.settings.method().to_string()
     }
 
     /// Whether states are projected onto the level set of the integrals.
     #[getter]
     fn project(&self) -> bool {
-        self.project
+        self.settings.project()
     }
 
     /// Whether the motion in space is integrated too.
@@ -502,7 +487,7 @@ impl PyProblem {
     /// (reported states always).
     #[getter]
     fn project_every(&self) -> usize {
-        self.project_every
+        self.settings.project_every()
     }
 
     /// Pickling: the constructor and its arguments.
@@ -515,12 +500,12 @@ impl PyProblem {
             p.body.to_object(py)?,
             p.x0.to_vec(),
             p.t_span,
-            p.rtol,
-            p.atol,
-            p.method.to_string(),
-            p.project,
+            p.settings.rtol(),
+            p.settings.atol(),
+            p.settings.method().to_string(),
+            p.settings.project(),
             p.full,
-            p.project_every,
+            p.settings.project_every(),
         );
         Ok((slf.get_type().into_any(), args.into_pyobject(py)?))
     }
@@ -531,12 +516,12 @@ impl PyProblem {
             self.body.repr(),
             self.x0,
             self.t_span,
-            self.rtol,
-            self.atol,
-            self.method.to_string(),
-            if self.project { "True" } else { "False" },
+            self.settings.rtol(),
+            self.settings.atol(),
+            self.settings.method().to_string(),
+            if self.settings.project() { "True" } else { "False" },
             if self.full { "True" } else { "False" },
-            self.project_every
+            self.settings.project_every()
         )
     }
 
@@ -646,9 +631,9 @@ fn case_tuple(py: Python<'_>, case: Case) -> PyResult<CaseTuple<'_>> {
     Ok((
         Rolling::of_case(&case, "a Python Body").to_object(py)?,
         PyArray1::from_slice(py, &case.initial.to_array()),
-        case.integration.t_end,
-        case.integration.rtol,
-        case.integration.atol,
+        case.integration.t_end(),
+        case.integration.rtol(),
+        case.integration.atol(),
     ))
 }
 

@@ -23,7 +23,7 @@ pub struct Crossing {
     pub value: f64,
 }
 
-/// A problem: integrate the field (mg-eq) of `ball` from `initial` over `[0, settings.t_end]`.
+/// A problem: integrate the field (mg-eq) of `ball` from `initial` over `[0, settings.t_end()]`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Problem {
     /// The ball.
@@ -193,7 +193,7 @@ impl Problem {
 
     /// Solve the problem and keep the dense output of every step.
     ///
-    /// Invalid settings are an error; a failed integration is a [`Solution`] with
+    /// An invalid event is an error (the settings were checked when built); a failed integration is a [`Solution`] with
     /// [`Status::Failed`] and the message, holding what was reached.
     pub fn solve_dense(&self) -> Result<(Solution, DenseSolution)> {
         let mut dense = DenseSolution::default();
@@ -247,7 +247,7 @@ impl Problem {
             ),
             Stop::Reached | Stop::Stopped => (
                 Status::Reached,
-                format!("t_end = {} was reached", self.settings.t_end),
+                format!("t_end = {} was reached", self.settings.t_end()),
                 Vec::new(),
             ),
         };

@@ -17,30 +17,179 @@ use serde::Serialize;
 use std::cell::RefCell;
 use std::time::Instant;
 
-/// Settings of one simulation.
+/// Settings of one simulation, validated when built: a value of this type holds no invalid
+/// setting (the rules of [`SettingsBuilder::build`], the one check of settings of the
+/// library, the commands, the sweep, case files and Python), so a run takes it as it is.
+/// Built from the defaults by [`Settings::builder`], or from other settings by
+/// [`Settings::to_builder`] (a case's, say, with the command line's overrides).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Settings {
+    method: Method,
+    t_end: f64,
+    rtol: f64,
+    atol: f64,
+    project: bool,
+    project_every: usize,
+    samples: usize,
+    max_steps: usize,
+}
+
+impl Settings {
+    /// The defaults ([`Settings::default`]) to change and build.
+    pub fn builder() -> SettingsBuilder {
+        Settings::default().to_builder()
+    }
+
+    /// These settings to change and build again.
+    pub fn to_builder(self) -> SettingsBuilder {
+        SettingsBuilder { unchecked: self }
+    }
+
     /// The integrator.
-    pub method: Method,
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
     /// Final time (the start is t = 0).
-    pub t_end: f64,
+    pub fn t_end(&self) -> f64 {
+        self.t_end
+    }
+
     /// Relative tolerance (DOP853).
-    pub rtol: f64,
+    pub fn rtol(&self) -> f64 {
+        self.rtol
+    }
+
     /// Absolute tolerance (DOP853).
-    pub atol: f64,
+    pub fn atol(&self) -> f64 {
+        self.atol
+    }
+
     /// Project onto the level set of the integrals after each step.
-    pub project: bool,
+    pub fn project(&self) -> bool {
+        self.project
+    }
+
     /// With `project`, project after every `project_every`-th accepted step only (at least
     /// 1: every step). The drift of the integrals between two projections is that of as many
     /// steps, so every 10th step keeps nearly all of the accuracy that projection gains, at a
     /// tenth of its cost (BENCHMARKS.md, "Work-precision"). Samples are
     /// projected whatever the step.
-    pub project_every: usize,
-    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends),
-    /// at most [`MAX_SAMPLES`].
-    pub samples: usize,
+    pub fn project_every(&self) -> usize {
+        self.project_every
+    }
+
+    /// Number of equally spaced dense-output samples on [0, t_end] (including both ends):
+    /// 0, or 2 to [`MAX_SAMPLES`].
+    pub fn samples(&self) -> usize {
+        self.samples
+    }
+
     /// Most steps DOP853 may attempt (accepted and rejected), and most steps of RK4.
-    pub max_steps: usize,
+    pub fn max_steps(&self) -> usize {
+        self.max_steps
+    }
+}
+
+/// [`Settings`] being built: any values, checked once, by [`SettingsBuilder::build`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use]
+pub struct SettingsBuilder {
+    unchecked: Settings,
+}
+
+impl SettingsBuilder {
+    /// The integrator ([`Settings::method`]).
+    pub fn method(mut self, method: Method) -> Self {
+        self.unchecked.method = method;
+        self
+    }
+
+    /// Final time ([`Settings::t_end`]).
+    pub fn t_end(mut self, t_end: f64) -> Self {
+        self.unchecked.t_end = t_end;
+        self
+    }
+
+    /// Relative and absolute tolerance ([`Settings::rtol`], [`Settings::atol`]).
+    pub fn tolerances(mut self, rtol: f64, atol: f64) -> Self {
+        self.unchecked.rtol = rtol;
+        self.unchecked.atol = atol;
+        self
+    }
+
+    /// Projection, after every `every`-th step ([`Settings::project`],
+    /// [`Settings::project_every`]).
+    pub fn projection(mut self, project: bool, every: usize) -> Self {
+        self.unchecked.project = project;
+        self.unchecked.project_every = every;
+        self
+    }
+
+    /// Number of samples ([`Settings::samples`]).
+    pub fn samples(mut self, samples: usize) -> Self {
+        self.unchecked.samples = samples;
+        self
+    }
+
+    /// Most steps ([`Settings::max_steps`]).
+    pub fn max_steps(mut self, max_steps: usize) -> Self {
+        self.unchecked.max_steps = max_steps;
+        self
+    }
+
+    /// The settings, if valid: t_end finite and >= 0, the tolerances by
+    /// [`check_tolerances`], max_steps >= 1, samples at most [`MAX_SAMPLES`],
+    /// project_every >= 1, the steps of RK4 at most max_steps, samples 0 or >= 2. The first
+    /// violation, in this order, is the error, naming the option.
+    pub fn build(self) -> Result<Settings> {
+        let settings = self.unchecked;
+        check_option(
+            "t_end",
+            settings.t_end,
+            settings.t_end.is_finite() && settings.t_end >= 0.0,
+            "must be finite and >= 0",
+        )?;
+        check_tolerances(settings.rtol, settings.atol)?;
+        if settings.max_steps == 0 {
+            return Err(RouthError::Option {
+                name: "max_steps",
+                value: "0".into(),
+                rule: "must be >= 1",
+            });
+        }
+        if settings.samples > MAX_SAMPLES {
+            return Err(RouthError::Option {
+                name: "samples",
+                value: settings.samples.to_string(),
+                rule: "must be at most 10000000 (MAX_SAMPLES)",
+            });
+        }
+        if settings.project_every == 0 {
+            return Err(RouthError::Option {
+                name: "project_every",
+                value: "0".into(),
+                rule: "must be at least 1 (project after every step)",
+            });
+        }
+        if let Method::Rk4 { steps } = settings.method {
+            if steps > settings.max_steps {
+                return Err(RouthError::Option {
+                    name: "method rk4:<steps>",
+                    value: steps.to_string(),
+                    rule: "must not exceed max_steps (--max-steps, default 10000000)",
+                });
+            }
+        }
+        if settings.samples == 1 {
+            return Err(RouthError::Option {
+                name: "samples",
+                value: "1".into(),
+                rule: "must be 0 or >= 2 (the samples include both ends)",
+            });
+        }
+        Ok(settings)
+    }
 }
 
 /// The largest number of samples of one run (their times take 8 bytes each in memory, the
@@ -196,19 +345,6 @@ pub const MAX_RTOL: f64 = 1e-2;
 /// error target is not what the controller can verify.
 pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
 
-/// The time span and tolerances of [`validate`]: t_end finite and >= 0; the tolerances by
-/// [`check_tolerances`]. Each violation names the option.
-fn validate_span(t_end: f64, rtol: f64, atol: f64) -> Result<()> {
-    if !(t_end.is_finite() && t_end >= 0.0) {
-        return Err(RouthError::Option {
-            name: "t_end",
-            value: t_end.to_string(),
-            rule: "must be finite and >= 0",
-        });
-    }
-    check_tolerances(rtol, atol)
-}
-
 /// Fail with [`RouthError::Option`] unless `ok`.
 pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str) -> Result<()> {
     if ok {
@@ -250,52 +386,6 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
         atol.is_finite() && atol > 0.0,
         "must be finite and > 0",
     )
-}
-
-/// The one validation of the settings (t_end, the tolerances, the step limit, the samples,
-/// the projection), used by every command, the sweep, case files and Python, and by
-/// [`integrate_observed`] and [`integrate_span`], so that no run sees invalid settings; each
-/// violation names the option.
-pub fn validate(settings: &Settings) -> Result<()> {
-    validate_span(settings.t_end, settings.rtol, settings.atol)?;
-    if settings.max_steps == 0 {
-        return Err(RouthError::Option {
-            name: "max_steps",
-            value: "0".into(),
-            rule: "must be >= 1",
-        });
-    }
-    if settings.samples > MAX_SAMPLES {
-        return Err(RouthError::Option {
-            name: "samples",
-            value: settings.samples.to_string(),
-            rule: "must be at most 10000000 (MAX_SAMPLES)",
-        });
-    }
-    if settings.project_every == 0 {
-        return Err(RouthError::Option {
-            name: "project_every",
-            value: "0".into(),
-            rule: "must be at least 1 (project after every step)",
-        });
-    }
-    if let Method::Rk4 { steps } = settings.method {
-        if steps > settings.max_steps {
-            return Err(RouthError::Option {
-                name: "method rk4:<steps>",
-                value: steps.to_string(),
-                rule: "must not exceed max_steps (--max-steps, default 10000000)",
-            });
-        }
-    }
-    if settings.samples == 1 {
-        return Err(RouthError::Option {
-            name: "samples",
-            value: "1".into(),
-            rule: "must be 0 or >= 2 (the samples include both ends)",
-        });
-    }
-    Ok(())
 }
 
 /// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`
@@ -360,8 +450,9 @@ pub type StepObserver<'a, E, const N: usize> =
     dyn FnMut(f64, &[f64; N], &dyn Stepper<N>) -> std::result::Result<Control<N>, E> + 'a;
 
 /// The one simulation loop behind [`run`] and [`crate::problem::Problem`]: [`integrate_span`]
-/// over `[0, settings.t_end]` with `settings.samples` equally spaced samples, `on_step(stepper)`
-/// called after each step. `E` is the error type of `on_sample`, as in [`integrate_span`].
+/// over `[0, settings.t_end()]` with `settings.samples()` equally spaced samples,
+/// `on_step(stepper)` called after each step. `E` is the error type of `on_sample`, as in
+/// [`integrate_span`]. The settings were checked when built; nothing is checked again here.
 #[allow(clippy::too_many_arguments)]
 pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     body: &impl AsBall,
@@ -372,7 +463,6 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     on_sample: &mut OnSample<'_, E, N>,
     on_step: &mut dyn FnMut(&dyn Stepper<N>),
 ) -> std::result::Result<Observed<N>, E> {
-    validate(settings)?;
     let times: Vec<f64> = (0..settings.samples)
         .map(|i| {
             if i + 1 == settings.samples {
@@ -404,19 +494,20 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
 
 /// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`, over
 /// `span` (either direction) with the method, tolerances, projection and step limit of
-/// `settings` (its `t_end` and `samples` are not used): the one use of the library's driver
+/// `settings` (its `t_end` and `samples` are not used; the rest was checked when it was
+/// built): the one use of the library's driver
 /// [`drive`] by `simulate`, [`crate::problem::Problem`], the sweep and Python.
 ///
 /// After each accepted step, as in [`drive`]: a non-finite state ends the run with
 /// [`IntegrateError::NonFinite`](crate::integrate::IntegrateError::NonFinite);
 /// `on_step(t, y, stepper)` sees the (projected) step end and may stop the run, possibly at a
 /// time within the step ([`Control::StopAt`]); the samples up to the end (projected, with
-/// `settings.project`) go to `on_sample`; the integrals are tracked at the samples and the step
-/// end. `event` stops the run at its first sign change (as in [`drive`]). Invalid settings or
-/// samples and errors of the callbacks are errors; a failure of the integrator is reported in
-/// [`Observed::stop`] ([`Stop::Failed`]) with the state reached. The callbacks' error type `E`
-/// (the library's [`RouthError`], or one holding it, such as the front ends' `AppError`) is the
-/// error type of the result.
+/// `settings.project()`) go to `on_sample`; the integrals are tracked at the samples and the
+/// step end. `event` stops the run at its first sign change (as in [`drive`]). A span that is
+/// not finite, invalid samples ([`check_samples`]) and errors of the callbacks are errors; a
+/// failure of the integrator is reported in [`Observed::stop`] ([`Stop::Failed`]) with the
+/// state reached. The callbacks' error type `E` (the library's [`RouthError`], or one holding
+/// it, such as the front ends' `AppError`) is the error type of the result.
 #[allow(clippy::too_many_arguments)]
 pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     body: &impl AsBall,
@@ -433,11 +524,14 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         t1,
         samples,
     } = *span;
-    validate(&Settings {
-        t_end: (t1 - t0).abs(),
-        samples: 0,
-        ..*settings
-    })?;
+    if !(t1 - t0).is_finite() {
+        return Err(RouthError::Option {
+            name: "t_span",
+            value: format!("({t0}, {t1})"),
+            rule: "must be finite (t0, t1 and t1 - t0)",
+        }
+        .into());
+    }
     check_samples(t0, t1, samples).map_err(RouthError::from)?;
     let start = Instant::now();
     let x0 = reduced(&y0);
@@ -536,5 +630,100 @@ impl<B: AsBall> crate::batch::Field<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn eval<D: crate::scalar::Scalar>(&self, y: &[D; 6]) -> [D; 6] {
         crate::field::vector_field(self.0, y)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The option, value and rule of the error of `builder.build()`.
+    fn refused(builder: SettingsBuilder) -> (&'static str, String, &'static str) {
+        match builder.build() {
+            Err(RouthError::Option { name, value, rule }) => (name, value, rule),
+            other => panic!("not refused as an option: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn each_invalid_value_is_refused_when_built() {
+        let b = Settings::builder();
+        let (name, value, rule) = refused(b.t_end(f64::NAN));
+        assert_eq!(
+            (name, value.as_str(), rule),
+            ("t_end", "NaN", "must be finite and >= 0")
+        );
+        assert_eq!(refused(b.t_end(-1.0)).0, "t_end");
+        let (name, value, rule) = refused(b.tolerances(1.0, 1e-12));
+        assert_eq!((name, value.as_str()), ("rtol", "1"));
+        assert_eq!(
+            rule,
+            "must be < 1e-2: a larger relative tolerance lets the integrals drift by whole percents"
+        );
+        assert_eq!(refused(b.tolerances(MAX_RTOL, 1e-12)).0, "rtol");
+        let (name, value, rule) = refused(b.tolerances(1e-20, 1e-12));
+        assert_eq!((name, value.as_str()), ("rtol", "0.00000000000000000001"));
+        assert!(
+            rule.starts_with("must be >= 100 machine epsilons (2.2e-14)"),
+            "{rule}"
+        );
+        assert_eq!(
+            refused(b.tolerances(f64::NAN, 1e-12)).2,
+            "must be finite and > 0"
+        );
+        assert_eq!(refused(b.tolerances(1e-12, 0.0)).0, "atol");
+        let (name, value, rule) = refused(b.samples(1));
+        assert_eq!(
+            (name, value.as_str(), rule),
+            (
+                "samples",
+                "1",
+                "must be 0 or >= 2 (the samples include both ends)"
+            )
+        );
+        let (name, _, rule) = refused(b.samples(MAX_SAMPLES + 1));
+        assert_eq!(
+            (name, rule),
+            ("samples", "must be at most 10000000 (MAX_SAMPLES)")
+        );
+        let (name, value, rule) = refused(b.projection(true, 0));
+        assert_eq!(
+            (name, value.as_str(), rule),
+            (
+                "project_every",
+                "0",
+                "must be at least 1 (project after every step)"
+            )
+        );
+        let (name, value, rule) = refused(b.method(Method::Rk4 { steps: 11 }).max_steps(10));
+        assert_eq!(
+            (name, value.as_str(), rule),
+            (
+                "method rk4:<steps>",
+                "11",
+                "must not exceed max_steps (--max-steps, default 10000000)"
+            )
+        );
+        let (name, value, rule) = refused(b.max_steps(0));
+        assert_eq!(
+            (name, value.as_str(), rule),
+            ("max_steps", "0", "must be >= 1")
+        );
+        // The first violation in the order of the rules is the one reported.
+        assert_eq!(refused(b.t_end(f64::NAN).tolerances(1.0, 0.0)).0, "t_end");
+        assert_eq!(refused(b.tolerances(1.0, 0.0).samples(1)).0, "rtol");
+        // Controls: the defaults and the edges of each rule are accepted.
+        assert_eq!(b.build().unwrap(), Settings::default());
+        let edge = b
+            .t_end(0.0)
+            .tolerances(MIN_RTOL, f64::MIN_POSITIVE)
+            .samples(MAX_SAMPLES)
+            .projection(true, 1)
+            .method(Method::Rk4 { steps: 10 })
+            .max_steps(10)
+            .build()
+            .unwrap();
+        assert_eq!(edge.rtol(), MIN_RTOL);
+        assert_eq!(edge.to_builder().samples(2).build().unwrap().samples(), 2);
     }
 }

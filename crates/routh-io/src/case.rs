@@ -27,6 +27,7 @@
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
 use crate::error::{AppError, AppResult as Result, FileError};
+use crate::simulate::Settings;
 use crate::state::{Normalise, State};
 use serde::Deserialize;
 use std::path::Path;
@@ -34,20 +35,20 @@ use std::path::Path;
 /// The built-in default case, `cases/default.toml`.
 pub const DEFAULT_CASE: &str = include_str!("../../../cases/default.toml");
 
-/// Integration settings of a case, table `[integration]`: optional, and so is each key
-/// (defaults: [`Integration::default`]).
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize, serde::Serialize)]
+/// The table `[integration]` as written: optional, and so is each key (defaults:
+/// [`Integration::default`]); [`Integration::settings`] builds the case's settings from it.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]
-pub struct Integration {
+struct Integration {
     /// Final time.
-    pub t_end: f64,
+    t_end: f64,
     /// Relative tolerance.
-    pub rtol: f64,
+    rtol: f64,
     /// Absolute tolerance.
-    pub atol: f64,
+    atol: f64,
     /// Most steps (accepted and rejected) an adaptive integration may attempt, and most
     /// steps of a fixed-step one.
-    pub max_steps: usize,
+    max_steps: usize,
 }
 
 /// Default final time of a case without `t_end`.
@@ -69,16 +70,14 @@ impl Default for Integration {
 }
 
 impl Integration {
-    /// Check the settings: t_end, rtol, atol, max_steps by the library's one validation
-    /// ([`crate::simulate::validate`]).
-    pub fn validate(&self) -> crate::Result<()> {
-        crate::simulate::validate(&crate::simulate::Settings {
-            t_end: self.t_end,
-            rtol: self.rtol,
-            atol: self.atol,
-            max_steps: self.max_steps,
-            ..crate::simulate::Settings::default()
-        })
+    /// The settings of the table (t_end, rtol, atol, max_steps; the other settings at their
+    /// defaults), validated as they are built ([`Settings`]).
+    fn settings(self) -> crate::Result<Settings> {
+        Settings::builder()
+            .t_end(self.t_end)
+            .tolerances(self.rtol, self.atol)
+            .max_steps(self.max_steps)
+            .build()
     }
 }
 
@@ -92,8 +91,9 @@ pub struct Case {
     pub ball: Ball,
     /// The initial state.
     pub initial: State,
-    /// The integration settings.
-    pub integration: Integration,
+    /// The integration settings of the table `[integration]` (t_end, rtol, atol, max_steps;
+    /// the others at their defaults), validated when the case was read.
+    pub integration: Settings,
     /// The whole document, for command-specific tables.
     pub document: toml::Table,
 }
@@ -234,7 +234,7 @@ impl Case {
         };
         crate::range::check_body(&ball)?;
         crate::range::check_state(&ball, &state)?;
-        integration.validate()?;
+        let integration = integration.settings()?;
         Ok(Case {
             source: source.to_string(),
             ball,

@@ -271,16 +271,13 @@ pub fn simulate_samples(
 /// `samples` equally spaced samples on [0, t_end]: the columns of [`sample_columns`] (empty
 /// integrals as NaN, as a CSV of `routh simulate --full` reads back).
 pub fn simulate_full(case: &Case, method: Method, t_end: f64, samples: usize) -> Result<Table> {
-    let settings = Settings {
-        method,
-        t_end,
-        rtol: case.integration.rtol,
-        atol: case.integration.atol,
-        project: false,
-        project_every: 1,
-        samples,
-        max_steps: case.integration.max_steps,
-    };
+    let settings = case
+        .integration
+        .to_builder()
+        .method(method)
+        .t_end(t_end)
+        .samples(samples)
+        .build()?;
     let names = sample_columns(true)
         .into_iter()
         .map(str::to_string)

@@ -16,16 +16,14 @@ use std::hint::black_box;
 use std::time::Duration;
 
 /// The trajectory of the benchmark: the default case to t = 1000 at rtol = atol = 1e-12.
-const TRAJECTORY: Settings = Settings {
-    method: Method::Dop853,
-    t_end: 1000.0,
-    rtol: 1e-12,
-    atol: 1e-12,
-    project: false,
-    project_every: 1,
-    samples: 0,
-    max_steps: routh::case::DEFAULT_MAX_STEPS,
-};
+fn trajectory_settings() -> Settings {
+    Settings::builder()
+        .method(Method::Dop853)
+        .t_end(1000.0)
+        .tolerances(1e-12, 1e-12)
+        .build()
+        .expect("valid settings")
+}
 
 fn default_case() -> Case {
     Case::default_case().expect("the built-in default case is valid")
@@ -72,14 +70,15 @@ fn trajectory(c: &mut Criterion) {
     let case = default_case();
     let system = ReducedSystem(&case.ball);
     let x0 = case.initial.to_array();
+    let settings = trajectory_settings();
     let simulate = || {
-        run(&case.ball, &system, x0, &TRAJECTORY, &mut |_, _| Ok(()))
+        run(&case.ball, &system, x0, &settings, &mut |_, _| Ok(()))
             .expect("the default case integrates to t = 1000")
     };
     let summary = simulate();
     eprintln!(
         "trajectory: default case to t = {}, DOP853 at rtol = atol = {:e}: {} steps ({} rejected), {} field evaluations",
-        TRAJECTORY.t_end, TRAJECTORY.rtol, summary.steps, summary.rejected, summary.rhs_evals
+        settings.t_end(), settings.rtol(), summary.steps, summary.rejected, summary.rhs_evals
     );
     let mut group = c.benchmark_group("trajectory");
     group.sample_size(10);

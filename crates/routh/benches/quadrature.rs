@@ -37,7 +37,7 @@ fn quadrature(c: &mut Criterion) {
 fn dop853_once() {
     let case = Case::default_case().unwrap();
     let (body, x0) = (case.body("").unwrap(), case.initial);
-    let opts = Options::new(case.integration.rtol, case.integration.atol)
+    let opts = Options::new(case.integration.rtol(), case.integration.atol())
         .and_then(|opts| opts.with_max_steps(usize::MAX))
         .unwrap();
     let field = |_t: f64, x: &[f64; 6]| vector_field(&body, x);

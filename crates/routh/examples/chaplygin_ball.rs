@@ -17,16 +17,11 @@ fn main() -> routh::Result<()> {
     let problem = Problem {
         ball,
         initial,
-        settings: Settings {
-            method: Method::Dop853,
-            t_end: 100.0,
-            rtol: 1e-12,
-            atol: 1e-12,
-            project: false,
-            project_every: 1,
-            samples: 0,
-            max_steps: routh::simulate::DEFAULT_MAX_STEPS,
-        },
+        settings: Settings::builder()
+            .method(Method::Dop853)
+            .t_end(100.0)
+            .tolerances(1e-12, 1e-12)
+            .build()?,
         event: None,
     };
     let (solution, dense) = problem.solve_dense()?;

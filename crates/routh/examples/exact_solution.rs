@@ -16,16 +16,11 @@ fn main() -> routh::Result<()> {
     let exact = ExactSolution::new(&body, &initial)?;
     let t = 50.0;
     let by_quadrature = exact.state_at(t);
-    let settings = Settings {
-        method: Method::Dop853,
-        t_end: t,
-        rtol: 1e-12,
-        atol: 1e-12,
-        project: false,
-        project_every: 1,
-        samples: 0,
-        max_steps: routh::simulate::DEFAULT_MAX_STEPS,
-    };
+    let settings = Settings::builder()
+        .method(Method::Dop853)
+        .t_end(t)
+        .tolerances(1e-12, 1e-12)
+        .build()?;
     let numerical = Problem {
         ball: body.ball(),
         initial,

@@ -16,16 +16,12 @@ fn main() -> routh::Result<()> {
     let problem = Problem {
         ball: body.ball(),
         initial,
-        settings: Settings {
-            method: Method::Dop853,
-            t_end: 20.0,
-            rtol: 1e-12,
-            atol: 1e-12,
-            project: false,
-            project_every: 1,
-            samples: 11,
-            ..Settings::default()
-        },
+        settings: Settings::builder()
+            .method(Method::Dop853)
+            .t_end(20.0)
+            .tolerances(1e-12, 1e-12)
+            .samples(11)
+            .build()?,
         event: None,
     };
     let solution = problem.solve()?;

@@ -26,8 +26,12 @@
 //! let ball = Ball::new(1.0, 1.0, [0.3, 0.4, 0.5], [0.0; 3], 9.81)?;
 //! assert_eq!(ball.model(), Model::Chaplygin);
 //! let initial = State::from_omega(&ball, [0.0, 0.6, 0.8], [1.0, -2.0, 3.0], Normalise::Reject)?;
-//! let settings = Settings { method: Method::Dop853, t_end: 10.0, rtol: 1e-12, atol: 1e-12,
-//!                           project: false, samples: 11, ..Settings::default() };
+//! let settings = Settings::builder()
+//!     .method(Method::Dop853)
+//!     .t_end(10.0)
+//!     .tolerances(1e-12, 1e-12)
+//!     .samples(11)
+//!     .build()?;
 //! let solution = Problem { ball, initial, settings, event: None }.solve()?;
 //! assert_eq!(solution.status, Status::Reached);
 //! assert!(solution.integrals["MM"].max_rel_drift < 1e-10);

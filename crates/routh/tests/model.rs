@@ -297,16 +297,13 @@ mod ball {
         )))
         .unwrap();
         assert_eq!(case.ball.model(), Model::Chaplygin);
-        let settings = Settings {
-            method: Method::Dop853,
-            t_end,
-            rtol: tol,
-            atol: tol,
-            project,
-            project_every: 1,
-            samples: 0,
-            max_steps: routh::simulate::DEFAULT_MAX_STEPS,
-        };
+        let settings = Settings::builder()
+            .method(Method::Dop853)
+            .t_end(t_end)
+            .tolerances(tol, tol)
+            .projection(project, 1)
+            .build()
+            .unwrap();
         let summary = run(
             &case.ball,
             &ReducedSystem(&case.ball),
@@ -391,7 +388,7 @@ mod case_file {
     fn default_case_parses_and_i2_defaults_to_i1() {
         let case = Case::default_case().unwrap();
         assert_eq!(case.ball.inertia()[1], case.ball.inertia()[0]);
-        assert_eq!(case.integration.t_end, 100.0);
+        assert_eq!(case.integration.t_end(), 100.0);
         let omega = case.initial.omega(&case.ball);
         for (w, expected) in omega.iter().zip([0.5, 0.2, 8.0]) {
             assert!(
@@ -1660,16 +1657,13 @@ mod problem {
         Problem {
             ball: case.ball,
             initial: case.initial,
-            settings: Settings {
-                method: Method::Dop853,
-                t_end,
-                rtol: 1e-12,
-                atol: 1e-12,
-                project: false,
-                project_every: 1,
-                samples,
-                ..Settings::default()
-            },
+            settings: Settings::builder()
+                .method(Method::Dop853)
+                .t_end(t_end)
+                .tolerances(1e-12, 1e-12)
+                .samples(samples)
+                .build()
+                .unwrap(),
             event: None,
         }
     }
@@ -1757,7 +1751,12 @@ mod problem {
     fn failure_and_events_are_statuses_with_a_message() {
         // RK4 with two steps over t = 100 blows up: a status, not an error, with the state reached.
         let mut p = default_problem(100.0, 0);
-        p.settings.method = Method::Rk4 { steps: 2 };
+        p.settings = p
+            .settings
+            .to_builder()
+            .method(Method::Rk4 { steps: 2 })
+            .build()
+            .unwrap();
         let s = p.solve().unwrap();
         assert_eq!(s.status, Status::Failed);
         assert!(s.message.contains("non-finite"), "{}", s.message);
@@ -1794,16 +1793,13 @@ mod simulate {
     use routh::State;
 
     fn simulate(case: &Case, x0: [f64; 6], t_end: f64, project: bool) -> Summary {
-        let settings = Settings {
-            method: Method::Dop853,
-            t_end,
-            rtol: 1e-12,
-            atol: 1e-12,
-            project,
-            project_every: 1,
-            samples: 0,
-            max_steps: routh::case::DEFAULT_MAX_STEPS,
-        };
+        let settings = Settings::builder()
+            .method(Method::Dop853)
+            .t_end(t_end)
+            .tolerances(1e-12, 1e-12)
+            .projection(project, 1)
+            .build()
+            .unwrap();
         run(
             &case.ball,
             &ReducedSystem(&case.ball),
@@ -1850,16 +1846,12 @@ mod simulate {
             );
         }
         // Negative control: a loose tolerance drifts far beyond the bound, so the bound is sharp.
-        let settings = Settings {
-            method: Method::Dop853,
-            t_end: 1000.0,
-            rtol: 1e-6,
-            atol: 1e-6,
-            project: false,
-            project_every: 1,
-            samples: 0,
-            max_steps: routh::case::DEFAULT_MAX_STEPS,
-        };
+        let settings = Settings::builder()
+            .method(Method::Dop853)
+            .t_end(1000.0)
+            .tolerances(1e-6, 1e-6)
+            .build()
+            .unwrap();
         let loose = run(
             &case.ball,
             &ReducedSystem(&case.ball),
@@ -1931,17 +1923,13 @@ mod simulate {
         let x0 = case.initial.to_array();
         let reference = simulate(&case, x0, 1.0, false).final_state.to_array();
         let error = |steps: usize| {
-            let settings = Settings {
-                method: Method::Rk4 { steps },
-                t_end: 1.0,
+            let settings = Settings::builder()
+                .method(Method::Rk4 { steps })
+                .t_end(1.0)
                 // RK4 takes its equal steps whatever the tolerances: the loosest that validate.
-                rtol: 1e-3,
-                atol: 1e-3,
-                project: false,
-                project_every: 1,
-                samples: 0,
-                max_steps: routh::case::DEFAULT_MAX_STEPS,
-            };
+                .tolerances(1e-3, 1e-3)
+                .build()
+                .unwrap();
             let s = run(
                 &case.ball,
                 &ReducedSystem(&case.ball),
@@ -1967,16 +1955,13 @@ mod simulate {
     #[test]
     fn samples_are_equally_spaced_and_end_at_t_end() {
         let case = Case::default_case().unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            t_end: 2.0,
-            rtol: 1e-10,
-            atol: 1e-10,
-            project: false,
-            project_every: 1,
-            samples: 5,
-            max_steps: routh::case::DEFAULT_MAX_STEPS,
-        };
+        let settings = Settings::builder()
+            .method(Method::Dop853)
+            .t_end(2.0)
+            .tolerances(1e-10, 1e-10)
+            .samples(5)
+            .build()
+            .unwrap();
         let mut seen = Vec::new();
         let summary = run(
             &case.ball,
@@ -2009,26 +1994,18 @@ mod simulate {
             routh::state::Normalise::Reject,
         )
         .unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            t_end: 10.0,
-            rtol: 1e-12,
-            atol: 1e-12,
-            project: false,
-            project_every: 1,
-            samples: 0,
-            max_steps: routh::case::DEFAULT_MAX_STEPS,
-        };
+        let settings = Settings::builder()
+            .method(Method::Dop853)
+            .t_end(10.0)
+            .tolerances(1e-12, 1e-12)
+            .build()
+            .unwrap();
         let mut h3 = Vec::new();
         let s = run(
             &free,
             &ReducedSystem(&free),
             x0.to_array(),
-            &Settings {
-                samples: 101,
-                max_steps: routh::case::DEFAULT_MAX_STEPS,
-                ..settings
-            },
+            &settings.to_builder().samples(101).build().unwrap(),
             &mut |_, x| {
                 h3.push(jellett(&free, x));
                 Ok(())
@@ -2111,15 +2088,14 @@ mod simulate {
         // 10^9-th step" (never, in 16,814 steps; only the final state, which is reported as a
         // sample, is projected) has no such gain: it is the drift along the way that projection
         // removes, not the distance of the end state from the level set.
-        let settings = |project: bool, project_every: usize| Settings {
-            method: Method::Vern9,
-            t_end: 1000.0,
-            rtol: 1e-10,
-            atol: 1e-10,
-            project,
-            project_every,
-            samples: 0,
-            max_steps: routh::case::DEFAULT_MAX_STEPS,
+        let settings = |project: bool, project_every: usize| {
+            Settings::builder()
+                .method(Method::Vern9)
+                .t_end(1000.0)
+                .tolerances(1e-10, 1e-10)
+                .projection(project, project_every)
+                .build()
+                .unwrap()
         };
         let plain = error_at_1000(&settings(false, 1));
         let every = error_at_1000(&settings(true, 1));

@@ -370,13 +370,12 @@ mod diagram {
             let red = p.value.reduction(&body).unwrap();
             let x0 = routh::diagram::tori::level_set_point(&body, &red, 0.5 * (u1 + u2), 0.0, 1.0)
                 .unwrap();
-            let settings = Settings {
-                method: Method::Dop853,
-                t_end: p.period,
-                rtol: 1e-13,
-                atol: 1e-13,
-                ..Settings::default()
-            };
+            let settings = Settings::builder()
+                .method(Method::Dop853)
+                .t_end(p.period)
+                .tolerances(1e-13, 1e-13)
+                .build()
+                .unwrap();
             let end = Problem {
                 ball: routh::AsBall::ball(&body),
                 initial: x0,

@@ -248,7 +248,7 @@ impl Args {
     /// The time of the reported state (`--t`, else the case's t_end), checked with
     /// `--samples`.
     pub(super) fn checked_time(&self, case: &Case) -> Result<f64> {
-        let t = self.time.unwrap_or(case.integration.t_end);
+        let t = self.time.unwrap_or(case.integration.t_end());
         check_option("t", t, t.is_finite(), "must be finite")?;
         if let Some(n) = self.samples {
             check_option("samples", n as f64, n >= 2, "must be >= 2")?;

@@ -45,7 +45,7 @@ impl Source {
             return Table::read_csv(path);
         }
         let case = Case::load(self.case.as_deref())?;
-        let t_end = self.t_end.unwrap_or(case.integration.t_end);
+        let t_end = self.t_end.unwrap_or(case.integration.t_end());
         routh::case::check_option(
             "t_end",
             t_end,

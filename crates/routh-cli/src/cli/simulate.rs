@@ -66,21 +66,22 @@ pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
-/// The settings of a case with the command-line overrides applied, checked by the library's
-/// one validation ([`routh::simulate::validate`]).
+/// The settings of a case with the command-line overrides applied, validated as they are
+/// built ([`Settings`]: the same rules and messages as the sweep's and Python's).
 pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
-    let settings = Settings {
-        method: args.method,
-        t_end: args.t_end.unwrap_or(case.integration.t_end),
-        rtol: args.rtol.unwrap_or(case.integration.rtol),
-        atol: args.atol.unwrap_or(case.integration.atol),
-        project: args.project,
-        project_every: args.project_every,
-        samples,
-        max_steps: args.max_steps.unwrap_or(case.integration.max_steps),
-    };
-    routh::simulate::validate(&settings)?;
-    Ok(settings)
+    let base = case.integration;
+    Ok(base
+        .to_builder()
+        .method(args.method)
+        .t_end(args.t_end.unwrap_or(base.t_end()))
+        .tolerances(
+            args.rtol.unwrap_or(base.rtol()),
+            args.atol.unwrap_or(base.atol()),
+        )
+        .projection(args.project, args.project_every)
+        .samples(samples)
+        .max_steps(args.max_steps.unwrap_or(base.max_steps()))
+        .build()?)
 }
 
 /// Where the CSV of samples goes: `--out`, or standard output when only `--samples` is given.

@@ -79,7 +79,7 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
         Some(Job {
             t0: 0.0,
             y0: run.x0,
-            t_end: self.sweep.settings.t_end,
+            t_end: self.sweep.settings.t_end(),
         })
     }
 
@@ -100,8 +100,8 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
             Some(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
             None => {
                 let summary = Summary {
-                    method: sweep.settings.method.to_string(),
-                    t_end: sweep.settings.t_end,
+                    method: sweep.settings.method().to_string(),
+                    t_end: sweep.settings.t_end(),
                     steps: end.stats.steps,
                     rejected: end.stats.rejected,
                     rhs_evals: end.stats.rhs_evals,
@@ -189,24 +189,21 @@ fn set(
 impl Sweep {
     /// A sweep of the case `text` (read from `source`), whose `[sweep]` table is checked, with
     /// every run's case built and validated before any run starts: a bad table or a value
-    /// that makes a body or a state invalid is refused, naming the key and the value.
+    /// that makes a body or a state invalid is refused, naming the key and the value. The
+    /// settings of every run are the case's (no projection, no samples) with `overrides`
+    /// applied, validated as they are built, as `routh simulate` builds its own.
     pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
         let case = Case::parse(text, source)?;
-        let tol = overrides
-            .rtol
-            .unwrap_or(case.integration.rtol)
-            .min(overrides.atol.unwrap_or(case.integration.atol));
-        let settings = Settings {
-            method: resolve(overrides.method, tol),
-            t_end: overrides.t_end.unwrap_or(case.integration.t_end),
-            rtol: overrides.rtol.unwrap_or(case.integration.rtol),
-            atol: overrides.atol.unwrap_or(case.integration.atol),
-            project: false,
-            project_every: 1,
-            samples: 0,
-            max_steps: overrides.max_steps.unwrap_or(case.integration.max_steps),
-        };
-        crate::simulate::validate(&settings)?;
+        let base = case.integration;
+        let rtol = overrides.rtol.unwrap_or(base.rtol());
+        let atol = overrides.atol.unwrap_or(base.atol());
+        let settings = base
+            .to_builder()
+            .method(resolve(overrides.method, rtol.min(atol)))
+            .t_end(overrides.t_end.unwrap_or(base.t_end()))
+            .tolerances(rtol, atol)
+            .max_steps(overrides.max_steps.unwrap_or(base.max_steps()))
+            .build()?;
         let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
             message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
@@ -251,10 +248,10 @@ impl Sweep {
     /// The settings as written in each row.
     pub fn run_settings(&self) -> RunSettings {
         RunSettings {
-            t_end: self.settings.t_end,
-            rtol: self.settings.rtol,
-            atol: self.settings.atol,
-            method: self.settings.method.to_string(),
+            t_end: self.settings.t_end(),
+            rtol: self.settings.rtol(),
+            atol: self.settings.atol(),
+            method: self.settings.method().to_string(),
         }
     }
 
@@ -403,8 +400,8 @@ impl Sweep {
     /// ([`Sweep::batch`]), DOP853 or Taylor, and a time span to integrate.
     fn in_lanes(&self) -> bool {
         self.batch
-            && matches!(self.settings.method, Method::Dop853 | Method::Taylor)
-            && self.settings.t_end > 0.0
+            && matches!(self.settings.method(), Method::Dop853 | Method::Taylor)
+            && self.settings.t_end() > 0.0
     }
 
     /// The runs `runs` (on this thread), in their order, the runs of each body together in
@@ -428,8 +425,8 @@ impl Sweep {
                     }
                 }
             }
-            let opts = Options::new(self.settings.rtol, self.settings.atol)
-                .and_then(|opts| opts.with_max_steps(self.settings.max_steps))?;
+            let opts = Options::new(self.settings.rtol(), self.settings.atol())
+                .and_then(|opts| opts.with_max_steps(self.settings.max_steps()))?;
             for (body, group) in &bodies {
                 let mut queue = LaneQueue {
                     sweep: self,
@@ -440,7 +437,7 @@ impl Sweep {
                     stop,
                 };
                 let sys = ReducedSystem(body);
-                match self.settings.method {
+                match self.settings.method() {
                     Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
                     _ => batch::integrate_in_lanes(&sys, &opts, &mut queue),
                 }

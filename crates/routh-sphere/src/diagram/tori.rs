@@ -192,14 +192,12 @@ pub fn integrate_level_set(
             let u = u1 + (u2 - u1) * fraction;
             let sign = if j % 2 == 0 { 1.0 } else { -1.0 };
             let initial = level_set_point(body, &red, u, 2.0 * PI * fraction, sign)?;
-            let settings = Settings {
-                method: Method::Dop853,
-                t_end,
-                rtol: 1e-11,
-                atol: 1e-11,
-                samples,
-                ..Settings::default()
-            };
+            let settings = Settings::builder()
+                .method(Method::Dop853)
+                .t_end(t_end)
+                .tolerances(1e-11, 1e-11)
+                .samples(samples)
+                .build()?;
             let solution = Problem {
                 ball: crate::ball::AsBall::ball(body),
                 initial,

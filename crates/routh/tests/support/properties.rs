@@ -89,8 +89,8 @@ pub fn case_text(text: &str) {
             assert!(state_finite(&case.initial));
             field_and_integrals_finite(&b, &case.initial);
             let i = case.integration;
-            assert!(i.t_end.is_finite() && i.t_end >= 0.0 && i.max_steps >= 1);
-            routh::case::check_tolerances(i.rtol, i.atol).unwrap();
+            assert!(i.t_end().is_finite() && i.t_end() >= 0.0 && i.max_steps() >= 1);
+            routh::case::check_tolerances(i.rtol(), i.atol()).unwrap();
         }
         Err(e) => assert!(e.to_string().contains("fuzz.toml"), "{e}"),
     }
