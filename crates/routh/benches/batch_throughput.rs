@@ -22,8 +22,10 @@
 //!
 //! Build with `cargo bench --bench batch_throughput --no-run`.
 
-use routh::batch::{self, Job, LaneEnd, Queue};
-use routh::integrate::{Dop853, IntegrateError, Options, Stats, Stepper, Taylor, Vern9};
+use routh::batch::{self, Job, Queue};
+use routh::integrate::{
+    Dop853, IntegrateError, Options, Outcome, Stats, Stepper, Stop, Taylor, Vern9,
+};
 use routh::simulate::ReducedSystem;
 use routh::state::{Normalise, State};
 use routh::Body;
@@ -50,12 +52,12 @@ impl Queue<6> for Finals {
 
     fn step(&mut self, _lane: usize, _step: &dyn Stepper<6>) {}
 
-    fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+    fn end(&mut self, lane: usize, end: Outcome<6>) {
         self.finals[self.in_lane[lane]] = end.y;
         self.stats.steps += end.stats.steps;
         self.stats.rhs_evals += end.stats.rhs_evals;
-        if end.failure.is_some() {
-            self.failure = end.failure;
+        if let Stop::Failed(e) = end.stop {
+            self.failure = Some(e);
         }
     }
 }

@@ -10,10 +10,11 @@ mod batch {
     //! of every comparison here is zero: equal bits of every step end, of the dense output in the
     //! middle of every step, of the final state, and equal counters.
 
-    use routh::batch::{self, Job, LaneEnd, Queue, LANES};
+    use routh::batch::{self, Job, Queue, LANES};
     use routh::integrate::taylor::tape::Isa;
     use routh::integrate::{
-        drive, Control, Dop853, Drive, IntegrateError, Method, Options, Stats, Stepper, Taylor,
+        drive, Control, Dop853, Drive, IntegrateError, Method, Options, Outcome, Stats, Stepper,
+        Stop, Taylor,
     };
     use routh::simulate::ReducedSystem;
     use routh::state::{Normalise, State};
@@ -72,9 +73,13 @@ mod batch {
             self.records[j].steps.push(look(step));
         }
 
-        fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+        fn end(&mut self, lane: usize, end: Outcome<6>) {
             let j = self.in_lane[lane].take().unwrap();
-            self.records[j].end = Some((end.t, end.y, end.stats, end.failure));
+            let failure = match end.stop {
+                Stop::Failed(e) => Some(e),
+                _ => None,
+            };
+            self.records[j].end = Some((end.t, end.y, end.stats, failure));
         }
     }
 

@@ -135,7 +135,7 @@ struct Dop853Lanes<'f, F, const N: usize, const L: usize> {
 /// Integrates the runs of `queue` with DOP853 (`opts` as for
 /// [`crate::Dop853`]), `L` at a time in lanes; each lane's run is bitwise the
 /// one-at-a-time integration. Returns when the queue is empty and every lane has ended; a run
-/// that fails ends with its failure in [`LaneEnd::failure`](super::LaneEnd::failure) and does
+/// that fails ends with its failure in [`Stop::Failed`](crate::Stop::Failed) and does
 /// not disturb the other lanes.
 pub fn integrate<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     field: &F,

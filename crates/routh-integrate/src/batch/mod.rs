@@ -42,7 +42,7 @@ pub mod taylor;
 
 pub use dop853::{integrate, integrate_in_lanes, integrate_on, lanes, LANES};
 pub use lanes::Lanes;
-pub use runs::{Job, LaneEnd, Queue};
+pub use runs::{Job, Queue};
 
 use crate::scalar::Scalar;
 

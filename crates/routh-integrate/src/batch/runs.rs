@@ -11,7 +11,7 @@ use super::lanes::{lane_of, set_lane};
 use super::Lanes;
 use crate::compensated::compensated_add;
 use crate::taylor::tape::Isa;
-use crate::{check_start, IntegrateError, Stats, StepControl, Stepper};
+use crate::{check_start, IntegrateError, Outcome, Stats, StepControl, Stepper, Stop};
 
 /// One run: integrate from `(t0, y0)` to `t_end`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,21 +24,6 @@ pub struct Job<const N: usize> {
     pub t_end: f64,
 }
 
-/// How a run ended: the time and state reached, the counters, and the failure if any (then
-/// `t` and `y` are the last accepted step's).
-#[derive(Debug, Clone, PartialEq)]
-pub struct LaneEnd<const N: usize> {
-    /// Time reached (`t_end` unless it failed).
-    pub t: f64,
-    /// State reached.
-    pub y: [f64; N],
-    /// Work counters, with the field evaluations of the dense output asked for by
-    /// [`Queue::step`], as the one-at-a-time integrator counts them.
-    pub stats: Stats,
-    /// Why the run stopped early, as the one-at-a-time integrator reports it.
-    pub failure: Option<IntegrateError>,
-}
-
 /// The runs of a batch and what happens to each: the batch asks for a run whenever a lane is
 /// free, shows each accepted step, and hands back the end.
 pub trait Queue<const N: usize> {
@@ -48,8 +33,11 @@ pub trait Queue<const N: usize> {
     /// The run in `lane` made an accepted step; `step` shows it (its time, state and dense
     /// output, as [`crate::drive`] shows a step to its observer).
     fn step(&mut self, lane: usize, step: &dyn Stepper<N>);
-    /// The run in `lane` ended; the lane takes the next run.
-    fn end(&mut self, lane: usize, end: LaneEnd<N>);
+    /// The run in `lane` ended ([`Stop::Reached`], or [`Stop::Failed`] with the last accepted
+    /// step's time and state, as the one-at-a-time integrator reports it; the counters include
+    /// the field evaluations of the dense output asked for by [`Queue::step`]); the lane takes
+    /// the next run.
+    fn end(&mut self, lane: usize, end: Outcome<N>);
 }
 
 /// What a one-step method does in `L` lanes; the lanes' runs and their step control are
@@ -186,11 +174,11 @@ impl<const N: usize, const L: usize> Runs<N, L> {
             }
             Err((failure, stats)) => queue.end(
                 l,
-                LaneEnd {
+                Outcome {
+                    stop: Stop::Failed(failure),
                     t: job.t0,
                     y: job.y0,
                     stats,
-                    failure: Some(failure),
                 },
             ),
         }
@@ -210,11 +198,11 @@ impl<const N: usize, const L: usize> Runs<N, L> {
         method.release(l, failure.is_some());
         queue.end(
             l,
-            LaneEnd {
+            Outcome {
+                stop: failure.map_or(Stop::Reached, Stop::Failed),
                 t: control.t(),
                 y: lane_of(&self.y, l),
                 stats: control.stats(),
-                failure,
             },
         );
     }

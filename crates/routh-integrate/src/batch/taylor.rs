@@ -50,7 +50,7 @@ pub fn lanes() -> usize {
 /// bitwise the one-at-a-time integration. Returns when the queue is empty and every lane has
 /// ended. A system that cannot be recorded ([`OdeSystem::record`]) is refused before any run
 /// starts; a run that fails ends with its failure in
-/// [`LaneEnd::failure`](super::LaneEnd::failure) and does not disturb the other lanes.
+/// [`Stop::Failed`](crate::Stop::Failed) and does not disturb the other lanes.
 pub fn integrate<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize>(
     sys: &S,
     opts: &Options,

@@ -8,11 +8,11 @@ use super::design::Design;
 use super::record::{NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
 use super::turning::{NutationEvents, TurningPoints};
-use crate::batch::{self, Job, LaneEnd, Queue, LANES};
+use crate::batch::{self, Job, Queue, LANES};
 use crate::body::Body;
 use crate::case::Case;
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
-use crate::integrate::{Method, Options, Stepper};
+use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::{ExactSolution, Motion};
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
 use crate::state::State;
@@ -91,14 +91,14 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
         }
     }
 
-    fn end(&mut self, lane: usize, end: LaneEnd<6>) {
+    fn end(&mut self, lane: usize, end: Outcome<6>) {
         let Some(done) = self.lanes[lane].take() else {
             return;
         };
         let (sweep, run) = (self.sweep, done.run);
-        self.rows[run.slot] = Some(match end.failure {
-            Some(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
-            None => {
+        self.rows[run.slot] = Some(match end.stop {
+            Stop::Failed(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
+            _ => {
                 let summary = Summary {
                     method: sweep.settings.method().to_string(),
                     t_end: sweep.settings.t_end(),
