@@ -28,8 +28,10 @@ fn with_state<'py>(
 /// The vertical spin at `gamma3 = pole` (+1 or -1) with spin rate `spin` (omega3, rad per unit
 /// time) for a Routh sphere (I1 = I2), as a dict: `gamma3`, `centre_of_mass_above`, `spin`,
 /// `threshold_spin` (Routh's |omega3| above which it is stable; 0 when the centre of mass is
-/// not above the geometric centre or G = 0), `stability` (`q_second_derivative`,
-/// `stable_by_q`, `max_real_eigenvalue`, `stable_by_jacobian`), `state` and `x`.
+/// not above the geometric centre or G = 0), `routh_threshold` (the same, None where there is
+/// none) and `no_threshold` (why), `stability` (`q_second_derivative`, `stable_by_q`,
+/// `max_real_eigenvalue`, `stable_by_jacobian`), `verdict` (`decision`: stable, unstable or
+/// undecided within the accuracy; `q_accuracy`, `eigenvalue_tolerance`), `state` and `x`.
 #[pyfunction]
 pub fn vertical_spin<'py>(
     py: Python<'py>,
@@ -46,8 +48,10 @@ pub fn vertical_spin<'py>(
 
 /// The steady precessions at tilt `theta` (radians, in (0, pi)) with spin rate `spin` for a
 /// Routh sphere: a list of zero, one or two dicts with `theta`, `spin`, `omega_t` (the
-/// component of omega along the horizontal projection of gamma), `precession` (d psi/dt),
-/// `stability` (as in `vertical_spin`), `state` and `x`.
+/// component of omega along the horizontal projection of gamma) and `omega_t_accuracy`,
+/// `precession` (d psi/dt of gamma about e3 in the body), `axis_precession` (d phi/dt of the
+/// symmetry axis about the upward vertical in space), `stability` and `verdict` (as in
+/// `vertical_spin`), `state` and `x`.
 #[pyfunction]
 pub fn steady_precessions<'py>(
     py: Python<'py>,

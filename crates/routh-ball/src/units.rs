@@ -6,11 +6,15 @@
 //! The reduced equations (mg-eq) are covariant under the three scalings: lengths by `l`
 //! (`R, a, com -> l R, ...`, `I -> l^2 I`, `G -> l G`, `M -> l^2 M`), masses by `k`
 //! (`m, I, M -> k m, k I, k M`) and times by `s` (`t -> s t`, `omega -> omega / s`,
-//! `G -> G / s^2`, `M -> M / s`). In the units `(R, m, T)` a ball has `R = m = 1`, moments
+//! `G -> G / s^2`, `M -> M / s`). In the units `(R, m, T)` a ball has `R = 1`, moments
 //! `I / (m R^2)`, offset `a / R` and gravity `G T^2 / R`; a state keeps gamma and has
-//! `M T / (m R^2)`. The time T is that of the motion: the faster of the fall,
-//! `sqrt(R / G)`, and the spin, `1 / |omega|`, so that both the dimensionless gravity and
-//! the dimensionless spin are at most 1 and one of them is 1 (T = 1 for a ball at rest
+//! `M T / (m R^2)`. The unit of mass is the body's mass m (then `m = 1` in these units), or
+//! `I_max / R^2` when that is larger (a body with `I >> m R^2`: its moments, not its mass, set
+//! the size of `I_Q` and of M, and with the unit m its dimensionless moments, up to 1e300 for
+//! m = 1e-300, would overflow when multiplied); both scale as a mass, so the dimensionless
+//! problem is unchanged by the scalings. The time T is that of the motion: the faster of the
+//! fall, `sqrt(R / G)`, and the spin, `1 / |omega|`, so that both the dimensionless gravity
+//! and the dimensionless spin are at most 1 and one of them is 1 (T = 1 for a ball at rest
 //! without gravity, whose motion has no time).
 
 use crate::ball::{AsBall, Ball};
@@ -36,7 +40,8 @@ impl Units {
     }
 
     /// The units of `ball` for a motion whose angular velocity is about `rate` (finite,
-    /// >= 0): `T = 1 / max(sqrt(G / R), rate)` (1 when both vanish).
+    /// at least 0): `T = 1 / max(sqrt(G / R), rate)` (1 when both vanish), the mass
+    /// `max(m, I_max / R^2)`.
     pub fn with_rate(ball: &impl AsBall, rate: f64) -> Units {
         let ball = ball.ball();
         // Square roots taken apart, so that neither R / G nor G / R overflows.
@@ -51,9 +56,10 @@ impl Units {
             f64::INFINITY
         };
         let time = fall.min(spin);
+        let largest_moment = ball.inertia().iter().fold(0.0_f64, |a, &b| a.max(b));
         Units {
             length: ball.radius(),
-            mass: ball.m(),
+            mass: ball.m().max(largest_moment / ball.radius() / ball.radius()),
             time: if time > 0.0 && time.is_finite() {
                 time
             } else {
@@ -67,7 +73,7 @@ impl Units {
         self.length
     }
 
-    /// The unit of mass, m.
+    /// The unit of mass, `max(m, I_max / R^2)`.
     pub fn mass(&self) -> f64 {
         self.mass
     }
@@ -146,6 +152,29 @@ impl Units {
     }
 }
 
+/// `body` scaled in mass by `k`, in length by `l` and in time by `s` (the scalings of the
+/// module docs): the same body in other units.
+pub fn scaled_body(body: &Body, [k, l, s]: [f64; 3]) -> Result<Body> {
+    Body::new(
+        k * body.m(),
+        l * body.radius(),
+        l * body.a(),
+        k * l * l * body.i1(),
+        k * l * l * body.i2(),
+        k * l * l * body.i3(),
+        l / (s * s) * body.gravity(),
+    )
+}
+
+/// `state` scaled in mass by `k`, in length by `l` and in time by `s`: gamma as it is,
+/// `M -> k l^2 M / s`.
+pub fn scaled_state(state: &State, [k, l, s]: [f64; 3]) -> State {
+    State {
+        gamma: state.gamma,
+        m: state.m.map(|v| k * l * l / s * v),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -153,22 +182,11 @@ mod tests {
 
     /// A Routh sphere and a state scaled in mass by `k`, length by `l` and time by `s`: the
     /// same motion in other units.
-    fn scaled(body: &Body, state: &State, [k, l, s]: [f64; 3]) -> (Body, State) {
-        let b = Body::new(
-            k * body.m(),
-            l * body.radius(),
-            l * body.a(),
-            k * l * l * body.i1(),
-            k * l * l * body.i2(),
-            k * l * l * body.i3(),
-            l / (s * s) * body.gravity(),
+    fn scaled(body: &Body, state: &State, factors: [f64; 3]) -> (Body, State) {
+        (
+            scaled_body(body, factors).unwrap(),
+            scaled_state(state, factors),
         )
-        .unwrap();
-        let x = State {
-            gamma: state.gamma,
-            m: state.m.map(|v| k * l * l / s * v),
-        };
-        (b, x)
     }
 
     fn close(a: &[f64], b: &[f64], tol: f64) -> bool {

@@ -1477,6 +1477,269 @@ mod diagram_cli {
     }
 }
 
+mod steady_and_diagram_scales {
+    //! Issue 33: the sizes `steady` and `diagram` accept are bounded before any work, and the
+    //! numbers they print are named for what they are, each checked against an independent
+    //! computation.
+
+    use crate::common;
+    use common::{assert_exit_2, routh};
+    use routh::case::Case;
+    use std::time::{Duration, Instant};
+
+    /// A coarse resolution of `diagram`, for runs that check keys and refusals.
+    const QUICK: [&str; 6] = ["--tilts", "20", "--grid", "4", "--loop-points", "8"];
+
+    fn json(out: &std::process::Output) -> serde_json::Value {
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    }
+
+    /// The default case with its omega replaced by `(0, 0, spin)`.
+    fn spinning(name: &str, spin: &str) -> std::path::PathBuf {
+        let text = std::fs::read_to_string(format!("{}/cases/default.toml", common::ROOT)).unwrap();
+        let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+        let spun = text.replace(
+            "omega = [0.5, 0.2, 8.0]",
+            &format!("omega = [0.0, 0.0, {spin}]"),
+        );
+        std::fs::write(&path, spun).unwrap();
+        path
+    }
+
+    /// `--h3 1e300` ran without end; spins of 1e80 and 1e100 are beyond the range of f64 in
+    /// the body's units (their squares above 1e150). Each is refused within 5 s (a generous bound for a loaded machine:
+    /// the refusal is made before any work, in milliseconds) with exit 2 and a message naming
+    /// the option, the value and the rule. Negative control: the largest H3 the message states
+    /// is accepted.
+    #[test]
+    fn huge_h3_and_spins_are_refused_quickly() {
+        let dir = std::env::temp_dir().join(format!("routh-scales-{}", std::process::id()));
+        let out = dir.to_str().unwrap().to_string();
+        let started = Instant::now();
+        assert_exit_2(
+            &["diagram", "--h3", "1e300", "--out", &out],
+            "invalid option h3 = 1e300",
+        );
+        assert_exit_2(
+            &["diagram", "--h3", "-1e300", "--out", &out],
+            "Routh's threshold",
+        );
+        for (spin, printed) in [("1e80", "e79"), ("1e100", "e99")] {
+            // The spin printed is omega3 of the case's state: the value to a few ulp.
+            let case = spinning(&format!("spin_{spin}.toml"), spin);
+            let out = routh(&["steady", "--case", case.to_str().unwrap()]);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{err}");
+            assert!(
+                err.contains("the spin omega3 = ") && err.contains(printed),
+                "{err}"
+            );
+            assert!(
+                err.contains("the rule: the rate of the motion at most 1e75"),
+                "{err}"
+            );
+        }
+        assert!(
+            started.elapsed() < Duration::from_secs(5),
+            "{:?}",
+            started.elapsed()
+        );
+        assert!(!dir.exists(), "a refused run created {}", dir.display());
+        let err = String::from_utf8(routh(&["diagram", "--h3", "1e300"]).stderr).unwrap();
+        let limit: f64 = err
+            .split("|H3| <= ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        let h3 = format!("{}", 0.999 * limit);
+        let args = [
+            &["diagram", "--h3", &h3, "--out", &out, "--json"],
+            &QUICK[..],
+        ]
+        .concat();
+        let value = json(&routh(&args));
+        for spin in value["vertical_spins"].as_array().unwrap() {
+            assert_eq!(spin["stability"], "elliptic");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// `steady --json`: Routh's threshold as a number or `null` with the reason (beside the old
+    /// `threshold_spin`, 0 where there is none), one verdict per motion, and the precession of
+    /// the symmetry axis in space beside the body-frame rate. The axis's rate is checked by
+    /// kinematics from the state alone: e3 turns in space at `omega x e3` (body components),
+    /// so its azimuth about the upward vertical `-gamma` turns at
+    /// `((-gamma) x e3) . (omega x e3) / |gamma x e3|^2`, to 1e-12 relative (a few roundings).
+    /// Negative control: the body-frame rate `precession` does not pass that check.
+    #[test]
+    fn steady_json_names_its_numbers() {
+        let v = json(&routh(&["steady", "--json"]));
+        let body = Case::default_case().unwrap().body("").unwrap();
+        assert_eq!(v["routh_threshold"], v["threshold_spin"]);
+        assert!(v["no_threshold"].is_null());
+        let vertical = v["vertical"].as_array().unwrap();
+        assert_eq!(
+            vertical[0]["routh_threshold"],
+            vertical[0]["threshold_spin"]
+        );
+        assert!(vertical[1]["routh_threshold"].is_null());
+        assert_eq!(vertical[1]["threshold_spin"], 0.0);
+        assert!(vertical[1]["no_threshold"]
+            .as_str()
+            .unwrap()
+            .contains("below"));
+        for spin in vertical {
+            assert_eq!(spin["verdict"]["decision"], "stable");
+            assert!(spin["verdict"]["q_accuracy"].as_f64().unwrap() > 0.0);
+        }
+        let precessions = v["precessions"].as_array().unwrap();
+        assert!(precessions.len() >= 20);
+        for p in precessions {
+            let gamma: Vec<f64> = serde_json::from_value(p["state"]["gamma"].clone()).unwrap();
+            let m: Vec<f64> = serde_json::from_value(p["state"]["M"].clone()).unwrap();
+            let state = routh::State::new(
+                [gamma[0], gamma[1], gamma[2]],
+                [m[0], m[1], m[2]],
+                routh::state::Normalise::Reject,
+            )
+            .unwrap();
+            let w = state.omega(&body);
+            let up = [-gamma[0], -gamma[1], -gamma[2]];
+            let cross = |a: [f64; 3], b: [f64; 3]| {
+                [
+                    a[1] * b[2] - a[2] * b[1],
+                    a[2] * b[0] - a[0] * b[2],
+                    a[0] * b[1] - a[1] * b[0],
+                ]
+            };
+            let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+            let e3 = [0.0, 0.0, 1.0];
+            let across = cross(up, e3);
+            let rate = dot(across, cross(w, e3)) / dot(across, across);
+            let axis = p["axis_precession"].as_f64().unwrap();
+            assert!(
+                (axis - rate).abs() <= 1e-12 * rate.abs(),
+                "{axis} vs {rate}"
+            );
+            let body_rate = p["precession"].as_f64().unwrap();
+            assert!((body_rate - rate).abs() > 1e-3 * rate.abs());
+            assert!(p["omega_t_accuracy"].as_f64().unwrap() >= 0.0);
+        }
+        // The text names both rates.
+        let text = String::from_utf8(routh(&["steady"]).stdout).unwrap();
+        assert!(
+            text.contains("dphi/dt: the symmetry axis e3 about the upward vertical"),
+            "{text}"
+        );
+    }
+
+    /// `diagram --json`: labelled eigenvalues beside the old pairs (equal, and at a steady
+    /// precession `re^2 - im^2 = Q''/2` of the reduced equation to 1e-7, as the library's
+    /// test), the monodromy's basis, convention and orientation (the loop's signed area in the
+    /// plane (K, H1), by the shoelace formula, is positive: counter-clockwise, as stated), and
+    /// without `--out` the directory it wrote to, in the JSON and on standard error.
+    #[test]
+    fn diagram_json_names_its_numbers_and_where_it_wrote() {
+        let dir = std::env::temp_dir().join(format!("routh-no-out-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_routh"))
+            .current_dir(&dir)
+            .args([
+                "diagram",
+                "--h3",
+                "1",
+                "--tilts",
+                "60",
+                "--grid",
+                "12",
+                "--loop-points",
+                "32",
+            ])
+            .arg("--json")
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        let v = json(&out);
+        assert_eq!(v["out_from"], "default");
+        let written = std::path::PathBuf::from(v["out"].as_str().unwrap());
+        assert_eq!(written, dir.canonicalize().unwrap().join("diagram"));
+        assert!(
+            err.contains("no --out given") && err.contains(&written.display().to_string()),
+            "{err}"
+        );
+        for file in v["files"].as_array().unwrap() {
+            assert!(dir.join(file.as_str().unwrap()).exists(), "{file}");
+        }
+        let points = v["critical_curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|c| c["points"].as_array().unwrap().clone());
+        for p in points.chain(v["vertical_spins"].as_array().unwrap().clone()) {
+            let pairs = p["eigenvalues"].as_array().unwrap();
+            let labelled = p["spectrum"].as_array().unwrap();
+            assert_eq!(pairs.len(), labelled.len());
+            for (pair, l) in pairs.iter().zip(labelled) {
+                assert_eq!((&pair[0], &pair[1]), (&l["re"], &l["im"]));
+            }
+            let theta = p["theta"].as_f64().unwrap();
+            if theta > 0.0 && theta < std::f64::consts::PI {
+                let (re, im) = (
+                    labelled[0]["re"].as_f64().unwrap(),
+                    labelled[0]["im"].as_f64().unwrap(),
+                );
+                let half = 0.5 * p["q_second_derivative"].as_f64().unwrap();
+                assert!((re * re - im * im - half).abs() <= 1e-7 * half.abs());
+                assert!(p["axis_precession"].is_number());
+            } else {
+                assert!(p["axis_precession"].is_null());
+            }
+        }
+        let m = &v["monodromy"];
+        assert!(m["basis"][0]
+            .as_str()
+            .unwrap()
+            .starts_with("b1 = (t, phi) = (0, 2 pi)"));
+        assert!(m["convention"]
+            .as_str()
+            .unwrap()
+            .contains("columns are the images"));
+        assert!(m["orientation"]
+            .as_str()
+            .unwrap()
+            .starts_with("counter-clockwise"));
+        let lp = m["loop"].as_array().unwrap();
+        let area: f64 = lp
+            .windows(2)
+            .map(|w| {
+                let (k0, h0) = (w[0]["K"].as_f64().unwrap(), w[0]["H1"].as_f64().unwrap());
+                let (k1, h1) = (w[1]["K"].as_f64().unwrap(), w[1]["H1"].as_f64().unwrap());
+                k0 * h1 - k1 * h0
+            })
+            .sum();
+        assert!(area > 0.0, "{area}");
+        // Negative control: with --out nothing is said on standard error.
+        let with_out = std::process::Command::new(env!("CARGO_BIN_EXE_routh"))
+            .current_dir(&dir)
+            .args(["diagram", "--out", "given"])
+            .args(QUICK)
+            .output()
+            .unwrap();
+        assert!(with_out.status.success() && with_out.stderr.is_empty());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
 mod plot {
     //! `routh plot` and `routh animate`, run as a user would: the files exist, are not empty, have
     //! the promised dimensions; bad input exits with code 2 and a message.

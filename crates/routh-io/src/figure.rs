@@ -23,6 +23,7 @@ pub fn stability_colour(kind: StabilityType) -> RGBColor {
         StabilityType::Hyperbolic => RGBColor(214, 39, 40),
         StabilityType::FocusFocus => RGBColor(148, 0, 211),
         StabilityType::Degenerate => RGBColor(0, 0, 0),
+        StabilityType::Undecided => RGBColor(150, 150, 150),
     }
 }
 

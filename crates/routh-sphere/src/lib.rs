@@ -13,5 +13,5 @@ pub mod poisson;
 pub mod quadrature;
 pub mod steady;
 
-pub(crate) use routh_ball::{ball, body, error, field, integrals, problem, simulate, state};
+pub(crate) use routh_ball::{ball, body, error, field, integrals, problem, simulate, state, units};
 pub(crate) use routh_integrate::{self as integrate, differential, sampling, scalar};

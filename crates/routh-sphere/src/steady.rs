@@ -15,6 +15,29 @@
 //!   `omega_t`, with zero, one or two roots; the state precesses about e3 at
 //!   `dpsi/dt = u omega_t / s - omega3` and is an equilibrium in the frame rotating with it, where
 //!   the linearisation is `J - (dpsi/dt) L` with `L x = (e3 x gamma, e3 x M)`.
+//!
+//! **Units.** Each computation is made dimensionless once, at its entry, in the units
+//! `(R, m, T)` of its motion ([`Units`]: `T = 1 / max(sqrt(G / R), |omega3|)`), and its
+//! results are converted back at the API. Every tolerance below is relative to a quantity of
+//! the motion in those units, so that a body and its state scaled in mass, length or time get
+//! the same answer (issue 33: the absolute `max(1.0)` of the eigenvalue test called a vertical
+//! spin at 0.98 of Routh's threshold stable for m = 1e6 and unstable for m = 1: the Jacobian's
+//! norm in the variables (gamma, M) grows with the mass, its eigenvalues do not).
+//!
+//! **One verdict.** Each criterion decides only outside its accuracy ([`Verdict`]): Q'' outside
+//! its round-off, the eigenvalues outside [`EIGENVALUE_TOLERANCE`]. Where one of them cannot
+//! decide, or they disagree (within about 1e-11 of Routh's threshold, where the growth rate
+//! `sqrt(Q'' / 8)` is below the eigenvalues' tolerance while Q'' is above its round-off), the
+//! answer is "undecided within the accuracy", with both margins.
+//!
+//! **Precession in space.** `dpsi/dt` is the rate of the azimuth of gamma about e3 in the body
+//! frame. The symmetry axis e3 turns about the upward vertical of the fixed frame
+//! ([`crate::motion`]: z up, gamma the downward normal in the body frame) at
+//! `dphi/dt = -omega_t / sin theta` ([`axis_precession`]): with Euler angles (phi about the
+//! upward vertical, the nutation `pi - theta` between e3 and it, the proper rotation psi_E),
+//! the part of omega across e3 is `dphi/dt` times the upward vertical's horizontal part,
+//! which is minus that of gamma; and `omega3 = dpsi_E/dt - u dphi/dt`, the body rate being
+//! `dpsi/dt = -dpsi_E/dt`.
 
 use crate::body::Body;
 use crate::differential::jacobian;
@@ -22,25 +45,94 @@ use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
-use nalgebra::{SMatrix, Schur};
+use crate::units::Units;
+use nalgebra::{Complex, DMatrix, SMatrix, Schur};
 use serde::Serialize;
 
-/// Relative size of the largest real part of the Jacobian's eigenvalues (against the norm of
-/// the matrix) below which they count as imaginary: the zero eigenvalues of the integrals form
-/// Jordan blocks, whose computed eigenvalues scatter by about sqrt(machine epsilon).
+/// Relative size of the largest real part of the Jacobian's eigenvalues below which they
+/// count as imaginary, against the Frobenius norm of the Jacobian in the units of the motion
+/// (`(R, m, T)`: the norm is then a rate of the motion, unchanged when the body is scaled, so
+/// the test is scale-free): the zero eigenvalues of the integrals form Jordan blocks, whose
+/// computed eigenvalues scatter by about sqrt(machine epsilon) = 1.5e-8 of the norm; 1e-6
+/// leaves a margin of 70.
 pub const EIGENVALUE_TOLERANCE: f64 = 1e-6;
 
-/// A stationary motion with its stability by the two methods.
+/// Multiple of the round-off scale of Q'' (machine epsilon times the sum of the magnitudes of
+/// the second derivatives of the terms of Q, [`Reduction::q_curvature_scale`]: relative to
+/// the terms themselves, so scale-free) within which the sign of Q'' is not decided. The
+/// closed form of Q'' at the vertical spins agrees with the computed one to 1e-12 of the
+/// scale of its gravity term (tests); 1e3 epsilons is 2.2e-13 of the sum of the terms.
+pub const CURVATURE_EPSILONS: f64 = 1e3;
+
+/// A stationary motion with its stability by the two methods, in the body's units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Stability {
     /// `Q''` at the double root of Q (stable when negative).
     pub q_second_derivative: f64,
-    /// Stable by the sign of Q''.
+    /// Stable by the sign of Q'' (`Q'' < 0`, whatever its round-off: [`Verdict`] weighs it).
     pub stable_by_q: bool,
     /// Largest real part of the eigenvalues of the linearisation.
     pub max_real_eigenvalue: f64,
-    /// Stable by the eigenvalues (all on the imaginary axis within the tolerance).
+    /// Stable by the eigenvalues (all on the imaginary axis within the tolerance
+    /// [`Verdict::eigenvalue_tolerance`]).
     pub stable_by_jacobian: bool,
+}
+
+/// The decision of the two criteria together.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Decision {
+    /// Stable by both, each outside its accuracy.
+    Stable,
+    /// Unstable by both, each outside its accuracy.
+    Unstable,
+    /// Q'' within its round-off, or the two criteria disagree: not decided within the
+    /// accuracy of the computation.
+    Undecided,
+}
+
+impl Decision {
+    /// The words of the decision: "stable", "unstable", "undecided within the accuracy".
+    pub fn words(self) -> &'static str {
+        match self {
+            Decision::Stable => "stable",
+            Decision::Unstable => "unstable",
+            Decision::Undecided => "undecided within the accuracy",
+        }
+    }
+}
+
+/// The one answer of the two criteria of a [`Stability`], with the margins each decides
+/// outside of (in the body's units).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Verdict {
+    /// Stable, unstable or undecided.
+    pub decision: Decision,
+    /// `|Q''|` at most this is within its round-off: its sign decides nothing
+    /// ([`CURVATURE_EPSILONS`]).
+    pub q_accuracy: f64,
+    /// Real parts at most this count as zero ([`EIGENVALUE_TOLERANCE`] times the norm of the
+    /// linearisation): a growth rate below it is not seen by the eigenvalues.
+    pub eigenvalue_tolerance: f64,
+}
+
+impl Verdict {
+    /// The decision of `stability`: each criterion's where it is outside its accuracy, the
+    /// same for both; else undecided.
+    fn of(stability: &Stability, q_accuracy: f64, eigenvalue_tolerance: f64) -> Verdict {
+        let by_q =
+            (stability.q_second_derivative.abs() > q_accuracy).then_some(stability.stable_by_q);
+        let decision = match by_q {
+            Some(true) if stability.stable_by_jacobian => Decision::Stable,
+            Some(false) if !stability.stable_by_jacobian => Decision::Unstable,
+            _ => Decision::Undecided,
+        };
+        Verdict {
+            decision,
+            q_accuracy,
+            eigenvalue_tolerance,
+        }
+    }
 }
 
 /// The vertical spin about the symmetry axis.
@@ -55,11 +147,17 @@ pub struct VerticalSpin {
     pub centre_of_mass: &'static str,
     /// The spin rate omega3.
     pub spin: f64,
-    /// Routh's threshold |omega3| above which the spin is stable (0 when the centre of mass is
-    /// not above the geometric centre or G = 0).
+    /// Routh's threshold |omega3| above which the spin is stable, and 0 where there is none
+    /// (kept as it was; [`VerticalSpin::routh_threshold`] says `None` and why).
     pub threshold_spin: f64,
+    /// Routh's threshold |omega3| above which the spin is stable, `None` where there is none.
+    pub routh_threshold: Option<f64>,
+    /// Why there is no threshold ([`missing_threshold`]), `None` where there is one.
+    pub no_threshold: Option<&'static str>,
     /// Stability at `spin`.
     pub stability: Stability,
+    /// The one answer of the two criteria.
+    pub verdict: Verdict,
     /// The state.
     pub state: State,
 }
@@ -73,20 +171,51 @@ pub struct SteadyPrecession {
     pub spin: f64,
     /// The component omega_t of omega along the horizontal projection of gamma.
     pub omega_t: f64,
+    /// The round-off of omega_t (that of `Q'(cos theta)` over its slope in omega_t): an
+    /// omega_t of this size is zero within the accuracy (the slow precession of a spin far
+    /// above Routh's threshold, of relative size `(w_c / omega3)^2`, beyond about 1e7 w_c).
+    pub omega_t_accuracy: f64,
     /// The precession rate dpsi/dt of gamma about e3 in the body frame.
     pub precession: f64,
+    /// The precession rate dphi/dt of the symmetry axis e3 about the upward vertical in the
+    /// fixed frame ([`axis_precession`]).
+    pub axis_precession: f64,
     /// Stability.
     pub stability: Stability,
+    /// The one answer of the two criteria.
+    pub verdict: Verdict,
     /// The state at psi = 0.
     pub state: State,
 }
 
 /// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
-/// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0.
+/// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0
+/// ([`missing_threshold`] says why).
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
     let l = body.radius() + body.a() * pole;
     let lift = 4.0 * body.m() * body.gravity() * body.a() * pole * (body.i1() + body.m() * l * l);
     lift.max(0.0).sqrt() / (body.i3() + body.m() * body.radius() * l)
+}
+
+/// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
+/// spin rate but zero), or `None` when it has one.
+pub fn missing_threshold(body: &Body, pole: f64) -> Option<&'static str> {
+    if body.gravity() == 0.0 {
+        Some("G = 0: without gravity there is no torque to overcome")
+    } else if body.a() == 0.0 {
+        Some("a = 0: the centre of mass at the geometric centre, gravity exerts no torque")
+    } else if body.a() * pole < 0.0 {
+        Some("the centre of mass below the geometric centre: stable at every spin")
+    } else {
+        None
+    }
+}
+
+/// The rate `dphi/dt = -omega_t / sin theta` at which the symmetry axis e3 of a steady
+/// precession at tilt `theta` turns about the upward vertical of the fixed frame (module
+/// docs; checked against the motion in space, [`crate::motion`], by the tests).
+pub fn axis_precession(theta: f64, omega_t: f64) -> f64 {
+    -omega_t / theta.sin()
 }
 
 /// The generator `L` of the rotations about e3, `L x = (e3 x gamma, e3 x M)`: the symmetry
@@ -100,8 +229,20 @@ pub fn rotation_generator() -> SMatrix<f64, 6, 6> {
     rotation
 }
 
-/// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs).
+/// The largest real part of the eigenvalues of `J(x) - precession L` (see module docs) and
+/// the Frobenius norm of that matrix, computed in the units of the state's motion
+/// (`Units::of`) and returned as rates in the body's units: the norm is that of the
+/// dimensionless matrix divided by T, so `EIGENVALUE_TOLERANCE * norm` is scale-free.
 pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
+    let units = Units::of(body, &state.omega(body));
+    let t = units.time();
+    let (max, norm) = spectrum(&units.body(body)?, &units.state(state), precession * t)?;
+    Ok((max / t, norm / t))
+}
+
+/// The largest real part of the eigenvalues of `J(x) - precession L` and its Frobenius norm,
+/// in the units of its arguments.
+fn spectrum(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
     let (_, mut j) = jacobian(|x| vector_field(body, x), &state.to_array());
     j -= rotation_generator() * precession;
     let max = spectral_abscissa(&j).ok_or_else(|| RouthError::Singular {
@@ -118,47 +259,56 @@ pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Resul
 const SCHUR_ITERATIONS: usize = 10_000;
 
 /// The largest real part of the eigenvalues of `j`, or `None` if the Schur decomposition does
-/// not converge.
+/// not converge ([`complex_eigenvalues`]).
+pub fn spectral_abscissa(j: &SMatrix<f64, 6, 6>) -> Option<f64> {
+    complex_eigenvalues(DMatrix::from_column_slice(6, 6, j.as_slice())).map(|values| {
+        values
+            .iter()
+            .fold(f64::NEG_INFINITY, |acc, l| acc.max(l.re))
+    })
+}
+
+/// The eigenvalues of the square matrix `m`, or `None` if the Schur decomposition does not
+/// converge.
 ///
 /// nalgebra's `complex_eigenvalues` iterates without bound, and its shifted QR iteration can
 /// cycle forever on the exactly structured Jacobians of the vertical spins (zero blocks, equal
 /// moduli). We bound the iterations and, if the plain matrix cycles, decompose the similar
-/// matrix `Q^T j Q` for a fixed generic rotation Q: the same eigenvalues, no exact structure.
-pub fn spectral_abscissa(j: &SMatrix<f64, 6, 6>) -> Option<f64> {
-    let abscissa = |m: SMatrix<f64, 6, 6>| {
-        Schur::try_new(m, f64::EPSILON, SCHUR_ITERATIONS).map(|schur| {
-            schur
-                .complex_eigenvalues()
-                .iter()
-                .fold(f64::NEG_INFINITY, |acc, l| acc.max(l.re))
-        })
+/// matrix `Q^T m Q` for a fixed generic rotation Q: the same eigenvalues, no exact structure.
+pub fn complex_eigenvalues(m: DMatrix<f64>) -> Option<Vec<Complex<f64>>> {
+    let n = m.nrows();
+    let values = |m: DMatrix<f64>| {
+        Schur::try_new(m, f64::EPSILON, SCHUR_ITERATIONS)
+            .map(|schur| schur.complex_eigenvalues().iter().copied().collect())
     };
-    abscissa(*j).or_else(|| {
-        let generic = SMatrix::<f64, 6, 6>::from_fn(|r, c| ((r * 7 + c * 3) % 11) as f64 + 0.5);
+    values(m.clone()).or_else(|| {
+        let generic = DMatrix::<f64>::from_fn(n, n, |r, c| ((r * 7 + c * 3) % 11) as f64 + 0.5);
         let q = generic.qr().q();
-        abscissa(q.transpose() * j * q)
+        values(q.transpose() * m * q)
     })
 }
 
 /// The largest magnitude of the Jacobian (and of Q, Q', Q'') that the stability analysis
-/// takes: the Schur iteration squares the entries, which must stay far below `f64::MAX`.
+/// takes, in the units of the motion, and of the scales of the motion in the body's units
+/// (the rate squared `1 / T^2`, the energy `m R^2 / T^2`) that its results are converted back
+/// with: the Schur iteration and the round-off estimates square them, which must stay far
+/// below `f64::MAX` (a limit of f64, not of any body).
 const LARGEST_MAGNITUDE: f64 = 1e150;
 
 /// Magnitudes outside `[1 / EXTREME, EXTREME]` are named as the cause of an overflow or
 /// underflow.
 const EXTREME: f64 = 1e50;
 
-/// The body's parameters and the spin that lie outside `[1 / EXTREME, EXTREME]` in magnitude
-/// (the cause of an overflow or underflow), or all of them if none does.
+/// The dimensionless parameters of `body` (in the units of its motion) and the spin that lie
+/// outside `[1 / EXTREME, EXTREME]` in magnitude (the cause of an overflow or underflow), or
+/// all of them if none does.
 fn extreme_parameters(body: &Body, spin: f64) -> String {
     let all = [
-        ("m", body.m()),
-        ("R", body.radius()),
-        ("a", body.a()),
-        ("I1", body.i1()),
-        ("I3", body.i3()),
-        ("G", body.gravity()),
-        ("the spin omega3", spin),
+        ("a / R", body.a()),
+        ("I1 / (m R^2)", body.i1()),
+        ("I3 / (m R^2)", body.i3()),
+        ("G T^2 / R", body.gravity()),
+        ("the spin omega3 T", spin),
     ];
     let extreme: Vec<String> = all
         .iter()
@@ -167,16 +317,20 @@ fn extreme_parameters(body: &Body, spin: f64) -> String {
         .collect();
     if extreme.is_empty() {
         let all: Vec<String> = all.iter().map(|(n, v)| format!("{n} = {v:e}")).collect();
-        format!("the parameters {}", all.join(", "))
+        format!(
+            "the parameters in the units of the motion {}",
+            all.join(", ")
+        )
     } else {
         extreme.join(" and ")
     }
 }
 
 /// `value` if it is finite and at most [`LARGEST_MAGNITUDE`]; else the
-/// [`RouthError::Overflow`] of `quantity` at `state`, caused by the extreme parameters of
-/// `body` and `spin`: an overflow if the value is infinite or large, or if a parameter or the
-/// state is large (a NaN from infinity minus infinity), else an underflow (a NaN from 0 / 0).
+/// [`RouthError::Overflow`] of `quantity` at `state`, caused by the extreme parameters of the
+/// dimensionless `body` and `spin`: an overflow if the value is infinite or large, or if a
+/// parameter or the state is large (a NaN from infinity minus infinity), else an underflow (a
+/// NaN from 0 / 0).
 fn representable(
     body: &Body,
     spin: f64,
@@ -187,17 +341,10 @@ fn representable(
     if value.is_finite() && value.abs() <= LARGEST_MAGNITUDE {
         return Ok(value);
     }
-    let large = [
-        body.m(),
-        body.radius(),
-        body.i1(),
-        body.i3(),
-        body.gravity(),
-        spin,
-    ]
-    .iter()
-    .chain(state)
-    .any(|v| v.abs() >= EXTREME);
+    let large = [body.i1(), body.i3(), body.gravity(), spin]
+        .iter()
+        .chain(state)
+        .any(|v| v.abs() >= EXTREME);
     let direction = if large || value.is_infinite() || value.abs() > LARGEST_MAGNITUDE {
         "overflow"
     } else {
@@ -211,10 +358,48 @@ fn representable(
     })
 }
 
-fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
+/// The largest rate `1 / T` of a motion of a body whose inertia unit is `inertia` (`m R^2` of
+/// [`Units`]) for which its scales in the body's units, the rate squared `1 / T^2` (that of
+/// Q'') and the energy `m R^2 / T^2`, stay at most [`LARGEST_MAGNITUDE`]: a limit of f64.
+pub fn largest_rate(inertia: f64) -> f64 {
+    (LARGEST_MAGNITUDE / inertia.max(1.0)).sqrt()
+}
+
+/// The units of a stationary motion of `body` with spin rate `spin`, refused before any work
+/// when its rate exceeds [`largest_rate`].
+fn motion_units(body: &Body, spin: f64) -> Result<Units> {
+    let units = Units::with_rate(body, spin.abs());
+    let limit = largest_rate(units.inertia());
+    let rate = 1.0 / units.time();
+    if rate <= limit {
+        Ok(units)
+    } else {
+        Err(RouthError::Overflow {
+            cause: format!(
+                "the spin omega3 = {spin:e} (the rule: the rate of the motion at most \
+                 {limit:e} for this body, so that omega3^2 and m R^2 omega3^2 stay below 1e150 \
+                 and Q'', the Jacobian of (mg-eq) and their round-off in the range of f64)"
+            ),
+            quantity: "the scales of the stationary motion in the body's units",
+            direction: "overflow",
+            value: rate,
+        })
+    }
+}
+
+/// The round-off of `Q''(u)` of `red`: [`CURVATURE_EPSILONS`] machine epsilons of the sum of
+/// the magnitudes of the second derivatives of its terms.
+pub fn curvature_accuracy(red: &Reduction, u: f64) -> f64 {
+    CURVATURE_EPSILONS * f64::EPSILON * red.q_curvature_scale(u)
+}
+
+/// The stability of the stationary motion `state` of the dimensionless `body` rotating at
+/// `precession` (0 for a vertical spin), in the units of `body`, and its verdict.
+fn stability(body: &Body, state: &State, precession: f64) -> Result<(Stability, Verdict)> {
     let spin = state.omega(body)[2];
+    let u = state.gamma[2];
     let red = Reduction::of_state(body, state)?;
-    let (_, _, q2) = red.q_derivatives(state.gamma[2]);
+    let (_, _, q2) = red.q_derivatives(u);
     if !q2.is_finite() {
         representable(
             body,
@@ -224,6 +409,7 @@ fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
             q2,
         )?;
     }
+    let q_accuracy = curvature_accuracy(&red, u);
     let jacobian_norm = jacobian(|x| vector_field(body, x), &state.to_array())
         .1
         .norm();
@@ -234,13 +420,33 @@ fn stability(body: &Body, state: &State, precession: f64) -> Result<Stability> {
         "the Jacobian of (mg-eq) at the steady motion",
         jacobian_norm,
     )?;
-    let (max_re, norm) = max_real_eigenvalue(body, state, precession)?;
-    Ok(Stability {
+    let (max_re, norm) = spectrum(body, state, precession)?;
+    let tolerance = EIGENVALUE_TOLERANCE * norm;
+    let stability = Stability {
         q_second_derivative: q2,
         stable_by_q: q2 < 0.0,
         max_real_eigenvalue: max_re,
-        stable_by_jacobian: max_re <= EIGENVALUE_TOLERANCE * norm.max(1.0),
-    })
+        stable_by_jacobian: max_re <= tolerance,
+    };
+    let verdict = Verdict::of(&stability, q_accuracy, tolerance);
+    Ok((stability, verdict))
+}
+
+/// A stability and its verdict computed in `units` (rates in 1 / T), in the body's units.
+fn stability_back((s, v): (Stability, Verdict), units: &Units) -> (Stability, Verdict) {
+    let rate = 1.0 / units.time();
+    (
+        Stability {
+            q_second_derivative: s.q_second_derivative * rate * rate,
+            max_real_eigenvalue: s.max_real_eigenvalue * rate,
+            ..s
+        },
+        Verdict {
+            q_accuracy: v.q_accuracy * rate * rate,
+            eigenvalue_tolerance: v.eigenvalue_tolerance * rate,
+            ..v
+        },
+    )
 }
 
 /// Where the centre of mass of the vertical spin at `gamma3 = pole` lies: "above" or
@@ -255,10 +461,12 @@ pub fn centre_of_mass(body: &Body, pole: f64) -> &'static str {
 
 /// Fail with the parameter named when the inertia about the contact point `I_Q = I + m r^2 -
 /// m r r^T` (om-m) of `body` overflows: its determinant is of the size of `(m R^2)^3` times
-/// the moments, and `omega = I_Q^{-1} M` would come out NaN.
+/// the moments, and `omega = I_Q^{-1} M` would come out NaN. Tried with an angular momentum
+/// of the body's own scale, `M = m R^2 (1, 1, 1)` per unit time.
 pub fn require_finite_inertia(body: &Body) -> Result<()> {
-    let omega: [f64; 3] = body.angular_velocity(&[0.6, 0.0, 0.8], &[1.0, 1.0, 1.0]);
-    if omega.iter().all(|w: &f64| w.is_finite()) {
+    let scale = body.m() * body.radius() * body.radius();
+    let omega: [f64; 3] = body.angular_velocity(&[0.6, 0.0, 0.8], &[scale; 3]);
+    if scale.is_finite() && omega.iter().all(|w: &f64| w.is_finite()) {
         Ok(())
     } else {
         Err(RouthError::Parameter {
@@ -276,7 +484,8 @@ pub fn vertical_spin_state(body: &Body, pole: f64, spin: f64) -> Result<State> {
     State::from_omega(body, [0.0, 0.0, pole], [0.0, 0.0, spin], Normalise::Reject)
 }
 
-/// The vertical spin at `gamma3 = pole` with spin rate `spin`, and its stability.
+/// The vertical spin at `gamma3 = pole` with spin rate `spin`, and its stability, computed
+/// in the units of its motion (module docs).
 pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;
@@ -287,26 +496,40 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
             rule: "must be +1 or -1",
         });
     }
-    let state = vertical_spin_state(body, pole, spin)?;
+    let units = motion_units(body, spin)?;
+    let scaled = units.body(body)?;
+    let t = units.time();
+    let state = vertical_spin_state(&scaled, pole, spin * t)?;
+    let (stability, verdict) = stability_back(stability(&scaled, &state, 0.0)?, &units);
+    let no_threshold = missing_threshold(body, pole);
+    let threshold = routh_threshold(&scaled, pole) / t;
     Ok(VerticalSpin {
         gamma3: pole,
         centre_of_mass_above: body.a() * pole > 0.0,
         centre_of_mass: centre_of_mass(body, pole),
         spin,
-        threshold_spin: routh_threshold(body, pole),
-        stability: stability(body, &state, 0.0)?,
-        state,
+        threshold_spin: if no_threshold.is_none() {
+            threshold
+        } else {
+            0.0
+        },
+        routh_threshold: no_threshold.is_none().then_some(threshold),
+        no_threshold,
+        stability,
+        verdict,
+        state: units.state_back(&state),
     })
 }
 
 /// The relative round-off, in machine epsilons of the largest sample, below which the
 /// coefficient of `x^2` of a sampled quadratic counts as zero (its samples are computed with a
-/// round-off of a few epsilons of their terms).
+/// round-off of a few epsilons of their terms): relative to the samples, so scale-free.
 const QUADRATIC_NOISE_EPSILONS: f64 = 64.0;
 
 /// The relative precision of the coefficient of `x^2` of a widened fit from which it fixes
-/// the far root well enough for Newton's steps.
-const RESOLVED_PRECISION: f64 = 1e-3;
+/// the far root well enough for Newton's steps: a ratio of the fit's own coefficients
+/// (relative to its largest sample), so scale-free.
+pub const RESOLVED_PRECISION: f64 = 1e-3;
 /// Newton steps on the function itself after the fit (each doubles the correct digits).
 const NEWTON_STEPS: usize = 3;
 
@@ -316,6 +539,9 @@ const NEWTON_STEPS: usize = 3;
 pub struct QuadraticRoots {
     /// The roots, ascending (none, one or two).
     pub roots: Vec<f64>,
+    /// The round-off of each root (in the same order): that of the samples over the slope
+    /// there. A root of the size of its round-off is zero within the accuracy.
+    pub accuracies: Vec<f64>,
     /// `Some(bound)` when the coefficient of `x^2` is not resolved by the samples (to
     /// `RESOLVED_PRECISION`): a far root, if any, is not in `roots`, and lies beyond about
     /// `|x| = bound` (the sum of the roots is `-a1 / a2`, with `|a2|` below the resolution).
@@ -347,19 +573,20 @@ pub fn sampled_quadratic_roots(
         let noise = QUADRATIC_NOISE_EPSILONS * f64::EPSILON + 2.0 * nm.max(np).max(n0) / size;
         Ok(([0.5 * (fp + fm) - c0, 0.5 * (fp - fm), c0], size, noise))
     };
-    // Newton's method on f from `x`, with the slope of the fit at `scale`.
-    let refine = |x: f64, [a2, a1, _]: [f64; 3], size: f64, scale: f64| -> Result<f64> {
+    let (coefficients, size, noise) = fit(w)?;
+    // Newton's method on f from `x`, with the slope of the fit at `scale`; the root and its
+    // round-off, that of the samples (`noise size`) over the slope.
+    let refine = |x: f64, [a2, a1, _]: [f64; 3], size: f64, scale: f64| -> Result<(f64, f64)> {
+        let slope = |root: f64| (2.0 * a2 * root / scale + a1) * size / scale;
         let mut root = scale * x;
         for _ in 0..NEWTON_STEPS {
-            let slope = (2.0 * a2 * root / scale + a1) * size / scale;
-            let step = f(root)?.0 / slope;
-            if slope != 0.0 && step.is_finite() {
+            let step = f(root)?.0 / slope(root);
+            if step.is_finite() {
                 root -= step;
             }
         }
-        Ok(root)
+        Ok((root, noise * size / slope(root).abs()))
     };
-    let (coefficients, size, noise) = fit(w)?;
     let [a2, a1, a0] = coefficients;
     let mut roots = vec![];
     let mut unresolved = None;
@@ -380,8 +607,12 @@ pub fn sampled_quadratic_roots(
             }
         }
     }
-    roots.sort_by(f64::total_cmp);
-    Ok(QuadraticRoots { roots, unresolved })
+    roots.sort_by(|a, b| a.0.total_cmp(&b.0));
+    Ok(QuadraticRoots {
+        accuracies: roots.iter().map(|r| r.1).collect(),
+        roots: roots.into_iter().map(|r| r.0).collect(),
+        unresolved,
+    })
 }
 
 /// The state at tilt theta (psi = 0) with `omega = (omega_t, 0, spin)`.
@@ -411,6 +642,12 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
 }
 
 /// [`steady_precessions`] with the bound beyond which an unlisted far steady precession lies.
+///
+/// The roots omega_t are found in the body's units, from samples of `Q'(cos theta)` at
+/// `omega_t = -1 / T, 0, 1 / T` (T of the motion, [`Units`]: the samples scale with the body,
+/// and every decision of [`sampled_quadratic_roots`] is relative to them, so the roots are
+/// scale-free; in the body's units the states are those the quadrature's reference data were
+/// made from, to the bit); the stability of each is judged in the units of the motion.
 pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPrecessions> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;
@@ -421,6 +658,9 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             rule: "must lie in (0, pi); the vertical spins are separate",
         });
     }
+    let units = motion_units(body, spin)?;
+    let t = units.time();
+    let scaled = units.body(body)?;
     let u = theta.cos();
     let slope = |omega_t: f64| -> Result<(f64, f64)> {
         let state = tilted_state(body, theta, omega_t, spin)?;
@@ -430,35 +670,37 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             Ok((value, f64::EPSILON * red.q_slope_scale(u)))
         } else {
             representable(
-                body,
-                spin,
-                &state.to_array(),
+                &scaled,
+                spin * t,
+                &units.state(&state).to_array(),
                 "the slope Q'(cos theta) of the condition of steady precession",
                 value,
             )
             .map(|v| (v, 0.0))
         }
     };
-    let w = spin
-        .abs()
-        .max((body.gravity() / body.radius()).sqrt())
-        .max(1.0);
-    // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 w
+    // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 / T
     // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
     // at theta = pi/2) there is none.
-    let roots = sampled_quadratic_roots(slope, w)?;
+    let roots = sampled_quadratic_roots(slope, 1.0 / t)?;
     let precessions = roots
         .roots
         .into_iter()
-        .map(|omega_t| {
+        .zip(roots.accuracies)
+        .map(|(omega_t, omega_t_accuracy)| {
             let state = tilted_state(body, theta, omega_t, spin)?;
             let precession = u * omega_t / theta.sin() - spin;
+            let judged = stability(&scaled, &units.state(&state), precession * t)?;
+            let (stability, verdict) = stability_back(judged, &units);
             Ok(SteadyPrecession {
                 theta,
                 spin,
                 omega_t,
+                omega_t_accuracy,
                 precession,
-                stability: stability(body, &state, precession)?,
+                axis_precession: axis_precession(theta, omega_t),
+                stability,
+                verdict,
                 state,
             })
         })

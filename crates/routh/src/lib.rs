@@ -44,7 +44,7 @@ pub use routh_integrate::{batch, differential, sampling, scalar};
 
 pub use routh_ball::{
     auto, ball, body, error, families, field, integrals, kernels, motion, problem, projection,
-    range, simulate, state,
+    range, simulate, state, units,
 };
 pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
 

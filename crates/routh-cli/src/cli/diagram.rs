@@ -6,7 +6,9 @@
 use super::plot::create_dir;
 use routh::case::{check_option, Case};
 use routh::diagram::figure::{EnergyMomentum, RotationNumberFigure, SleepingTopFigure};
-use routh::diagram::{sleeping_tops, torus_count, Diagram, Resolution, TorusCount, Value};
+use routh::diagram::{
+    largest_h3, sleeping_tops, threshold_h3, torus_count, Diagram, Resolution, TorusCount, Value,
+};
 use routh::output::write_atomic;
 use routh::plot::{render_figure, Figure, Format};
 use routh::{AppError, AppResult as Result};
@@ -24,9 +26,10 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     pub h3: Option<f64>,
     /// Directory for the figures and CSV tables (created if missing); the files are named
-    /// diagram*.{png,svg,csv}.
-    #[arg(long, default_value = "diagram")]
-    pub out: PathBuf,
+    /// diagram*.{png,svg,csv}. Default: `diagram` in the current directory, said on standard
+    /// error and in the JSON (`out`).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
     /// Tilts at which the steady precessions are computed (2 to 5000).
     #[arg(long, default_value_t = Resolution::default().tilts)]
     pub tilts: usize,
@@ -56,8 +59,16 @@ struct Report<'a> {
     diagram: &'a Diagram,
     /// The sleeping tops in the plane (H3, K).
     sleeping_tops: &'a [routh::diagram::SleepingTop],
+    /// The directory the files were written to.
+    out: PathBuf,
+    /// Where `out` comes from: "option" (`--out`) or "default" (`diagram` in the current
+    /// directory, also said on standard error).
+    out_from: &'static str,
     files: Vec<PathBuf>,
 }
+
+/// The directory used when `--out` is not given.
+const DEFAULT_OUT: &str = "diagram";
 
 /// Write a CSV table atomically: a header and rows of numbers or words.
 fn write_csv(path: &Path, header: &str, rows: impl Iterator<Item = String>) -> Result<()> {
@@ -226,25 +237,34 @@ pub fn run(args: Args) -> Result<()> {
         .into_iter()
         .chain(diagram.vertical_spins.iter().map(|v| v.value.h3.abs()))
         .fold(0.0_f64, f64::max);
-    let lines = sleeping_tops(&body, h3_max.max(1.0) * 1.5, 401)?;
-    let threshold = lines
-        .iter()
-        .filter_map(|l| l.threshold_h3)
-        .fold(0.0, f64::max);
-    let lines = if threshold * 1.3 > h3_max.max(1.0) * 1.5 {
-        sleeping_tops(&body, threshold * 1.5, 401)?
+    // The lines reach half as far again as the largest of these and of Routh's thresholds
+    // (the body's own scales; the units of a body at rest without gravity when all vanish),
+    // within the largest |H3| that the diagram resolves.
+    let thresholds = [1.0, -1.0]
+        .into_iter()
+        .map(|pole| threshold_h3(&body, pole))
+        .collect::<routh::Result<Vec<_>>>()?;
+    let reach = thresholds.into_iter().flatten().fold(h3_max, f64::max);
+    let unit = routh::units::Units::with_rate(&body, 0.0);
+    let reach = if reach > 0.0 {
+        reach
     } else {
-        lines
+        unit.momentum() * unit.length()
     };
-    create_dir(&args.out)?;
-    let mut files = tables(&diagram, &args.out)?;
+    let lines = sleeping_tops(&body, (1.5 * reach).min(largest_h3(&body)?.0), 401)?;
+    let (out, out_from) = match &args.out {
+        Some(dir) => (dir.clone(), "option"),
+        None => (PathBuf::from(DEFAULT_OUT), "default"),
+    };
+    create_dir(&out)?;
+    let mut files = tables(&diagram, &out)?;
     let marks: Vec<(String, Value)> = marked.iter().map(|v| ("case".to_string(), *v)).collect();
     files.extend(both_formats(
         &EnergyMomentum {
             diagram: &diagram,
             marks,
         },
-        &args.out,
+        &out,
         "diagram",
     )?);
     files.extend(both_formats(
@@ -253,13 +273,13 @@ pub fn run(args: Args) -> Result<()> {
             marks: vec![("case".to_string(), (own.h3, own.k))],
             h3,
         },
-        &args.out,
+        &out,
         "diagram_sleeping_top",
     )?);
     if let Some(m) = &diagram.monodromy {
         files.extend(both_formats(
             &RotationNumberFigure { monodromy: m },
-            &args.out,
+            &out,
             "diagram_rotation_number",
         )?);
     }
@@ -271,8 +291,17 @@ pub fn run(args: Args) -> Result<()> {
         case_in_plane,
         diagram: &diagram,
         sleeping_tops: &lines,
+        out: std::path::absolute(&out).unwrap_or_else(|_| out.clone()),
+        out_from,
         files,
     };
+    if out_from == "default" {
+        eprintln!(
+            "routh diagram: no --out given: wrote {} files to {}",
+            report.files.len(),
+            report.out.display()
+        );
+    }
     if args.json {
         super::print_json(&report)?;
     } else {

@@ -4,7 +4,8 @@
 use super::Readable;
 use routh::case::Case;
 use routh::steady::{
-    precessions_at_tilt, routh_threshold, vertical_spin, SteadyPrecession, VerticalSpin,
+    missing_threshold, precessions_at_tilt, routh_threshold, vertical_spin, Decision, Stability,
+    SteadyPrecession, Verdict, VerticalSpin, RESOLVED_PRECISION,
 };
 use routh::{AppResult as Result, Body};
 use serde::Serialize;
@@ -34,8 +35,14 @@ struct Report {
     /// The spin rate omega3 used (the case's initial omega3).
     spin: f64,
     /// Routh's threshold |omega3| for the vertical spin with the centre of mass above the
-    /// geometric centre (0 when there is none: a = 0 or G = 0).
+    /// geometric centre (0 when there is none: a = 0 or G = 0; kept as it was, see
+    /// `routh_threshold`).
     threshold_spin: f64,
+    /// Routh's threshold |omega3| of the vertical spin with the centre of mass above the
+    /// geometric centre; `null` when there is none, `no_threshold` saying why.
+    routh_threshold: Option<f64>,
+    /// Why there is no threshold (`null` when there is one).
+    no_threshold: Option<&'static str>,
     /// gamma3 of the vertical spin with the centre of mass above (None when a = 0).
     top_heavy_gamma3: Option<f64>,
     vertical: Vec<VerticalSpin>,
@@ -53,12 +60,17 @@ struct Unlisted {
     beyond_omega_t: f64,
 }
 
-fn stable(b: bool) -> &'static str {
-    if b {
-        "stable"
-    } else {
-        "unstable"
-    }
+/// The one answer of the two criteria with the margin of each: "stable: Q'' = .. (round-off
+/// ..), max Re lambda = .. (tolerance ..)", or "undecided within the accuracy: ...".
+fn verdict(s: &Stability, v: &Verdict) -> String {
+    format!(
+        "{}: Q'' = {:.6e} (round-off {:.1e}), max Re lambda = {:.3e} (tolerance {:.1e})",
+        v.decision.words(),
+        s.q_second_derivative,
+        v.q_accuracy,
+        s.max_real_eigenvalue,
+        v.eigenvalue_tolerance
+    )
 }
 
 fn print_text(r: &Report) -> Result<()> {
@@ -66,29 +78,40 @@ fn print_text(r: &Report) -> Result<()> {
     outln!("spin omega3 = {}", r.spin)?;
     outln!("vertical spins (gamma = (0, 0, +-1), omega = (0, 0, omega3)):")?;
     for v in &r.vertical {
+        let threshold = match (v.routh_threshold, v.no_threshold) {
+            (Some(w), _) => format!("threshold |omega3| = {}", Readable(w)),
+            (None, reason) => format!("no threshold ({})", reason.unwrap_or_default()),
+        };
         outln!(
-            "  gamma3 = {:+}: centre of mass {}, threshold |omega3| = {}; {} by Q'' = {:.6e}, \
-             {} by the Jacobian (max Re lambda = {:.3e})",
+            "  gamma3 = {:+}: centre of mass {}, {threshold}; {}",
             v.gamma3,
             v.centre_of_mass,
-            Readable(v.threshold_spin),
-            stable(v.stability.stable_by_q),
-            v.stability.q_second_derivative,
-            stable(v.stability.stable_by_jacobian),
-            v.stability.max_real_eigenvalue
+            verdict(&v.stability, &v.verdict)
         )?;
     }
-    outln!("steady precessions at constant tilt (omega_n = 0):")?;
-    outln!("  theta        omega_t      dpsi/dt      Q''          by Q      by Jacobian")?;
+    outln!(
+        "steady precessions at constant tilt (omega_n = 0); dpsi/dt: gamma about e3 in the body,"
+    )?;
+    outln!("dphi/dt: the symmetry axis e3 about the upward vertical in space:")?;
+    outln!("  theta        omega_t      dpsi/dt      dphi/dt      Q''          verdict")?;
     for p in &r.precessions {
+        let mut words = match p.verdict.decision {
+            Decision::Undecided => verdict(&p.stability, &p.verdict),
+            decided => decided.words().to_string(),
+        };
+        if p.omega_t_accuracy > RESOLVED_PRECISION * p.omega_t.abs() {
+            words += &format!(
+                " (omega_t known only to +-{:.1e}, its round-off)",
+                p.omega_t_accuracy
+            );
+        }
         outln!(
-            "  {:<12.6} {:<12.6} {:<12.6} {:<12.4e} {:<9} {}",
+            "  {:<12.6} {:<12.6} {:<12.6} {:<12.6} {:<12.4e} {words}",
             p.theta,
             p.omega_t,
             p.precession,
+            p.axis_precession,
             p.stability.q_second_derivative,
-            stable(p.stability.stable_by_q),
-            stable(p.stability.stable_by_jacobian)
         )?;
     }
     for u in &r.unlisted_far_precessions {
@@ -129,6 +152,11 @@ pub fn run(args: Args) -> Result<()> {
         body,
         spin,
         threshold_spin: top_heavy_gamma3.map_or(0.0, |p| routh_threshold(&body, p)),
+        routh_threshold: vertical
+            .iter()
+            .find(|v| v.centre_of_mass_above)
+            .and_then(|v| v.routh_threshold),
+        no_threshold: missing_threshold(&body, top_heavy_gamma3.unwrap_or(1.0)),
         top_heavy_gamma3,
         vertical,
         precessions,

@@ -4,12 +4,15 @@
 
 use super::monodromy::{monodromy, Monodromy};
 use super::relative_equilibria::RelativeEquilibrium;
-use super::relative_equilibria::{critical_curves, vertical_spin_at, CriticalCurve};
+use super::relative_equilibria::{critical_curves, plane_units, vertical_spin_at, CriticalCurve};
 use super::stability::StabilityType;
 use super::tori::torus_count;
-use super::value::Value;
+use super::value::{jellett_in_units, Value};
 use crate::body::Body;
 use crate::error::{Result, RouthError};
+use crate::integrals::jellett;
+use crate::steady::{largest_rate, missing_threshold, routh_threshold, vertical_spin_state};
+use crate::units::Units;
 use serde::Serialize;
 
 /// How finely the diagram is computed.
@@ -46,6 +49,17 @@ pub struct Window {
     pub h1: (f64, f64),
 }
 
+impl Window {
+    /// This window computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        let (p, e) = (units.momentum(), units.energy());
+        Window {
+            k: (self.k.0 * p, self.k.1 * p),
+            h1: (self.h1.0 * e, self.h1.1 * e),
+        }
+    }
+}
+
 /// The torus counts on a grid of values (cell centres).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TorusGrid {
@@ -55,6 +69,17 @@ pub struct TorusGrid {
     pub h1: Vec<f64>,
     /// `tori[row][column]`: the number of tori, `None` at a critical value.
     pub tori: Vec<Vec<Option<usize>>>,
+}
+
+impl TorusGrid {
+    /// This grid computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        TorusGrid {
+            k: self.k.iter().map(|k| k * units.momentum()).collect(),
+            h1: self.h1.iter().map(|h| h * units.energy()).collect(),
+            tori: self.tori.clone(),
+        }
+    }
 }
 
 /// The energy–momentum diagram at one H3.
@@ -98,9 +123,70 @@ fn check_resolution(name: &'static str, value: usize, least: usize) -> Result<()
     }
 }
 
+/// The largest ratio of the spin of a vertical spin to Routh's threshold for which the
+/// diagram is computed. Far above the threshold gravity is a small part of the motion: the
+/// slow steady precessions (the slow branch of the critical curves) have omega_t of relative
+/// size `(w_c / w)^2`, and the round-off of the quadratic that fixes them costs them about
+/// `6 eps (w / w_c)^2` of their value (measured on the default body: 1e-7 at 1e4, 1e-3 at
+/// 1e6, nothing resolved beyond 1e7). A ratio of the body's own rates: scale-free. (Issue 33:
+/// at H3 = 1e6 the default body's sleeping tops were called degenerate, which `steady` calls
+/// stable; that was the norm of the Jacobian in the body's variables, now made dimensionless,
+/// and the sleeping tops are elliptic at any spin above the threshold.)
+pub const MAX_SPIN_RATIO: f64 = 1e4;
+
+/// The largest |H3| of a diagram of `body` (finite and positive), and the rule that sets it:
+/// the vertical spins at most [`MAX_SPIN_RATIO`] times Routh's threshold (when the body has
+/// one), and their rate at most [`largest_rate`] (the range of f64).
+pub fn largest_h3(body: &Body) -> Result<(f64, &'static str)> {
+    let units = Units::with_rate(body, 0.0);
+    let per_spin = [1.0, -1.0]
+        .into_iter()
+        .try_fold(f64::INFINITY, |least, pole| {
+            let unit = vertical_spin_state(body, pole, 1.0)?;
+            Ok::<f64, RouthError>(least.min(jellett(body, &unit.to_array()).abs()))
+        })?;
+    let range = largest_rate(units.inertia()) * per_spin;
+    let pole = body.a().signum();
+    let resolution = match missing_threshold(body, pole) {
+        None => MAX_SPIN_RATIO * routh_threshold(body, pole) * per_spin,
+        Some(_) => f64::INFINITY,
+    };
+    Ok(if resolution < range {
+        (
+            resolution,
+            "the vertical spins at this H3 must spin at most 1e4 times Routh's threshold: \
+             beyond, the slow steady precessions (omega_t of relative size (w_c / w)^2) lose \
+             more than 1e-7 of their value to the round-off of f64, about 6 eps (w / w_c)^2",
+        )
+    } else {
+        (
+            range,
+            "the rate of the vertical spins at this H3 must keep their energy and Q'' below \
+             1e150 in the body's units (the range of f64)",
+        )
+    })
+}
+
+/// The units of the plane at Jellett's `h3` ([`plane_units`]), refused before any work when
+/// `|h3|` exceeds [`largest_h3`]; `name` is the option's.
+fn checked_plane(body: &Body, h3: f64, name: &'static str) -> Result<Units> {
+    let (limit, rule) = largest_h3(body)?;
+    if h3.abs() <= limit {
+        plane_units(body, h3)
+    } else {
+        Err(RouthError::Option {
+            name,
+            value: format!("{h3:e} (|H3| <= {limit:.4e} for this body)"),
+            rule,
+        })
+    }
+}
+
 impl Diagram {
     /// The diagram of `body` at Jellett's `h3`; `marked` values (the case's own) are kept
-    /// inside the window.
+    /// inside the window. Computed in the units of the plane ([`plane_units`]: in them the
+    /// faster of the fall and the vertical spins is 1, and the window's least spans, the
+    /// `1e-3 (1 + |K|)` below, are relative to the body's scales) and converted back.
     pub fn new(body: &Body, h3: f64, marked: &[Value], resolution: Resolution) -> Result<Self> {
         body.require_symmetric("the energy-momentum diagram")?;
         if !h3.is_finite() {
@@ -113,6 +199,35 @@ impl Diagram {
         check_resolution("tilts", resolution.tilts, 2)?;
         check_resolution("grid", resolution.grid, 2)?;
         check_resolution("loop_points", resolution.loop_points, 8)?;
+        let units = checked_plane(body, h3, "h3")?;
+        let marked: Vec<Value> = marked.iter().map(|v| v.in_units(&units)).collect();
+        let scaled = Self::in_units(
+            &units.body(body)?,
+            jellett_in_units(h3, &units),
+            &marked,
+            resolution,
+        )?;
+        Ok(Diagram {
+            h3,
+            window: scaled.window.back(&units),
+            vertical_spins: scaled
+                .vertical_spins
+                .iter()
+                .map(|v| v.back(&units))
+                .collect(),
+            critical_curves: scaled
+                .critical_curves
+                .iter()
+                .map(|c| c.back(&units))
+                .collect(),
+            focus_focus: scaled.focus_focus.iter().map(|v| v.back(&units)).collect(),
+            monodromy: scaled.monodromy.map(|m| m.back(&units)),
+            tori: scaled.tori.back(&units),
+        })
+    }
+
+    /// [`Diagram::new`] in the units of its arguments.
+    fn in_units(body: &Body, h3: f64, marked: &[Value], resolution: Resolution) -> Result<Self> {
         let vertical_spins = [1.0, -1.0]
             .into_iter()
             .map(|pole| vertical_spin_at(body, pole, h3))
@@ -122,6 +237,8 @@ impl Diagram {
             .map(|v| v.value)
             .chain(marked.iter().copied())
             .collect();
+        // The least spans and the default ranges are in the units of the plane (its body's
+        // own scales of K and H1), not absolute numbers.
         let (k_lo, k_hi) = range(anchors.iter().map(|v| v.k)).unwrap_or((-1.0, 1.0));
         let k_span = (k_hi - k_lo).max(1e-3 * (1.0 + k_hi.abs()));
         let k = (k_lo - 0.6 * k_span, k_hi + 0.6 * k_span);
@@ -246,10 +363,35 @@ pub struct SleepingTop {
     pub threshold_h3: Option<f64>,
 }
 
+impl SleepingTop {
+    /// This line computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        SleepingTop {
+            pole: self.pole,
+            spins: self.spins.iter().map(|v| v.back(units)).collect(),
+            threshold_h3: self
+                .threshold_h3
+                .map(|h3| h3 * units.momentum() * units.length()),
+        }
+    }
+}
+
+/// |H3| of the vertical spin at `gamma3 = pole` spinning at Routh's threshold, `None` where
+/// there is no threshold ([`missing_threshold`]).
+pub fn threshold_h3(body: &Body, pole: f64) -> Result<Option<f64>> {
+    if missing_threshold(body, pole).is_some() {
+        return Ok(None);
+    }
+    let state = vertical_spin_state(body, pole, routh_threshold(body, pole))?;
+    Ok(Some(jellett(body, &state.to_array()).abs()))
+}
+
 /// The two lines of sleeping tops in the plane (H3, K) (see [`SleepingTop`]).
-/// `h3_max` must be finite and positive, `samples` (per line) between 2 and
-/// [`MAX_RESOLUTION`].
+/// `h3_max` must be finite, positive and at most [`largest_h3`], `samples` (per line) between
+/// 2 and [`MAX_RESOLUTION`]. Computed in the units of the plane at `h3_max` and converted
+/// back.
 pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<SleepingTop>> {
+    body.require_symmetric("the sleeping tops")?;
     check_resolution("samples", samples, 2)?;
     if !(h3_max.is_finite() && h3_max > 0.0) {
         return Err(RouthError::Option {
@@ -258,27 +400,24 @@ pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<Sle
             rule: "must be finite and positive",
         });
     }
+    let units = checked_plane(body, h3_max, "h3_max")?;
+    let scaled = units.body(body)?;
+    let h3_max = jellett_in_units(h3_max, &units);
     [1.0, -1.0]
         .into_iter()
         .map(|pole| {
             let spins = (0..samples)
                 .map(|i| {
                     let h3 = h3_max * (2.0 * i as f64 / (samples - 1) as f64 - 1.0);
-                    vertical_spin_at(body, pole, h3)
+                    vertical_spin_at(&scaled, pole, h3)
                 })
                 .collect::<Result<Vec<_>>>()?;
-            let threshold = crate::steady::routh_threshold(body, pole);
-            let threshold_h3 = if threshold > 0.0 {
-                let state = crate::steady::vertical_spin_state(body, pole, threshold)?;
-                Some(crate::integrals::jellett(body, &state.to_array()).abs())
-            } else {
-                None
-            };
-            Ok(SleepingTop {
+            let line = SleepingTop {
                 pole,
                 spins,
-                threshold_h3,
-            })
+                threshold_h3: threshold_h3(&scaled, pole)?,
+            };
+            Ok(line.back(&units))
         })
         .collect()
 }

@@ -30,6 +30,7 @@ use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::quadrature::{ExactSolution, Motion};
+use crate::units::Units;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -76,6 +77,60 @@ pub struct Monodromy {
     pub max_step: f64,
     /// The monodromy matrix `[[1, k], [0, 1]]` in the basis (b1, b2) of the period lattice.
     pub matrix: [[i64; 2]; 2],
+    /// The basis of the period lattice the matrix is written in ([`LATTICE_BASIS`]).
+    pub basis: [&'static str; 2],
+    /// How the matrix acts ([`MATRIX_CONVENTION`]).
+    pub convention: &'static str,
+    /// The direction of the loop ([`LOOP_ORIENTATION`]).
+    pub orientation: &'static str,
+}
+
+/// The basis of the period lattice in which [`Monodromy::matrix`] is written (module docs):
+/// pairs (t, phi) such that flowing for t and then rotating about e3 by phi is the identity.
+pub const LATTICE_BASIS: [&str; 2] = [
+    "b1 = (t, phi) = (0, 2 pi): one turn of the rotation about e3",
+    "b2 = (t, phi) = (T, 2 pi W): the nutation period T with the advance of the azimuth psi \
+     of gamma over it, W the rotation number followed continuously along the loop",
+];
+
+/// How [`Monodromy::matrix`] acts on the basis [`LATTICE_BASIS`].
+pub const MATRIX_CONVENTION: &str = "columns are the images of b1 and b2 after one turn of the \
+     loop, written in the basis (b1, b2): b1 -> b1, b2 -> b2 + k b1 with k the change of W";
+
+/// The direction of the monodromy loop.
+pub const LOOP_ORIENTATION: &str = "counter-clockwise in the plane (K, H1) (K on the \
+     horizontal axis, H1 on the vertical): K = K0 + rho_K cos phi, H1 = H10 + rho_H sin phi, \
+     phi increasing";
+
+impl LoopPoint {
+    /// This point computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        LoopPoint {
+            value: self.value.back(units),
+            period: self.period * units.time(),
+            ..*self
+        }
+    }
+}
+
+impl Monodromy {
+    /// This monodromy computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        Monodromy {
+            centre: self.centre.back(units),
+            radii: (
+                self.radii.0 * units.momentum(),
+                self.radii.1 * units.energy(),
+            ),
+            points: self.points.iter().map(|p| p.back(units)).collect(),
+            winding: self.winding,
+            max_step: self.max_step,
+            matrix: self.matrix,
+            basis: self.basis,
+            convention: self.convention,
+            orientation: self.orientation,
+        }
+    }
 }
 
 /// T and Theta (in [0, 2 pi)) at a value with one torus.
@@ -214,6 +269,9 @@ pub fn monodromy(
                 winding,
                 max_step,
                 matrix: [[1, winding], [0, 1]],
+                basis: LATTICE_BASIS,
+                convention: MATRIX_CONVENTION,
+                orientation: LOOP_ORIENTATION,
             });
         }
         // A smaller loop, away from the critical curves.

@@ -18,7 +18,7 @@
 //!
 //! Each point carries its state and its stability type ([`super::stability`]).
 
-use super::stability::{linearise, StabilityType};
+use super::stability::{confirmed, labelled, linearise, Eigenvalue, StabilityType};
 use super::tori::root;
 use super::value::Value;
 use crate::body::Body;
@@ -26,7 +26,10 @@ use crate::error::{Result, RouthError};
 use crate::integrals::jellett;
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
-use crate::steady::{sampled_quadratic_roots, vertical_spin_state};
+use crate::steady::{
+    axis_precession, curvature_accuracy, sampled_quadratic_roots, vertical_spin_state,
+};
+use crate::units::Units;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -38,14 +41,26 @@ pub struct RelativeEquilibrium {
     /// The values of the integrals.
     #[serde(flatten)]
     pub value: Value,
-    /// The rate `dpsi/dt` of the rotation about e3 (0 for a vertical spin).
+    /// The rate `dpsi/dt` of the rotation of gamma about e3 in the body frame (0 for a
+    /// vertical spin).
     pub precession: f64,
+    /// The rate `dphi/dt` at which the symmetry axis e3 turns about the upward vertical in
+    /// space ([`crate::steady::axis_precession`]); `None` for a vertical spin, whose axis is
+    /// the vertical.
+    pub axis_precession: Option<f64>,
     /// `Q''(gamma3)`; at a steady precession the reduced eigenvalues are `+-sqrt(Q''/2)`.
     pub q_second_derivative: f64,
-    /// The stability type.
+    /// The round-off of Q'' ([`crate::steady::curvature_accuracy`]): within it, its sign
+    /// decides nothing.
+    pub q_accuracy: f64,
+    /// The stability type: that of the eigenvalues, confirmed by the sign of Q''
+    /// ([`super::stability::confirmed`]; undecided where they disagree).
     pub stability: StabilityType,
-    /// The eigenvalues (re, im) of the reduced linearisation.
+    /// The eigenvalues (re, im) of the reduced linearisation, as unlabelled pairs (kept as
+    /// they were; [`RelativeEquilibrium::spectrum`] labels them).
     pub eigenvalues: Vec<(f64, f64)>,
+    /// The same eigenvalues, labelled `{re, im}`.
+    pub spectrum: Vec<Eigenvalue>,
     /// How far the gradients of the integrals are from the rank of a relative equilibrium
     /// ([`super::stability::Linearisation::rank_residual`]).
     pub rank_residual: f64,
@@ -58,16 +73,49 @@ impl RelativeEquilibrium {
     pub fn new(body: &Body, theta: f64, state: State, precession: f64) -> Result<Self> {
         let value = Value::of_state(body, &state);
         let lin = linearise(body, &state, precession)?;
+        let omega = state.omega(body);
+        let horizontal = state.gamma[0].hypot(state.gamma[1]);
+        let omega_t = (omega[0] * state.gamma[0] + omega[1] * state.gamma[1]) / horizontal;
+        let red = value.reduction(body)?;
+        let u = state.gamma[2];
+        let q_second_derivative = red.q_derivatives(u).2;
+        let q_accuracy = curvature_accuracy(&red, u);
         Ok(RelativeEquilibrium {
             theta,
             value,
             precession,
-            q_second_derivative: value.reduction(body)?.q_derivatives(state.gamma[2]).2,
-            stability: lin.kind,
+            axis_precession: (horizontal > 0.0).then(|| axis_precession(theta, omega_t)),
+            q_second_derivative,
+            q_accuracy,
+            stability: confirmed(lin.kind, q_second_derivative, q_accuracy),
+            spectrum: labelled(&lin.eigenvalues),
             eigenvalues: lin.eigenvalues,
             rank_residual: lin.rank_residual,
             state,
         })
+    }
+
+    /// This relative equilibrium computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        let rate = 1.0 / units.time();
+        let eigenvalues: Vec<(f64, f64)> = self
+            .eigenvalues
+            .iter()
+            .map(|&(re, im)| (re * rate, im * rate))
+            .collect();
+        RelativeEquilibrium {
+            theta: self.theta,
+            value: self.value.back(units),
+            precession: self.precession * rate,
+            axis_precession: self.axis_precession.map(|p| p * rate),
+            q_second_derivative: self.q_second_derivative * rate * rate,
+            q_accuracy: self.q_accuracy * rate * rate,
+            stability: self.stability,
+            spectrum: labelled(&eigenvalues),
+            eigenvalues,
+            rank_residual: self.rank_residual,
+            state: units.state_back(&self.state),
+        }
     }
 }
 
@@ -80,13 +128,26 @@ pub fn vertical_spin_at(body: &Body, pole: f64, h3: f64) -> Result<RelativeEquil
     RelativeEquilibrium::new(body, theta, state, 0.0)
 }
 
-/// A scale of the spin rate at Jellett's `h3` (from H3 = (M, r) ~ I omega R and from
-/// gravity), used only to condition the sampling of the quadratic D(K).
-fn spin_scale(body: &Body, h3: f64) -> f64 {
-    let inertia = body.i1() + body.i3() + body.m() * body.radius() * body.radius();
-    (h3.abs() / (inertia * body.radius()))
-        .max((body.gravity() / body.radius()).sqrt())
-        .max(1.0)
+/// The spin rate of the faster vertical spin at Jellett's `h3` (`|h3 / H3(w = 1)|`, H3
+/// linear in the spin at each pole).
+pub fn plane_rate(body: &Body, h3: f64) -> Result<f64> {
+    [1.0, -1.0].into_iter().try_fold(0.0_f64, |rate, pole| {
+        let unit = vertical_spin_state(body, pole, 1.0)?;
+        Ok(rate.max((h3 / jellett(body, &unit.to_array())).abs()))
+    })
+}
+
+/// The units of the plane at Jellett's `h3` ([`Units::with_rate`] with [`plane_rate`]): in
+/// them the faster of the fall and the vertical spins is 1.
+pub fn plane_units(body: &Body, h3: f64) -> Result<Units> {
+    Ok(Units::with_rate(body, plane_rate(body, h3)?))
+}
+
+/// The scale of the spin rate at Jellett's `h3`, `1 / T` of [`plane_units`], used only to
+/// condition the sampling of the quadratic D(K): it scales with the body, so the fit (whose
+/// decisions are relative to its samples) is scale-free.
+fn spin_scale(body: &Body, h3: f64) -> Result<f64> {
+    Ok(1.0 / plane_units(body, h3)?.time())
 }
 
 /// `Q0(u)`, `Q0'(u)` (Q at H1 = 0) and `q1(u)`, `q1'(u)` (the coefficient of H1).
@@ -106,7 +167,7 @@ fn wronskian(body: &Body, h3: f64, k: f64, u: f64) -> Result<f64> {
 /// at `x = -1, 0, 1`, and the scale `w`.
 fn wronskian_quadratic(body: &Body, h3: f64, u: f64) -> Result<([f64; 3], f64)> {
     let g = Reduction::new(body, 0.0, h3, 0.0)?.routh_g(u);
-    let w = g * spin_scale(body, h3);
+    let w = g * spin_scale(body, h3)?;
     let (dm, d0, dp) = (
         wronskian(body, h3, -w, u)?,
         wronskian(body, h3, 0.0, u)?,
@@ -130,7 +191,7 @@ pub fn precession_spins(body: &Body, h3: f64, u: f64) -> Result<Vec<f64>> {
     // the diagram: it is left out.
     // The round-off of D: a few epsilons of its value (`sampled_quadratic_roots` adds them).
     let d = |k: f64| wronskian(body, h3, k, u).map(|d| (d, 0.0));
-    Ok(sampled_quadratic_roots(d, g * spin_scale(body, h3))?.roots)
+    Ok(sampled_quadratic_roots(d, g * spin_scale(body, h3)?)?.roots)
 }
 
 /// The steady precession at tilt `theta` in (0, pi) with integrals `h3` and `k` (a root of
@@ -161,6 +222,17 @@ pub struct CriticalCurve {
     pub stability: StabilityType,
     /// The points, ordered by the tilt.
     pub points: Vec<RelativeEquilibrium>,
+}
+
+impl CriticalCurve {
+    /// This curve computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Self {
+        CriticalCurve {
+            branch: self.branch,
+            stability: self.stability,
+            points: self.points.iter().map(|p| p.back(units)).collect(),
+        }
+    }
 }
 
 /// The tilt between `a` (real roots) and `b` (none) where the discriminant of D vanishes.

@@ -32,9 +32,16 @@
 //! (focus–focus, the spin below Routh's threshold).
 //!
 //! The classification uses the relative tolerance [`TYPE_TOLERANCE`] against the norm of
-//! `B`: a pair of eigenvalues whose real and imaginary parts are both above it is focus–focus,
-//! only real parts hyperbolic, only imaginary parts elliptic; an eigenvalue below it in modulus
-//! (a fold of the critical curves, Routh's threshold spin) is degenerate.
+//! `B`, computed in the units of the motion ([`linearise`]): a pair of eigenvalues whose real
+//! and imaginary parts are both above it is focus–focus, only real parts hyperbolic, only
+//! imaginary parts elliptic; an eigenvalue below it in modulus (a fold of the critical
+//! curves) is degenerate.
+//!
+//! The type is then checked against Routh's criterion, the sign of `Q''` at the double root
+//! ([`confirmed`], the criterion of [`crate::steady`]): elliptic needs `Q'' < 0`, hyperbolic and
+//! focus–focus `Q'' > 0`, each outside the round-off of Q''. Where they disagree or Q'' is
+//! within its round-off (within about 1e-12 of Routh's threshold spin, where the eigenvalues
+//! meet in pairs and split by sqrt(eps)), the type is [`StabilityType::Undecided`].
 
 use crate::body::Body;
 use crate::differential::{gradient, jacobian};
@@ -42,19 +49,23 @@ use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::integrals::{energy, geometric, jellett, routh_integral};
 use crate::state::State;
-use crate::steady::rotation_generator;
-use nalgebra::{Complex, SMatrix, Schur};
+use crate::steady::{complex_eigenvalues, rotation_generator};
+use crate::units::Units;
+use nalgebra::{Complex, DMatrix, SMatrix};
 use serde::Serialize;
 
-/// Relative size (against the norm of the reduced linearisation) below which a real part, an
-/// imaginary part or a modulus of an eigenvalue counts as zero. Double eigenvalues (at a fold,
-/// at Routh's threshold) split by about sqrt(machine epsilon) = 1.5e-8 times the norm under
-/// round-off; 1e-6 leaves a margin of 70 over that and still resolves eigenvalues of a
+/// Relative size (against the norm of the reduced linearisation B, computed in the units of
+/// the motion by [`linearise`]: a rate of the motion, the same for every scaled copy of the
+/// body, where in the body's variables (gamma, M) it grew with the mass) below which a real
+/// part, an imaginary part or a modulus of an eigenvalue counts as zero. Double eigenvalues (at
+/// a fold, at Routh's threshold) split by about sqrt(machine epsilon) = 1.5e-8 times the norm
+/// under round-off; 1e-6 leaves a margin of 70 over that and still resolves eigenvalues of a
 /// millionth of the largest.
 pub const TYPE_TOLERANCE: f64 = 1e-6;
 
-/// Relative size (against |x|) below which the orbit direction `xi = L x` counts as zero (a
-/// vertical spin, fixed by the rotations).
+/// Relative size (against |x|, in the units of the motion, where gamma and M are both of order
+/// one; in the body's variables M alone set |x|) below which the orbit direction `xi = L x`
+/// counts as zero (a vertical spin, fixed by the rotations).
 pub const RANK_TOLERANCE: f64 = 1e-9;
 
 /// The stability type of a relative equilibrium.
@@ -67,20 +78,43 @@ pub enum StabilityType {
     Hyperbolic,
     /// A complex quadruplet `+-a +-ib` (a vertical spin below Routh's threshold).
     FocusFocus,
-    /// A zero eigenvalue (a fold or cusp of the critical curves, the threshold spin).
+    /// A zero eigenvalue (a fold or cusp of the critical curves).
     Degenerate,
+    /// The eigenvalues and the sign of Q'' disagree, or Q'' is within its round-off: not
+    /// decided within the accuracy (Routh's threshold spin).
+    Undecided,
 }
 
 impl StabilityType {
-    /// The name used in JSON and CSV: `elliptic`, `hyperbolic`, `focus-focus`, `degenerate`.
+    /// The name used in JSON and CSV: `elliptic`, `hyperbolic`, `focus-focus`, `degenerate`,
+    /// `undecided`.
     pub fn name(self) -> &'static str {
         match self {
             StabilityType::Elliptic => "elliptic",
             StabilityType::Hyperbolic => "hyperbolic",
             StabilityType::FocusFocus => "focus-focus",
             StabilityType::Degenerate => "degenerate",
+            StabilityType::Undecided => "undecided",
         }
     }
+}
+
+/// An eigenvalue, labelled: its real part (a growth rate) and its imaginary part (an angular
+/// frequency).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Eigenvalue {
+    /// The real part.
+    pub re: f64,
+    /// The imaginary part.
+    pub im: f64,
+}
+
+/// The eigenvalues `(re, im)` as labelled [`Eigenvalue`]s.
+pub fn labelled(eigenvalues: &[(f64, f64)]) -> Vec<Eigenvalue> {
+    eigenvalues
+        .iter()
+        .map(|&(re, im)| Eigenvalue { re, im })
+        .collect()
 }
 
 /// The reduced linearisation of a relative equilibrium and its type.
@@ -144,7 +178,8 @@ fn reduced_basis(body: &Body, x: &[f64; 6], xi: &[f64; 6]) -> Result<(Vec<[f64; 
 }
 
 /// Modified Gram-Schmidt, dropping the vectors that are (numerically) in the span of the
-/// earlier ones; the longest remaining vectors are taken first.
+/// earlier ones (left with less than 1e-6 of their unit length: a ratio, scale-free); the
+/// longest remaining vectors are taken first.
 fn orthonormalise(mut vectors: Vec<[f64; 6]>) -> Vec<[f64; 6]> {
     vectors.sort_by(|a, b| norm(b).total_cmp(&norm(a)));
     let mut basis: Vec<[f64; 6]> = vec![];
@@ -177,7 +212,7 @@ fn singular(x: &[f64; 6], reason: &str) -> RouthError {
 }
 
 /// The eigenvalues of the reduced map B (2 x 2 in closed form, 4 x 4 by a bounded Schur
-/// iteration).
+/// iteration, [`complex_eigenvalues`]).
 fn eigenvalues(b: &[Vec<f64>], x: &[f64; 6]) -> Result<Vec<Complex<f64>>> {
     match b.len() {
         2 => {
@@ -186,12 +221,8 @@ fn eigenvalues(b: &[Vec<f64>], x: &[f64; 6]) -> Result<Vec<Complex<f64>>> {
             let disc = Complex::new(half_trace * half_trace - det, 0.0).sqrt();
             Ok(vec![half_trace + disc, half_trace - disc])
         }
-        4 => {
-            let m = SMatrix::<f64, 4, 4>::from_fn(|r, c| b[r][c]);
-            let schur = Schur::try_new(m, f64::EPSILON, 10_000)
-                .ok_or_else(|| singular(x, "the Schur iteration did not converge"))?;
-            Ok(schur.complex_eigenvalues().iter().copied().collect())
-        }
+        4 => complex_eigenvalues(DMatrix::from_fn(4, 4, |r, c| b[r][c]))
+            .ok_or_else(|| singular(x, "the Schur iteration did not converge")),
         n => Err(singular(
             x,
             &format!(
@@ -219,9 +250,42 @@ pub fn classify(eigenvalues: &[(f64, f64)], norm: f64) -> StabilityType {
     }
 }
 
+/// The type `kind` from the eigenvalues checked against Routh's criterion (module docs):
+/// kept where the sign of `q_second_derivative` (outside `q_accuracy`) says the same,
+/// [`StabilityType::Undecided`] where it does not; a degenerate type is kept.
+pub fn confirmed(kind: StabilityType, q_second_derivative: f64, q_accuracy: f64) -> StabilityType {
+    let stable_by_q = (q_second_derivative.abs() > q_accuracy).then_some(q_second_derivative < 0.0);
+    match (kind, stable_by_q) {
+        (StabilityType::Elliptic, Some(true))
+        | (StabilityType::Hyperbolic | StabilityType::FocusFocus, Some(false))
+        | (StabilityType::Degenerate | StabilityType::Undecided, _) => kind,
+        _ => StabilityType::Undecided,
+    }
+}
+
 /// The reduced linearisation of the relative equilibrium `state` rotating at `precession`
-/// (0 for a vertical spin) and its stability type (module docs).
+/// (0 for a vertical spin) and its stability type (module docs), computed in the units of the
+/// state's motion (`Units::of`: its Jacobian, the singular values of the gradients and the
+/// norm of B are then those of one dimensionless problem for every scaled copy of the body,
+/// so the relative tolerances are scale-free) and returned with the eigenvalues and the norm
+/// as rates in the body's units.
 pub fn linearise(body: &Body, state: &State, precession: f64) -> Result<Linearisation> {
+    let units = Units::of(body, &state.omega(body));
+    let t = units.time();
+    let lin = linearise_in_units(&units.body(body)?, &units.state(state), precession * t)?;
+    Ok(Linearisation {
+        eigenvalues: lin
+            .eigenvalues
+            .iter()
+            .map(|&(re, im)| (re / t, im / t))
+            .collect(),
+        norm: lin.norm / t,
+        ..lin
+    })
+}
+
+/// [`linearise`] in the units of its arguments.
+fn linearise_in_units(body: &Body, state: &State, precession: f64) -> Result<Linearisation> {
     let x = state.to_array();
     let (_, j) = jacobian(|y| vector_field(body, y), &x);
     let generator = rotation_generator();

@@ -7,6 +7,7 @@ use crate::error::Result;
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::quadrature::Reduction;
 use crate::state::State;
+use crate::units::Units;
 use serde::Serialize;
 
 /// A value of the integrals (H1, H3, K) (the fourth, H4 = (gamma, gamma), is 1).
@@ -34,8 +35,31 @@ impl Value {
         }
     }
 
+    /// This value in `units`: `H1 T^2 / (m R^2)`, `H3 T / (m R^3)`, `K T / (m R^2)`.
+    pub fn in_units(&self, units: &Units) -> Value {
+        Value {
+            h1: self.h1 / units.energy(),
+            h3: jellett_in_units(self.h3, units),
+            k: self.k / units.momentum(),
+        }
+    }
+
+    /// A value computed in `units`, in the body's units.
+    pub fn back(&self, units: &Units) -> Value {
+        Value {
+            h1: self.h1 * units.energy(),
+            h3: self.h3 * units.momentum() * units.length(),
+            k: self.k * units.momentum(),
+        }
+    }
+
     /// The reduction `(du/dt)^2 = Q(u)` at this value.
     pub fn reduction(&self, body: &Body) -> Result<Reduction> {
         Reduction::new(body, self.h1, self.h3, self.k)
     }
+}
+
+/// Jellett's H3 = (M, r), an angular momentum times a length, in `units`: `H3 T / (m R^3)`.
+pub fn jellett_in_units(h3: f64, units: &Units) -> f64 {
+    h3 / units.momentum() / units.length()
 }
