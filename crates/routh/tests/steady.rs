@@ -1035,11 +1035,7 @@ mod steady {
         use routh::integrate::{solve_dense, Options};
         use routh::motion::{initial_full, quaternion, rotate, FullMotion};
         let body = Body::default();
-        let opts = Options {
-            rtol: 1e-12,
-            atol: 1e-12,
-            ..Options::default()
-        };
+        let opts = Options::new(1e-12, 1e-12).unwrap();
         let mut count = 0;
         for theta in [std::f64::consts::PI / 12.0, 1.0, 2.2] {
             for p in steady_precessions(&body, theta, 8.0).unwrap() {
