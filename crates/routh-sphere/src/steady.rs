@@ -190,11 +190,14 @@ pub struct SteadyPrecession {
 
 /// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
 /// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0
-/// ([`missing_threshold`] says why).
+/// ([`missing_threshold`] says why). Evaluated with the mass divided out,
+/// `sqrt(4 G a p (A/m + l^2)) / (C/m + R l)`, so that no product of masses and inertias can
+/// overflow: the one formula that `steady`, `diagram` and Python report.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
+    let m = body.m();
     let l = body.radius() + body.a() * pole;
-    let lift = 4.0 * body.m() * body.gravity() * body.a() * pole * (body.i1() + body.m() * l * l);
-    lift.max(0.0).sqrt() / (body.i3() + body.m() * body.radius() * l)
+    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / m + l * l);
+    lift.max(0.0).sqrt() / (body.i3() / m + body.radius() * l)
 }
 
 /// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
@@ -502,7 +505,7 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
     let state = vertical_spin_state(&scaled, pole, spin * t)?;
     let (stability, verdict) = stability_back(stability(&scaled, &state, 0.0)?, &units);
     let no_threshold = missing_threshold(body, pole);
-    let threshold = routh_threshold(&scaled, pole) / t;
+    let threshold = routh_threshold(body, pole);
     Ok(VerticalSpin {
         gamma3: pole,
         centre_of_mass_above: body.a() * pole > 0.0,
