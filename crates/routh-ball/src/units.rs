@@ -68,6 +68,21 @@ impl Units {
         }
     }
 
+    /// These units rounded to the nearest powers of two: a problem converted to them holds the
+    /// same significands with other exponents, so the conversion, and its way back, are exact
+    /// (barring underflow and overflow), and a computation made in them gives, to the bit, what
+    /// it gives in the problem's own units wherever it does not depend on the units: the same
+    /// motion written in other units, where it did, gets the same answer, and nothing else
+    /// changes. The scales of the problem are then within a factor sqrt(2) of 1 instead of 1.
+    pub fn binary(&self) -> Units {
+        let power = |x: f64| 2f64.powi(x.log2().round() as i32);
+        Units {
+            length: power(self.length),
+            mass: power(self.mass),
+            time: power(self.time),
+        }
+    }
+
     /// The unit of length, R.
     pub fn length(&self) -> f64 {
         self.length
@@ -256,6 +271,33 @@ mod tests {
                 assert!(close(&u.state_back(&x1).to_array(), &x.to_array(), 1e-14));
             }
         }
+    }
+
+    /// The units rounded to powers of two are within a factor sqrt(2) of the units, and a
+    /// state converted to them and back is the state to the bit (the conversion only changes
+    /// exponents), while the units themselves round M (negative control).
+    #[test]
+    fn binary_units_convert_exactly() {
+        let body = Body::new(3e6, 0.7, 0.2, 0.3, 0.3, 0.45, 9.81).unwrap();
+        let state = State::from_omega(
+            &body,
+            [0.6, 0.0, 0.8],
+            [0.3, -0.7, 11.0],
+            crate::state::Normalise::Reject,
+        )
+        .unwrap();
+        let units = Units::of(&body, &state.omega(&body));
+        let binary = units.binary();
+        for (a, b) in [
+            (units.length(), binary.length()),
+            (units.mass(), binary.mass()),
+            (units.time(), binary.time()),
+        ] {
+            assert_eq!(b, 2f64.powi(b.log2() as i32), "{b}");
+            assert!((b / a).log2().abs() <= 0.5, "{a} {b}");
+        }
+        assert_eq!(binary.state_back(&binary.state(&state)), state);
+        assert_ne!(units.state_back(&units.state(&state)), state);
     }
 
     /// The time unit is the faster of the fall and the spin, finite and positive for every

@@ -8,9 +8,11 @@ use routh::integrals::{energy, jellett, routh_integral};
 use routh::output::write_atomic;
 use routh::quadrature::{Accuracy, ExactSolution, Motion};
 use routh::row::{csv_line, Cell};
+use routh::simulate::MAX_SAMPLES;
 use routh::table::csv_header;
 use routh::{AppError, AppResult as Result, Body, State};
 use serde::Serialize;
+use std::fmt::Write as _;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -66,6 +68,12 @@ struct Summary {
     /// The motion of the tilt.
     #[serde(flatten)]
     tilt: Tilt,
+    /// Why a number of the tilt is null.
+    #[serde(flatten)]
+    tilt_null_reasons: TiltNullReasons,
+    /// The precession of the symmetry axis in space.
+    #[serde(flatten)]
+    axis: AxisPrecession,
     passes_through_axis: bool,
     chebyshev_nodes: Option<usize>,
     /// The state at t.
@@ -96,10 +104,93 @@ pub(super) struct Tilt {
     pub(super) gamma3_max: f64,
     /// The period of theta.
     pub(super) period: Option<f64>,
-    /// The advance of the azimuth of gamma per period of theta.
+    /// The advance per period of theta of the azimuth psi of gamma (the vertical) about e3 in
+    /// the body frame (for `routh exact --flow`, of phi = atan2(gamma1, gamma2)): not the
+    /// precession of the symmetry axis in space (`axis_precession_*` of `routh exact`).
     pub(super) precession_advance_per_period: Option<f64>,
-    /// The azimuth's rate when theta is constant.
+    /// The rate of that azimuth when theta is constant.
     pub(super) precession_rate: Option<f64>,
+}
+
+/// Why `period`, `precession_advance_per_period` or `precession_rate` of `routh exact` is
+/// null (each key present only when its number is).
+#[derive(Serialize)]
+struct TiltNullReasons {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    period_null_reason: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    precession_advance_per_period_null_reason: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    precession_rate_null_reason: Option<&'static str>,
+}
+
+/// The precession of the symmetry axis e3 in space: its azimuth in the fixed frame (z up,
+/// measured from x toward y), in radians and radians per unit time. A key `<key>_null_reason`
+/// says why a number is null (present only then).
+#[derive(Serialize)]
+struct AxisPrecession {
+    /// The constant rate of a steady motion.
+    axis_precession_rate: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis_precession_rate_null_reason: Option<&'static str>,
+    /// The advance per nutation period (in [0, 2 pi) for a motion through the axis, where it
+    /// is defined modulo 2 pi only).
+    axis_precession_advance_per_period: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis_precession_advance_per_period_null_reason: Option<&'static str>,
+    /// The mean rate: the advance per period over the period (a nutation), the rate (a steady
+    /// motion).
+    axis_precession_mean_rate: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis_precession_mean_rate_null_reason: Option<&'static str>,
+}
+
+/// `why` when `value` is null.
+fn null_reason(value: Option<f64>, why: &'static str) -> Option<&'static str> {
+    value.is_none().then_some(why)
+}
+
+/// Why the axis of a steady motion has no rate: it is vertical.
+const VERTICAL_AXIS: &str = "the symmetry axis is vertical (gamma on the axis): it has no azimuth";
+
+impl AxisPrecession {
+    fn of(exact: &ExactSolution) -> Self {
+        let (rate, advance, mean) = match &exact.motion {
+            Motion::Steady { .. } => {
+                let rate = exact.axis_precession_rate();
+                (rate, None, rate)
+            }
+            Motion::Nutation(nut) => (None, Some(nut.axis_advance), nut.axis_mean_rate()),
+        };
+        let steady = matches!(exact.motion, Motion::Steady { .. });
+        AxisPrecession {
+            axis_precession_rate: rate,
+            axis_precession_rate_null_reason: null_reason(
+                rate,
+                if steady {
+                    VERTICAL_AXIS
+                } else {
+                    "a nutation has no constant rate; see axis_precession_advance_per_period and \
+                     axis_precession_mean_rate"
+                },
+            ),
+            axis_precession_advance_per_period: advance,
+            axis_precession_advance_per_period_null_reason: null_reason(
+                advance,
+                "a steady motion has no nutation period; see axis_precession_rate",
+            ),
+            axis_precession_mean_rate: mean,
+            axis_precession_mean_rate_null_reason: null_reason(
+                mean,
+                if steady {
+                    VERTICAL_AXIS
+                } else {
+                    "the motion passes through the axis, where the axis is vertical and its \
+                     azimuth jumps by pi: the advance is defined modulo 2 pi only"
+                },
+            ),
+        }
+    }
 }
 
 /// The state at a time: one sample of `routh exact --samples N --json`, and the state that
@@ -159,6 +250,7 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
             Some(nut.nodes),
         ),
     };
+    let period = exact.period();
     Summary {
         case: case.source.clone(),
         tilt: Tilt {
@@ -167,10 +259,22 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
             theta_max: u_min.clamp(-1.0, 1.0).acos(),
             gamma3_min: u_min,
             gamma3_max: u_max,
-            period: exact.period(),
+            period,
             precession_advance_per_period: advance,
             precession_rate: rate,
         },
+        tilt_null_reasons: TiltNullReasons {
+            period_null_reason: null_reason(period, "a steady motion: theta is constant"),
+            precession_advance_per_period_null_reason: null_reason(
+                advance,
+                "a steady motion has no nutation period; see precession_rate",
+            ),
+            precession_rate_null_reason: null_reason(
+                rate,
+                "a nutation has no constant rate; see precession_advance_per_period",
+            ),
+        },
+        axis: AxisPrecession::of(exact),
         passes_through_axis: through,
         chebyshev_nodes: nodes,
         state: Sample::new(body, t, &state),
@@ -185,73 +289,127 @@ fn summary(case: &Case, body: &Body, exact: &ExactSolution, t: f64) -> Summary {
     }
 }
 
-fn print_text(s: &Summary) -> Result<()> {
-    outln!("case: {}", s.case)?;
-    outln!("motion: {}", s.tilt.motion)?;
-    print_tilt(
+fn summary_text(s: &Summary) -> String {
+    let mut text = String::new();
+    let _ = writeln!(text, "case: {}", s.case);
+    let _ = writeln!(text, "motion: {}", s.tilt.motion);
+    tilt_text(
+        &mut text,
         &s.tilt,
         [
             "nutation period T",
-            "precession advance per period",
-            "steady: precession rate dpsi/dt",
+            "precession advance per period (azimuth of gamma in the body frame)",
+            "steady: precession rate dpsi/dt (azimuth of gamma in the body frame)",
         ],
-    )?;
+    );
+    let axis = &s.axis;
+    let mut line = |name: &str, value: Option<f64>, why: Option<&str>| {
+        let _ = match (value, why) {
+            (Some(v), _) => writeln!(text, "{name} = {v}"),
+            (None, Some(why)) => writeln!(text, "{name}: none ({why})"),
+            (None, None) => Ok(()),
+        };
+    };
+    line(
+        "symmetry axis in space: precession rate dphi/dt",
+        axis.axis_precession_rate,
+        None,
+    );
+    line(
+        "symmetry axis in space: advance per period",
+        axis.axis_precession_advance_per_period,
+        None,
+    );
+    line(
+        "symmetry axis in space: mean precession rate",
+        axis.axis_precession_mean_rate,
+        axis.axis_precession_mean_rate_null_reason,
+    );
     if s.passes_through_axis {
-        outln!("the motion passes through the symmetry axis (sin theta = 0) once per period")?;
+        let _ = writeln!(
+            text,
+            "the motion passes through the symmetry axis (sin theta = 0) once per period"
+        );
     }
-    print_integrals(&s.integrals)?;
-    outln!(
+    integrals_text(&mut text, &s.integrals);
+    let _ = writeln!(
+        text,
         "estimated relative error at t: {:.1e} (below {ACCURACY_TOLERANCE:e} for |t| <= {})",
         s.error_estimate,
         s.horizon
             .map_or("any t".to_string(), |h| format!("{h:.6e}"))
-    )?;
-    print_state(format_args!("{:?}", s.state.t), &s.state)
+    );
+    state_text(&mut text, format_args!("{:?}", s.state.t), &s.state);
+    text
 }
 
 /// The lines of the tilt: its range (theta in [min, max], gamma3 = cos theta in [min, max]),
 /// then the period and the precession's advance, or the precession's rate, each after its
-/// name in `names`.
-pub(super) fn print_tilt(s: &Tilt, names: [&str; 3]) -> Result<()> {
-    outln!(
+/// name in `names`. (Lines written to a `String`, which cannot fail.)
+pub(super) fn tilt_text(text: &mut String, s: &Tilt, names: [&str; 3]) {
+    let _ = writeln!(
+        text,
         "tilt theta in [{}, {}] (gamma3 in [{}, {}])",
-        s.theta_min,
-        s.theta_max,
-        s.gamma3_min,
-        s.gamma3_max
-    )?;
+        s.theta_min, s.theta_max, s.gamma3_min, s.gamma3_max
+    );
     let [period_name, advance_name, rate_name] = names;
-    match (s.period, s.precession_advance_per_period, s.precession_rate) {
+    let _ = match (s.period, s.precession_advance_per_period, s.precession_rate) {
         (Some(period), Some(advance), _) => {
-            outln!("{period_name} = {period}")?;
-            outln!("{advance_name} = {advance}")
+            writeln!(text, "{period_name} = {period}\n{advance_name} = {advance}")
         }
-        (_, _, Some(rate)) => outln!("{rate_name} = {rate}"),
+        (_, _, Some(rate)) => writeln!(text, "{rate_name} = {rate}"),
         _ => Ok(()),
-    }
+    };
 }
 
 /// The line of the integrals' values.
-pub(super) fn print_integrals(v: &Value) -> Result<()> {
-    outln!("integrals: H1 = {}, H3 = {}, K = {}", v.h1, v.h3, v.k)
+pub(super) fn integrals_text(text: &mut String, v: &Value) {
+    let _ = writeln!(text, "integrals: H1 = {}, H3 = {}, K = {}", v.h1, v.h3, v.k);
 }
 
 /// The lines of the state (its time `t` as the caller prints it).
-pub(super) fn print_state(t: std::fmt::Arguments, s: &Sample) -> Result<()> {
-    outln!("state at t = {t}:")?;
-    outln!("  gamma = {:?}", s.gamma)?;
-    outln!("  M     = {:?}", s.m)?;
-    outln!("  omega = {:?}", s.omega)
+pub(super) fn state_text(text: &mut String, t: std::fmt::Arguments, s: &Sample) {
+    let _ = writeln!(
+        text,
+        "state at t = {t}:\n  gamma = {:?}\n  M     = {:?}\n  omega = {:?}",
+        s.gamma, s.m, s.omega
+    );
+}
+
+/// Print the summary of `routh exact` (or `--flow`): as JSON with `--json`, else as `text`;
+/// on standard error when the samples go to standard output (`--out -`), as `routh simulate`
+/// does, so that standard output holds the CSV alone.
+pub(super) fn print_summary<T: Serialize>(
+    args: &Args,
+    summary: &T,
+    text: impl FnOnce(&T) -> String,
+) -> Result<()> {
+    let report = if args.json {
+        super::json(summary)
+    } else {
+        text(summary)
+    };
+    if args.out.as_deref() == Some(Path::new("-")) {
+        eprint!("{report}");
+        Ok(())
+    } else {
+        out!("{report}")
+    }
 }
 
 impl Args {
     /// The time of the reported state (`--t`, else the case's t_end), checked with
-    /// `--samples`.
+    /// `--samples` (bounded before any work, by the bound of `routh simulate`).
     pub(super) fn checked_time(&self, case: &Case) -> Result<f64> {
         let t = self.time.unwrap_or(case.integration.t_end());
         check_option("t", t, t.is_finite(), "must be finite")?;
         if let Some(n) = self.samples {
-            check_option("samples", n as f64, n >= 2, "must be >= 2")?;
+            check_option(
+                "samples",
+                n as f64,
+                (2..=MAX_SAMPLES).contains(&n),
+                "must be >= 2 and at most 10000000 (MAX_SAMPLES, as for routh simulate)",
+            )?;
         }
         Ok(t)
     }
@@ -292,12 +450,7 @@ pub fn run(args: Args) -> Result<()> {
         (Some(n), None) => return write_samples(None, &body, t, n, state_at),
         (None, _) => {}
     }
-    if args.json {
-        super::print_json(&s)?;
-    } else {
-        print_text(&s)?;
-    }
-    Ok(())
+    print_summary(&args, &s, summary_text)
 }
 
 /// `n` equally spaced times on [0, t].

@@ -2,7 +2,10 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{print_integrals, print_state, print_tilt, write_samples, Args, Sample, Tilt};
+use super::exact::{
+    integrals_text, print_summary, state_text, tilt_text, write_samples, Args, Sample, Tilt,
+};
+use std::fmt::Write as _;
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
@@ -72,30 +75,26 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         state: Sample::new(&body, t, &state_at(t)),
         integrals: Value::of_state(&body, &case.initial),
     };
-    if args.json {
-        super::print_json(&summary)?;
-    } else {
-        print_text(&summary)?;
-    }
-    Ok(())
+    print_summary(args, &summary, summary_text)
 }
 
-fn print_text(s: &Summary) -> Result<()> {
-    outln!("case: {}", s.case)?;
-    outln!(
-        "flow {} = P dH of the first bracket (p-br) at ({}), alpha = {}",
-        s.flow,
-        s.condition,
-        s.alpha
-    )?;
-    print_tilt(
+fn summary_text(s: &Summary) -> String {
+    let mut text = String::new();
+    let _ = writeln!(
+        text,
+        "case: {}\nflow {} = P dH of the first bracket (p-br) at ({}), alpha = {}",
+        s.case, s.flow, s.condition, s.alpha
+    );
+    tilt_text(
+        &mut text,
         &s.tilt,
         [
             "period of theta T",
             "advance of phi per period",
             "theta constant: dphi/dt",
         ],
-    )?;
-    print_integrals(&s.integrals)?;
-    print_state(format_args!("{}", s.state.t), &s.state)
+    );
+    integrals_text(&mut text, &s.integrals);
+    state_text(&mut text, format_args!("{}", s.state.t), &s.state);
+    text
 }

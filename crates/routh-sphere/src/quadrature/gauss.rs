@@ -63,17 +63,19 @@ impl GaussLegendre {
 
 /// A Gauss-Legendre rule loses its geometric convergence when a singularity of the
 /// integrand lies near the interval: with the singularity on the Bernstein ellipse of
-/// parameter rho, the error of the n-point rule is about `rho^(-2n)`. Sub-intervals are
-/// bisected until rho is at least this (`2.26^(-48) = 1e-17` for 24 nodes).
-const MIN_BERNSTEIN_RHO: f64 = 2.26;
+/// parameter rho, the relative error of the n-point rule is about `rho^(-2n)`. Sub-intervals
+/// are bisected until that is at most this, below the round-off of f64 (rho at least 2.26
+/// for 24 nodes, 11.5 for 8): a relative error, so the test holds in any units.
+const SINGULARITY_ERROR: f64 = 1e-17;
 /// Deepest bisection toward a singularity.
 const MAX_DEPTH: u32 = 40;
 
 impl GaussLegendre {
     /// The mean `(1/(b - a)) int_a^b f` of a function analytic except at the complex points
     /// `singularities` (`(re, im)`): sub-intervals bisected toward the singularities until
-    /// each lies outside the Bernstein ellipse `rho = MIN_BERNSTEIN_RHO` of every piece.
-    /// Also returns the number of pieces (the work: `n` evaluations of f each).
+    /// each lies outside the Bernstein ellipse of every piece whose `rho^(-2n)` is
+    /// `SINGULARITY_ERROR` ([`GaussLegendre::min_rho`]). Also returns the number of pieces
+    /// (the work: `n` evaluations of f each).
     pub fn mean_avoiding(
         &self,
         a: f64,
@@ -81,26 +83,36 @@ impl GaussLegendre {
         singularities: &[(f64, f64)],
         f: &impl Fn(f64) -> f64,
     ) -> (f64, usize) {
-        self.mean_at_depth(a, b, singularities, f, 0)
+        let min_rho = self.min_rho();
+        let near = |a: f64, b: f64| {
+            singularities
+                .iter()
+                .any(|&z| bernstein_rho(a, b, z) < min_rho)
+        };
+        self.mean_at_depth(a, b, &near, f, 0)
     }
 
+    /// The smallest Bernstein parameter of a singularity for which this rule's error,
+    /// `rho^(-2n)`, is at most `SINGULARITY_ERROR`.
+    pub fn min_rho(&self) -> f64 {
+        SINGULARITY_ERROR.powf(-0.5 / self.nodes.len() as f64)
+    }
+
+    /// The mean over `[a, b]`, bisected while `near(a, b)` (a singularity too close).
     fn mean_at_depth(
         &self,
         a: f64,
         b: f64,
-        singularities: &[(f64, f64)],
+        near: &impl Fn(f64, f64) -> bool,
         f: &impl Fn(f64) -> f64,
         depth: u32,
     ) -> (f64, usize) {
-        let near = singularities
-            .iter()
-            .any(|&z| bernstein_rho(a, b, z) < MIN_BERNSTEIN_RHO);
-        if !near || depth >= MAX_DEPTH || a == b {
+        if !near(a, b) || depth >= MAX_DEPTH || a == b {
             return (self.integrate(|tau| f(a + tau * (b - a))), 1);
         }
         let m = 0.5 * (a + b);
-        let (left, n_left) = self.mean_at_depth(a, m, singularities, f, depth + 1);
-        let (right, n_right) = self.mean_at_depth(m, b, singularities, f, depth + 1);
+        let (left, n_left) = self.mean_at_depth(a, m, near, f, depth + 1);
+        let (right, n_right) = self.mean_at_depth(m, b, near, f, depth + 1);
         (0.5 * (left + right), n_left + n_right)
     }
 }

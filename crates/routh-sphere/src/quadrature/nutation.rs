@@ -10,54 +10,70 @@
 //! (midpoint) nodes `sigma_j = (j + 1/2) pi / n`, converges geometrically; it integrates in
 //! closed form, `t(sigma) = c0 sigma / 2 + sum c_k sin(k sigma) / k`, so the period is
 //! `T = pi c0` and t(sigma) is inverted by Newton's method. The precession angle is the
-//! integral of `dpsi/dt f(sigma)` in the same way, with advance `pi b0` per period.
+//! integral of `dpsi/dt f(sigma)` in the same way, with advance `pi b0` per period, and so is
+//! the azimuth phi of the symmetry axis e3 in space (`docs/quadrature.md`, section 3).
+//!
+//! **Units.** [`ExactSolution::new`] makes the problem dimensionless once, at its entry, in the
+//! units of [`Units`] (R, m and T, the faster of the fall and the spin, each rounded to a
+//! power of two so that the conversion is exact), and converts every
+//! result back at its API: so each tolerance, threshold and decision below is taken in those
+//! units, where the scales of the problem are 1, and the same motion written in other units
+//! gets the same answer.
 
 use crate::body::Body;
 use crate::differential::jacobian;
 use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::integrate::brent;
-use crate::quadrature::gauss::GaussLegendre;
+use crate::quadrature::gauss::{bernstein_rho, GaussLegendre};
 use crate::quadrature::panels::{Piecewise, Sample};
 use crate::quadrature::reduction::{frame_index, Reduction};
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
-use nalgebra::SMatrix;
+use crate::units::Units;
 use std::f64::consts::{PI, TAU};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Most samples spent on the panels of one nutation; a level set that needs more lies within
+/// Most samples spent on the panels of one nutation (a count: the same in any units); a level
+/// set that needs more lies within
 /// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
 /// Bisection toward a near-singularity at distance epsilon costs about
 /// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
 const SAMPLE_BUDGET: usize = 6400;
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
-/// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation, about
-/// 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close to R and a
-/// large m) every sample bisects toward it, and with the sample budget that took 1.5 s on a
-/// fuzz input. Ordinary motions use 2 pieces per sample.
+/// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
+/// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
+/// to R and a large m) every sample bisects toward it, and with the sample budget that took
+/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample.
 const WORK_BUDGET: usize = 100_000;
 /// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
-/// (accurate over long intervals), below it from the second derivative (no cancellation).
+/// (accurate over long intervals), below it from the second derivative (no cancellation). A
+/// width in `u = gamma3`, a cosine: dimensionless.
 const WIDE_NUTATION: f64 = 1.0 / 16.0;
 /// Gauss-Legendre nodes per direction of the double integral of a narrow nutation's cofactor:
 /// over a width below `WIDE_NUTATION` Q'' is so close to a polynomial that 8 nodes (exact to
 /// degree 15) leave an error far below round-off unless a singularity of Q lies within
-/// about the width of the nutation.
+/// about the width of the nutation (then the cofactor is that of a wide one, see
+/// `Nutation::narrow`).
 const NARROW_NODES: usize = 8;
-/// First step of the outward search for the turning points.
+/// First step of the outward search for the turning points, relative to the distance x0 of
+/// the start from the pole (x is dimensionless, and known to its relative round-off).
 const FIRST_SEARCH_STEP: f64 = 1e-8;
-/// Largest step of that search (Q is smooth; a pair of roots closer than this is not sought).
+/// Largest step of that search in x (dimensionless; Q is smooth; a pair of roots closer than
+/// this is not sought).
 const MAX_SEARCH_STEP: f64 = 1.0 / 128.0;
 /// A state is a relative equilibrium when the part of the field (mg-eq) not tangent to the
 /// rotations about e3 is below this many machine epsilons of `|J| |x|` (the round-off scale of
-/// the field: J is its Jacobian, x the state).
+/// the field: J is its Jacobian, x the state). Both are taken in the problem's units, where
+/// gamma and M are dimensionless: in any other units `|x|` mixes gamma (1) with M (of the size
+/// of m R^2 / T), and the test answered "steady" for the default case with m, I scaled by 1e12.
 const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
 /// A turning point is a double root of Q (a separatrix) when the round-off of Q moves it by
 /// more than `1 / SEPARATRIX_MARGIN` of its distance to the other root of the local quadratic
-/// of Q: the round-off is an estimate of its typical size, not a bound, and a double root
-/// within a few such sizes cannot be told from a separatrix.
+/// of Q (a ratio of two distances in u: dimensionless): the round-off is an estimate of its
+/// typical size, not a bound, and a double root within a few such sizes cannot be told from a
+/// separatrix.
 const SEPARATRIX_MARGIN: f64 = 16.0;
 
 /// A count of Gauss-Legendre pieces that methods taking `&self` increase: atomic, so that a
@@ -88,10 +104,14 @@ impl PartialEq for Work {
 }
 
 /// A nutation: the tilt oscillates between `u1` and `u2`, the whole state is periodic up to
-/// a rotation about e3 by `advance` per period.
+/// a rotation about e3 by `advance` per period. Its public numbers are in the problem's units;
+/// it is computed in the dimensionless problem of `units` (module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Nutation {
+    /// The reduction of the dimensionless problem.
     reduction: Reduction,
+    /// The units of the problem, in which `reduction` is dimensionless.
+    units: Units,
     /// Lower turning point of gamma3 = cos theta.
     pub u1: f64,
     /// Upper turning point of gamma3.
@@ -106,10 +126,19 @@ pub struct Nutation {
     /// `u2 - u1`, to the relative round-off of the turning points' distances from the pole
     /// (see `Turnings`).
     width: f64,
-    /// Nutation period T.
+    /// Nutation period T, in the problem's units of time.
     pub period: f64,
-    /// Advance of the precession angle psi per period.
+    /// Advance per period of the precession angle psi: the azimuth of gamma (the vertical)
+    /// about e3 in the body frame, measured from e1 toward e2 (radians). Not the precession of
+    /// the symmetry axis in space (`axis_advance`). For a motion through the axis, that of the
+    /// continuation with a signed sin theta: the azimuth itself jumps by pi at each passage.
     pub advance: f64,
+    /// Advance per period of the azimuth phi of the symmetry axis e3 in space (the fixed frame,
+    /// z up, measured from x toward y, radians): `dphi/dt = -N(u) / (A R (1 - u^2))`
+    /// (docs/quadrature.md, section 3). For a motion through the axis the azimuth jumps by pi
+    /// at each passage (the axis passes through the vertical): the advance is then defined
+    /// modulo 2 pi only, and given in `[0, 2 pi)`.
+    pub axis_advance: f64,
     /// Number of samples (Chebyshev nodes of all panels) kept.
     pub nodes: usize,
     /// Estimated relative error of the period: the truncation and round-off of its series and
@@ -117,11 +146,20 @@ pub struct Nutation {
     pub period_error: f64,
     /// Estimated absolute error of the advance per period (radians).
     pub advance_error: f64,
-    /// `dt/dsigma` and `dpsi/dsigma` (less its pole parts) on `[0, pi]`.
+    /// `dt/dsigma`, `dpsi/dsigma` and `dphi/dsigma` (less their pole parts) on `[0, pi]`, in
+    /// the dimensionless problem.
     series: Piecewise,
     rule: GaussLegendre,
     /// The rule of the double integral of a narrow nutation's cofactor.
     narrow_rule: GaussLegendre,
+    /// Whether the cofactor is that of a narrow nutation: `u2 - u1 <= WIDE_NUTATION`, and no
+    /// singularity of Q within the Bernstein ellipse of `[u1, u2]` on which the error of
+    /// `narrow_rule` reaches round-off ([`GaussLegendre::min_rho`]). A slender body
+    /// (C << A m R^2) has a branch point of g about `C (A + m h_p^2) / (2 A m R^2)` beyond each
+    /// pole: with I3 = 1e-3, I1 = 0.4, 1.9e-3, where one 8-point rule over a nutation of width
+    /// 0.055 next to the pole left P 1e-3 off, unseen by the series (the state at t = 0 was
+    /// 1.6e-3 off, estimated 4e-14).
+    narrow: bool,
     /// Where Q is not analytic ([`Reduction::singularities`]), in u.
     singularities: Vec<(f64, f64)>,
     /// The same in the distance `x = 1 - p u` from the top and the bottom pole.
@@ -135,8 +173,8 @@ pub struct Nutation {
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
-    /// `c_p = p N(p) f(p) / (2 A R)` of the part of `dpsi/dsigma` singular there (see
-    /// `pole_angle`).
+    /// `c_p = p N(p) f(p) / (2 A R)` of the part of `dpsi/dsigma` singular there (that of
+    /// `dphi/dsigma` is `-p c_p`; see `pole_angles`).
     poles: Vec<(f64, f64)>,
     /// psi - Psi(sigma) on the initial period.
     psi_ref: f64,
@@ -153,7 +191,9 @@ pub enum Motion {
     Steady {
         /// gamma3 = cos theta.
         u: f64,
-        /// d psi / dt.
+        /// d psi / dt, in radians per unit of the problem's time: the rate of the azimuth of
+        /// gamma about e3 in the body frame, not the precession of the symmetry axis in space
+        /// ([`ExactSolution::axis_precession_rate`]).
         precession: f64,
         /// The initial state.
         initial: State,
@@ -162,12 +202,14 @@ pub enum Motion {
     Nutation(Nutation),
 }
 
-/// The exact solution of (mg-eq) for the Routh sphere through one initial state.
+/// The exact solution of (mg-eq) for the Routh sphere through one initial state, all its
+/// numbers in the problem's units (those of the body and the state given).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExactSolution {
     /// The body.
     pub body: Body,
-    /// The integrals that fix the motion.
+    /// The integrals that fix the motion, in the problem's units (the decisions are taken on
+    /// those of the dimensionless problem, which the nutation holds).
     pub reduction: Reduction,
     /// Steady motion or nutation.
     pub motion: Motion,
@@ -188,14 +230,25 @@ pub struct ExactSolution {
 pub struct Accuracy {
     /// Relative error at t = 0 and for |t| within one period.
     pub initial: f64,
-    /// Growth of the relative error per unit time.
+    /// Growth of the relative error per unit of the problem's time.
     pub drift: f64,
-    /// Exponential growth rate (unstable relative equilibria).
+    /// Exponential growth rate (unstable relative equilibria), per unit of the problem's time.
     pub growth: f64,
 }
 
 impl Accuracy {
-    /// The estimated relative error above which a state is reported with a warning.
+    /// This accuracy of a dimensionless problem (rates per its unit of time `time`) in the
+    /// problem's units: the rates divided by `time`.
+    fn in_time_unit(self, time: f64) -> Self {
+        Accuracy {
+            initial: self.initial,
+            drift: self.drift / time,
+            growth: self.growth / time,
+        }
+    }
+
+    /// The estimated relative error above which a state is reported with a warning (relative:
+    /// the same in any units).
     pub const WARNING: f64 = 1e-8;
     /// The estimated relative error above which a state is refused (`RouthError::Horizon`).
     /// The estimate is conservative: on the test cases the measured error is 3 to 30 times
@@ -229,7 +282,8 @@ impl Accuracy {
     }
 
     /// The largest |t| at which the estimated error stays below `tolerance` (bisection on the
-    /// monotone `error_at`).
+    /// monotone `error_at`, bracketed from the time `1 / (drift + growth)` in which the error
+    /// changes: a time of the problem, so the search is the same in any units).
     pub fn horizon(&self, tolerance: f64) -> f64 {
         if self.error_at(0.0) > tolerance {
             return 0.0;
@@ -237,12 +291,12 @@ impl Accuracy {
         if self.drift == 0.0 && self.growth == 0.0 {
             return f64::INFINITY;
         }
-        let mut hi = 1.0;
-        while self.error_at(hi) <= tolerance {
+        let mut hi = (self.drift + self.growth).recip();
+        while hi.is_finite() && self.error_at(hi) <= tolerance {
             hi *= 2.0;
-            if hi > 1e300 {
-                return f64::INFINITY;
-            }
+        }
+        if !hi.is_finite() {
+            return f64::INFINITY;
         }
         let mut lo = 0.0;
         for _ in 0..200 {
@@ -265,6 +319,15 @@ fn rotated(state: &State, angle: f64) -> State {
         gamma: rot(state.gamma),
         m: rot(state.m),
     }
+}
+
+/// The rate of the azimuth phi of the symmetry axis e3 in space at `state`,
+/// `dphi/dt = -(omega1 gamma1 + omega2 gamma2) / (gamma1^2 + gamma2^2)` (docs/quadrature.md,
+/// section 3); `None` on the axis (gamma = +-e3), where e3 is vertical.
+fn axis_rate(body: &Body, state: &State) -> Option<f64> {
+    let (gamma, omega) = (state.gamma, state.omega(body));
+    let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
+    (horizontal > 0.0).then(|| -(omega[0] * gamma[0] + omega[1] * gamma[1]) / horizontal)
 }
 
 /// A turning point u of Q and its distance `gap = 1 - |u|` from the pole on its side, found
@@ -410,8 +473,10 @@ fn refine_gap(red: &Reduction, pole: f64, gap: f64) -> f64 {
 
 /// How far a state is from a relative equilibrium (a steady motion rotating about e3 at a
 /// constant rate Omega, `X(x) = Omega L x`, `L x = (e3 x gamma, e3 x M)`): the component of the
-/// field (mg-eq) orthogonal to `L x`, relative to `|J| |x|`, with the fitted Omega.
-fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64, SMatrix<f64, 6, 6>) {
+/// field (mg-eq) orthogonal to `L x`, relative to `|J| |x|`, with the fitted Omega. Only in the
+/// units of the problem ([`Units`]), where gamma and M, and the components of the field, are
+/// numbers of the same scale: `|x|` and the fit of Omega add them.
+fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64) {
     let x = state.to_array();
     let (field, jac) = jacobian(|y| vector_field(body, y), &x);
     let lx = [-x[1], x[0], 0.0, -x[4], x[3], 0.0];
@@ -424,12 +489,23 @@ fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64, SMatr
         .map(|(f, l)| (f - omega * l).powi(2))
         .sum::<f64>()
         .sqrt();
+    // |x| >= |gamma| = 1 and J != 0 (dgamma/dt = gamma x I_Q^-1 M): no division by 0.
     let size = x.iter().map(|v| v * v).sum::<f64>().sqrt();
-    (
-        residual / (jac.norm() * size).max(f64::MIN_POSITIVE),
-        omega,
-        jac,
-    )
+    (residual / (jac.norm() * size), omega)
+}
+
+/// The relative error with which a state fixes its angular velocity, `omega = I_Q^-1 M`
+/// (om-m): `eps` times the condition number of `I_Q = I + m (|r|^2 - r r^T)`, whose
+/// eigenvalues lie between `min(I1, I3)` and `max(I1, I3) + m |r|^2` (a ratio of moments:
+/// the same in any units). About 5 eps for the default body; 2.8e-9 with m = 3e6 (the state
+/// fixes the spin about r, `(I omega, r) / |r|`, only to the rounding of the much larger
+/// `m |r|^2 |omega|`), and more than 1 with m = 1e30, where omega computed from M came out
+/// [-1.62, 0.2, -1.01] for the case's (0.5, 0.2, 8).
+fn omega_round_off(body: &Body, state: &State) -> f64 {
+    let r = body.contact_vector(&state.gamma);
+    let r2: f64 = r.iter().map(|c| c * c).sum();
+    let (smallest, largest) = (body.i1().min(body.i3()), body.i1().max(body.i3()));
+    f64::EPSILON * (largest + body.m() * r2) / smallest
 }
 
 impl ExactSolution {
@@ -444,26 +520,73 @@ impl ExactSolution {
     ///   amplitude), and a separatrix when Q'' >= 0;
     /// * a turning point that the round-off of Q (from its own terms and from the integrals)
     ///   moves by more than its distance to the next root of the local quadratic of Q
-    ///   (`Q'^2 <= noise |Q''|`) is a double root: a separatrix.
+    ///   (`Q'^2 <= noise |Q''|`), or where Q' is within its round-off of 0, is a double root:
+    ///   a separatrix;
+    /// * a state that fixes its angular velocity only to more than `Accuracy::REFUSAL`
+    ///   (`omega_round_off`: the moments far below `m R^2`) is refused; below that, its
+    ///   error of omega makes the estimated error grow with t.
+    ///
+    /// The body and the state are made dimensionless here, once ([`Units`], rounded to powers
+    /// of two so that the conversion is exact: the state of a motion 1e-12 off a separatrix,
+    /// rounded into units of other significands, had its period moved by 2.5e-5), the motion
+    /// is decided and solved in those units, and its numbers are converted back: times
+    /// multiplied by T, rates divided by T; angles and gamma as they are.
     pub fn new(body: &Body, initial: &State) -> Result<Self> {
         require_finite_inertia(body)?;
+        let units = Units::of(body, &initial.omega(body)).binary();
+        let (motion, accuracy) = Self::solve(&units.body(body)?, &units.state(initial), units)?;
+        let motion = match motion {
+            Motion::Steady { u, precession, .. } => Motion::Steady {
+                u,
+                precession: precession / units.time(),
+                initial: *initial,
+            },
+            nutation => nutation,
+        };
+        Ok(ExactSolution {
+            body: *body,
+            reduction: Reduction::of_state(body, initial)?,
+            motion,
+            accuracy: accuracy.in_time_unit(units.time()),
+        })
+    }
+
+    /// The motion through `initial` of the dimensionless problem (`body` and `initial` in
+    /// `units`: R = m = 1, and the faster of the fall and the spin 1) and its accuracy, in
+    /// those units; a nutation reports its own numbers in the problem's units ([`Nutation`]).
+    fn solve(body: &Body, initial: &State, units: Units) -> Result<(Motion, Accuracy)> {
+        let conditioning = omega_round_off(body, initial);
+        if !(conditioning <= Accuracy::REFUSAL) {
+            return Err(RouthError::Singular {
+                formula: "omega = I_Q^-1 M (om-m)",
+                reason: format!(
+                    "the state fixes omega only to {conditioning:.1e} (relative): the moments \
+                     I1 = {:e}, I3 = {:e} are too small beside m |r|^2 for the digits of M",
+                    body.i1(),
+                    body.i3()
+                ),
+            });
+        }
         let red = Reduction::of_state(body, initial)?;
         let (_, errors) = red.frames_of_state(initial);
         let u0 = initial.gamma[2];
-        let steady = |u: f64, precession: f64, accuracy: Accuracy| ExactSolution {
-            body: *body,
-            reduction: red,
-            motion: Motion::Steady {
-                u,
-                precession,
-                initial: *initial,
-            },
-            accuracy,
+        let steady = |u: f64, precession: f64, accuracy: Accuracy| {
+            let initial = *initial;
+            (
+                Motion::Steady {
+                    u,
+                    precession,
+                    initial,
+                },
+                accuracy,
+            )
         };
-        let (deviation, omega_fit, _) = relative_equilibrium_residual(body, initial);
+        let (deviation, omega_fit) = relative_equilibrium_residual(body, initial);
         if deviation <= RELATIVE_EQUILIBRIUM_EPSILONS * f64::EPSILON {
             let (lambda, norm) = max_real_eigenvalue(body, initial, omega_fit)?;
-            let unstable = lambda > EIGENVALUE_TOLERANCE * norm.max(1.0);
+            // `norm` is that of the Jacobian, a rate in the units of the motion
+            // ([`max_real_eigenvalue`]): the tolerance is relative, as in `steady`.
+            let unstable = lambda > EIGENVALUE_TOLERANCE * norm;
             let accuracy = if unstable {
                 Accuracy {
                     initial: deviation,
@@ -473,7 +596,7 @@ impl ExactSolution {
             } else {
                 Accuracy {
                     initial: deviation,
-                    drift: (deviation + f64::EPSILON) * omega_fit.abs(),
+                    drift: (deviation + conditioning) * omega_fit.abs(),
                     growth: 0.0,
                 }
             };
@@ -491,11 +614,27 @@ impl ExactSolution {
         } else {
             turnings.lower.gap
         } + 0.5 * width;
+        let omega = initial.omega(body);
+        let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
         let noise_mid = red.q_noise(mid, errors).max(red.q_noise(u0, errors));
         if red.q_from_pole(pole, x_mid).max(red.q_from_pole(pole, x0)) <= 4.0 * noise_mid {
             // The search separates turning points only beyond its first step.
-            return Self::unresolved_nutation(&red, u0, width + turnings.first_step, noise_mid)
-                .map(|(rate, accuracy)| steady(u0, rate, accuracy));
+            let searched = width + turnings.first_step;
+            // du/dt at the start with its round-off: that of its two products, and the
+            // error of omega.
+            let horizontal = initial.gamma[0].hypot(initial.gamma[1]);
+            let udot_bound = udot0.abs()
+                + f64::EPSILON * (initial.gamma[0] * omega[1]).abs()
+                + f64::EPSILON * (initial.gamma[1] * omega[0]).abs()
+                + conditioning * horizontal * omega[0].hypot(omega[1]).hypot(omega[2]);
+            return Self::unresolved_nutation(
+                &red,
+                u0,
+                [searched, udot_bound],
+                [noise_mid, red.q_slope_noise(u0, errors)],
+                conditioning,
+            )
+            .map(|(rate, accuracy)| steady(u0, rate, accuracy));
         }
         let turnings = Turnings {
             lower: turnings.lower.snapped(-1.0),
@@ -506,28 +645,32 @@ impl ExactSolution {
         for u in [u1, u2] {
             let (_, dq, q2) = red.q_derivatives(u);
             let noise = red.q_noise(u, errors);
+            let slope_noise = red.q_slope_noise(u, errors);
             let shift = noise / dq.abs();
             // Near u_i, Q = Q' (u - u_i) + Q''/2 (u - u_i)^2 has its other root at
             // -2 Q'/Q'' from u_i; when the round-off of Q moves u_i by more than that
             // (Q'^2 <= noise |Q''|) the two roots are one double root within the accuracy of
             // the integrals: the level set is a separatrix, and which side the motion lies on
-            // is not decided by the integrals.
-            if !(dq * dq > SEPARATRIX_MARGIN * noise * q2.abs()) {
+            // is not decided by the integrals. So is a turning point where Q' is within its
+            // own round-off of 0: at a pole through which the motion passes (`n_p = 0`) every
+            // term of Q vanishes with its round-off, and only that of Q' tells the homoclinic
+            // orbit of the vertical spin (Q'(p) = 0) from a motion through the axis.
+            if !(dq * dq > SEPARATRIX_MARGIN * noise * q2.abs())
+                || !(dq.abs() > SEPARATRIX_MARGIN * slope_noise)
+            {
                 return Err(RouthError::Separatrix {
                     u_min: u1,
                     u_max: u2,
                     reason: format!(
                         "Q has a double root at the turning point {u} within the accuracy of \
-                         the integrals (dQ/du = {dq:e}, d2Q/du2 = {q2:e}, round-off of Q \
-                         {noise:e})"
+                         the integrals (dQ/du = {dq:e} with round-off {slope_noise:e}, \
+                         d2Q/du2 = {q2:e}, round-off of Q {noise:e})"
                     ),
                 });
             }
             root_error += shift / width;
         }
-        let omega = initial.omega(body);
-        let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
-        let mut nutation = Nutation::new(red, &turnings, initial, udot0)?;
+        let mut nutation = Nutation::new(red, &turnings, initial, udot0, units)?;
         match Self::sensitivity(&nutation, (pole, x_mid), mid, errors, initial, udot0) {
             Some((period, advance)) => {
                 nutation.period_error += period;
@@ -538,44 +681,43 @@ impl ExactSolution {
                 nutation.advance_error += root_error * nutation.advance.abs();
             }
         }
-        // The state moves at `velocity` (relative sizes: gamma against 1, M against |M| of the
-        // initial state), so a time error dt = T dT/T per period moves it by `velocity dt`; an
-        // error of psi rotates its horizontal part. Both vary along the nutation: their largest
-        // values at the turning points, the quarter phases and the widest tilt are taken.
-        let m_size = initial
-            .m
-            .iter()
-            .map(|v| v * v)
-            .sum::<f64>()
-            .sqrt()
-            .max(f64::MIN_POSITIVE);
-        let size = |v: &[f64], scale: f64| v.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
+        // The state moves at `velocity` (relative sizes: gamma against 1, M against the size
+        // of M of the initial state), so a time error dt = T dT/T per period moves it by
+        // `velocity dt`; an error of psi rotates its horizontal part. Both vary along the
+        // nutation: their largest values at the turning points, the quarter phases and the
+        // widest tilt are taken.
+        let size = |v: &[f64]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
         let widest = (0.5 * (u1 + u2) / (0.5 * width)).clamp(-1.0, 1.0).acos();
-        let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
-        for sigma in [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0] {
+        let states = [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0].map(|sigma| {
             let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
-            let x = State {
+            State {
                 gamma,
                 m: body.angular_momentum(&gamma, &omega),
             }
-            .to_array();
-            let field = vector_field(body, &x);
-            velocity = velocity.max(size(&field[..3], 1.0) + size(&field[3..], m_size));
-            horizontal = horizontal.max(size(&x[..2], 1.0) + size(&x[3..5], m_size));
+            .to_array()
+        });
+        // A start at rest (M = 0) has no size of M of its own: then the largest along the
+        // nutation, the scale of M in this motion.
+        let m_size = match size(&initial.m) {
+            start if start > 0.0 => start,
+            _ => states.iter().map(|x| size(&x[3..])).fold(0.0, f64::max),
+        };
+        let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
+        for x in &states {
+            let field = vector_field(body, x);
+            velocity = velocity.max(size(&field[..3]) + size(&field[3..]) / m_size);
+            horizontal = horizontal.max(size(&x[..2]) + size(&x[3..5]) / m_size);
         }
-        let per_period = velocity * nutation.period * nutation.period_error
-            + horizontal * nutation.advance_error;
+        let period = nutation.cycle();
+        let per_period =
+            velocity * period * nutation.period_error + horizontal * nutation.advance_error;
+        // The error of omega from the state moves it at that relative error of its speed.
         let accuracy = Accuracy {
             initial: per_period,
-            drift: per_period / nutation.period,
+            drift: per_period / period + conditioning * velocity,
             growth: 0.0,
         };
-        Ok(ExactSolution {
-            body: *body,
-            reduction: red,
-            motion: Motion::Nutation(nutation),
-            accuracy,
-        })
+        Ok((Motion::Nutation(nutation), accuracy))
     }
 
     /// How much the round-off of the integrals changes the period and the advance: the
@@ -616,7 +758,7 @@ impl ExactSolution {
             upper: turnings.upper.snapped(1.0),
             ..turnings
         };
-        let alt = Nutation::new(other, &turnings, initial, udot0).ok()?;
+        let alt = Nutation::new(other, &turnings, initial, udot0, nutation.units).ok()?;
         Some((
             (alt.period - nutation.period).abs() / (k * nutation.period),
             (alt.advance - nutation.advance).abs() / k,
@@ -625,16 +767,28 @@ impl ExactSolution {
 
     /// A nutation whose whole amplitude lies within the round-off `noise` of Q near `u0`: a
     /// stable relative equilibrium when `Q''(u0) < 0` (the rate `dpsi/dt` at u0, the error
-    /// bounded by the amplitude that Q cannot resolve, `sqrt(8 noise / |Q''|)`, seen in gamma);
-    /// otherwise the state lies on a separatrix within that round-off.
+    /// bounded by the amplitude of the nutation, seen in gamma, and the rate's error by its
+    /// change over that amplitude and the relative error `conditioning` of omega); otherwise
+    /// the state lies on a separatrix within that round-off. The amplitude is bounded twice,
+    /// and the smaller bound taken: by the width `searched` of the turning points found plus
+    /// the amplitude that Q cannot resolve, `sqrt(8 noise / |Q''|)`; and by the roots of the
+    /// local quadratic `udot0^2 + Q' (u - u0) + Q''/2 (u - u0)^2`, within
+    /// `2 sqrt(Q'^2 + 2 |Q''| udot0^2) / |Q''|` of u0, with `|Q'|` raised by its round-off
+    /// `slope_noise` and `udot0` bounded by `udot_bound`: Q' and du/dt carry the round-off of
+    /// the state, where Q carries its square (a state 1e-11 from the steady precession of a
+    /// spin of 1e6 had the first bound 1e-8, and an error of 2e-3 estimated at t = 0.01).
     fn unresolved_nutation(
         red: &Reduction,
         u0: f64,
-        amplitude: f64,
-        noise: f64,
+        [searched, udot_bound]: [f64; 2],
+        [noise, slope_noise]: [f64; 2],
+        conditioning: f64,
     ) -> Result<(f64, Accuracy)> {
-        let (_, _, q2) = red.q_derivatives(u0);
-        let du = amplitude + (8.0 * noise / q2.abs()).sqrt();
+        let (_, q1, q2) = red.q_derivatives(u0);
+        let slope = q1.abs() + slope_noise;
+        let local = 2.0 * (slope * slope + 2.0 * q2.abs() * udot_bound * udot_bound).sqrt()
+            / q2.abs();
+        let du = (searched + (8.0 * noise / q2.abs()).sqrt()).min(local);
         if !(q2 < 0.0) {
             return Err(RouthError::Separatrix {
                 u_min: u0 - du,
@@ -657,7 +811,7 @@ impl ExactSolution {
         };
         let lo = (u0 - du).max(-1.0 + f64::EPSILON);
         let hi = (u0 + du).min(1.0 - f64::EPSILON);
-        let rate_error = (rate(hi) - rate(lo)).abs() + f64::EPSILON * rate(u0).abs();
+        let rate_error = (rate(hi) - rate(lo)).abs() + conditioning * rate(u0).abs();
         Ok((
             rate(u0),
             Accuracy {
@@ -676,7 +830,19 @@ impl ExactSolution {
                 initial,
                 ..
             } => rotated(initial, precession * t),
-            Motion::Nutation(nut) => nut.state_at(&self.body, t),
+            Motion::Nutation(nut) => nut.state_at(t),
+        }
+    }
+
+    /// The rate of the azimuth phi of the symmetry axis e3 in space (the fixed frame, z up,
+    /// measured from x toward y) of a steady motion, in radians per unit of the problem's time:
+    /// `dphi/dt = -(omega1 gamma1 + omega2 gamma2) / (gamma1^2 + gamma2^2)` (docs/quadrature.md,
+    /// section 3), constant along it. `None` for a nutation (see [`Nutation::axis_advance`])
+    /// and for the vertical spin, whose axis is vertical and has no azimuth.
+    pub fn axis_precession_rate(&self) -> Option<f64> {
+        match &self.motion {
+            Motion::Steady { initial, .. } => axis_rate(&self.body, initial),
+            Motion::Nutation(_) => None,
         }
     }
 
@@ -739,6 +905,21 @@ impl Phase {
         }
     }
 
+    /// The pole of u's hemisphere, the distance `x = 1 - p u` from it and `1 + p u`.
+    fn nearest_pole(&self) -> (f64, f64, f64) {
+        if self.one_minus <= self.one_plus {
+            (1.0, self.one_minus, self.one_plus)
+        } else {
+            (-1.0, self.one_plus, self.one_minus)
+        }
+    }
+
+    /// The spin omega3 at the phase, from its distance to the nearest pole.
+    fn spin(&self, red: &Reduction) -> f64 {
+        let (pole, x, _) = self.nearest_pole();
+        red.spin_in_frame(pole, x)
+    }
+
     /// `1 - p u` for a pole `p = +-1`.
     fn one_minus_pole(&self, pole: f64) -> f64 {
         if pole > 0.0 {
@@ -750,11 +931,20 @@ impl Phase {
 }
 
 impl Nutation {
-    fn new(red: Reduction, turnings: &Turnings, initial: &State, udot0: f64) -> Result<Self> {
+    /// The nutation of the dimensionless problem of `red` (in `units`) between `turnings`,
+    /// through `initial` (dimensionless) moving at `udot0 = d gamma3 / dt`.
+    fn new(
+        red: Reduction,
+        turnings: &Turnings,
+        initial: &State,
+        udot0: f64,
+        units: Units,
+    ) -> Result<Self> {
         let (lower, upper) = (turnings.lower, turnings.upper);
         let (u1, u2) = (lower.u, upper.u);
         let mut nut = Nutation {
             reduction: red,
+            units,
             u1,
             u2,
             gap_bottom: lower.gap,
@@ -764,12 +954,14 @@ impl Nutation {
             through_bottom: lower.gap == 0.0,
             period: 0.0,
             advance: 0.0,
+            axis_advance: 0.0,
             nodes: 0,
             period_error: 0.0,
             advance_error: 0.0,
             series: Piecewise::default(),
             rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
             narrow_rule: GaussLegendre::new(NARROW_NODES),
+            narrow: false,
             singularities: red.singularities(),
             frame_singularities: [1.0, -1.0].map(|pole| {
                 red.singularities()
@@ -784,11 +976,17 @@ impl Nutation {
             psi_ref: 0.0,
             poles: vec![],
         };
+        nut.narrow = nut.width <= WIDE_NUTATION
+            && nut
+                .singularities
+                .iter()
+                .all(|&z| bernstein_rho(u1, u2, z) >= nut.narrow_rule.min_rho());
         // The rate `dpsi/dt = N(u) / (2 A R) [1/(1 - u) - 1/(1 + u)] - omega3` has poles at
         // u = +-1, outside the nutation but close to it when the motion passes near the axis:
         // they would make psi turn too fast for a cosine series. Their parts
         // `c_p / (1 - p u)` with `c_p = p N(p) f(p) / (2 A R)` are subtracted from the samples
-        // and integrated in closed form (`pole_angle`); the remainder is smooth.
+        // and integrated in closed form (`pole_angles`); the remainder is smooth. So are those
+        // of `dphi/dt = -N(u) / (2 A R) [1/(1 - u) + 1/(1 + u)]`, `-p c_p / (1 - p u)`.
         for (pole, through) in [(1.0, nut.through_top), (-1.0, nut.through_bottom)] {
             let (p, _) = nut.cofactor_with_noise(&Phase::at_pole(pole));
             if !through && p > 0.0 && p.is_finite() {
@@ -806,10 +1004,10 @@ impl Nutation {
                 let n = unresolved.samples;
                 return Err(if unresolved.time_converged {
                     RouthError::Singular {
-                        formula: "the precession angle psi",
+                        formula: "the precession angles psi (of gamma) and phi (of the axis)",
                         reason: format!(
                             "the motion passes so close to the axis (gamma3 up to {u2}, down to \
-                             {u1}) that psi turns too fast to resolve with {n} samples"
+                             {u1}) that they turn too fast to resolve with {n} samples"
                         ),
                     }
                 } else {
@@ -826,11 +1024,20 @@ impl Nutation {
             }
         };
         nut.nodes = series.nodes;
-        nut.period = series.full_integral(0);
-        nut.advance = series.full_integral(1) + nut.pole_angle(TAU);
+        let period = series.full_integral(0);
+        nut.period = period * units.time();
+        let [psi_poles, phi_poles] = nut.pole_angles(TAU);
+        nut.advance = series.full_integral(1) + psi_poles;
+        // The series follow the continuation with a signed sin theta through a pole, where the
+        // azimuth itself turns by pi.
+        let continued = series.full_integral(2) + phi_poles;
+        nut.axis_advance = match u8::from(nut.through_top) + u8::from(nut.through_bottom) {
+            0 => continued,
+            passages => (continued + f64::from(passages) * PI).rem_euclid(TAU),
+        };
         // T and the advance are twice the half integrals: their errors are twice the
         // truncation plus the round-off of the samples.
-        nut.period_error = 2.0 * (series.truncation[0] + series.noise[0]) / nut.period;
+        nut.period_error = 2.0 * (series.truncation[0] + series.noise[0]) / period;
         nut.advance_error = 2.0 * (series.truncation[1] + series.noise[1]);
         nut.series = series;
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
@@ -860,15 +1067,13 @@ impl Nutation {
         }
         nut.sigma0 = sigma0;
         // psi_ref: the rotation about e3 that takes the state of phase sigma0 at psi = 0 to
-        // the initial state, fitted on the horizontal parts of gamma and omega (so it is
-        // defined on the axis too, where gamma has no horizontal part).
+        // the initial state, fitted on the horizontal parts of gamma and of omega / |omega|
+        // (so it is defined on the axis too, where gamma has no horizontal part; a start at
+        // rest fits gamma alone).
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
         let omega = initial.omega(red.body());
-        let w2 = omega
-            .iter()
-            .map(|w| w * w)
-            .sum::<f64>()
-            .max(f64::MIN_POSITIVE);
+        let w2: f64 = omega.iter().map(|w| w * w).sum();
+        let weight = if w2 > 0.0 { w2.recip() } else { 0.0 };
         let cross_dot = |a: [f64; 3], b: [f64; 3], w: f64| {
             (
                 w * (a[0] * b[1] - a[1] * b[0]),
@@ -876,7 +1081,7 @@ impl Nutation {
             )
         };
         let (y1, x1) = cross_dot(model_gamma, initial.gamma, 1.0);
-        let (y2, x2) = cross_dot(model_omega, omega, 1.0 / w2);
+        let (y2, x2) = cross_dot(model_omega, omega, weight);
         nut.psi_ref = (y1 + y2).atan2(x1 + x2);
         Ok(nut)
     }
@@ -888,7 +1093,8 @@ impl Nutation {
     /// between the two halves of the nutation, a jump no series resolves. Computed without
     /// dividing Q by a small distance:
     ///
-    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
+    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`, or a singularity of Q within the reach
+    ///   of the narrow rule, see `Nutation::narrow`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
     ///   the half of the nutation next to `u2` the near difference `Q[u, u2]` is the mean of
     ///   `dQ/dx` between the turning point and u in the frame of the top pole
     ///   (`x = 1 - u` from the phase, [`Reduction::q_in_frame`]), and the far one is
@@ -901,16 +1107,16 @@ impl Nutation {
     ///   and they meet at `sigma = pi/2`, the boundary between the two sides of the panels.
     /// * a narrow one: by Hermite-Genocchi, `Q[u1, u, u2] =
     ///   int_0^1 int_0^1 s Q''(u1 + s (u - u1) + s t (u2 - u)) dt ds`, whose round-off does
-    ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`).
+    ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`), in the
+    ///   distance from the nearer pole.
     ///
     /// Q' and Q'' by automatic differentiation, the integrals by Gauss-Legendre. Also returns
     /// the relative round-off of P: `eps` times the magnitudes of the terms of Q and of their
     /// slopes (curvatures), against P.
     fn cofactor_with_noise(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
-        let (u1, u2) = (self.u1, self.u2);
         let width = self.width;
-        if width > WIDE_NUTATION {
+        if !self.narrow {
             // x: the distance of u from the pole on the phase's side; x_end that of the
             // turning point there; far: the distance of u from the other turning point.
             let (pole, x, x_end, far) = if phase.upper {
@@ -944,13 +1150,24 @@ impl Nutation {
                 f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),
             )
         } else {
-            let u = phase.u;
-            let p = -self.narrow_rule.integrate(|s| {
-                s * self
-                    .narrow_rule
-                    .integrate(|t| red.q_derivatives(u1 + s * (u - u1) + s * t * (u2 - u)).2)
+            // In the distance x from the pole nearer to the nutation (x = 1 - p u, so
+            // `Q[u1, u, u2] = Q[x1, x, x2]`), with the turning points at its gap and the gap
+            // plus the width, and x from the phase: u itself rounds x to `eps`, which moved P
+            // by 4e-13 at each rounding of u (I3 = 1e-4, a nutation 1.8e-12 from the pole,
+            // where Q'' changes on the scale 1e-4 of x) and stopped the series.
+            let (pole, near, x) = if self.gap_top <= self.gap_bottom {
+                (1.0, self.gap_top, phase.one_minus)
+            } else {
+                (-1.0, self.gap_bottom, phase.one_plus)
+            };
+            let far = near + width;
+            let rule = &self.narrow_rule;
+            let p = -rule.integrate(|s| {
+                s * rule.integrate(|t| {
+                    red.q_curvature_in_frame(pole, near + s * (x - near) + s * t * (far - x))
+                })
             });
-            (p, f64::EPSILON * red.q_curvature_scale(u) / p.abs())
+            (p, f64::EPSILON * red.q_curvature_scale(phase.u) / p.abs())
         }
     }
 
@@ -988,29 +1205,41 @@ impl Nutation {
             });
         }
         let f = p.sqrt().recip();
-        let (quotient, quotient_scale) = self.jellett_quotient(&phase);
-        let rate = red.precession_from_quotient(phase.u, quotient);
-        // Round-off of the rate: its two terms, and the terms of Jellett's quotient.
-        let b = red.body();
-        let spin = red.spin(phase.u);
-        let rate_noise = f64::EPSILON
-            * ((phase.u * quotient).abs() / (b.i1() * b.radius())
-                + spin.abs()
-                + quotient_scale / (b.i1() * b.radius()));
         let f_noise = 0.5 * f * p_noise;
-        let singular: f64 = self
-            .poles
-            .iter()
-            .map(|(pole, c)| c / phase.one_minus_pole(*pole))
-            .sum();
-        // The difference `rate f - singular` of two large numbers near a pole rounds both.
-        let difference_noise = 2.0 * f64::EPSILON * ((rate * f).abs() + singular.abs());
-        Ok(Sample {
-            values: [f, rate * f - singular],
-            noise: [
-                f_noise,
+        let (quotient, quotient_scale) = self.jellett_quotient(&phase);
+        let b = red.body();
+        let ar = b.i1() * b.radius();
+        // `rate f` less the pole parts `sum strength(p, c_p) / (1 - p u)`, and its round-off
+        // from that of the rate (`rate_noise`), of f, and of the difference of two large
+        // numbers near a pole, which rounds both.
+        let angle = |rate: f64, rate_noise: f64, strength: &dyn Fn(f64, f64) -> f64| {
+            let singular: f64 = self
+                .poles
+                .iter()
+                .map(|&(pole, c)| strength(pole, c) / phase.one_minus_pole(pole))
+                .sum();
+            let difference_noise = 2.0 * f64::EPSILON * ((rate * f).abs() + singular.abs());
+            (
+                rate * f - singular,
                 rate.abs() * f_noise + rate_noise * f + difference_noise,
-            ],
+            )
+        };
+        // dpsi/dt, rounded in its two terms and in those of Jellett's quotient.
+        let spin = phase.spin(red);
+        let (psi, psi_noise) = angle(
+            red.precession_from_quotient(phase.u, quotient, spin),
+            f64::EPSILON * (((phase.u * quotient).abs() + quotient_scale) / ar + spin.abs()),
+            &|_, c| c,
+        );
+        // dphi/dt = -N / (A R (1 - u^2)), rounded in the terms of Jellett's quotient.
+        let (phi, phi_noise) = angle(
+            -quotient / ar,
+            f64::EPSILON * quotient_scale / ar,
+            &|pole, c| -pole * c,
+        );
+        Ok(Sample {
+            values: [f, psi, phi],
+            noise: [f_noise, psi_noise, phi_noise],
         })
     }
 
@@ -1025,10 +1254,11 @@ impl Nutation {
     /// factor x is divided out exactly: `N / (1 - u^2) = C K J(x) / (1 + p u)`.
     fn jellett_quotient(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
-        let (pole, x, other, through) = if phase.one_minus <= phase.one_plus {
-            (1.0, phase.one_minus, phase.one_plus, self.through_top)
+        let (pole, x, other) = phase.nearest_pole();
+        let through = if pole > 0.0 {
+            self.through_top
         } else {
-            (-1.0, phase.one_plus, phase.one_minus, self.through_bottom)
+            self.through_bottom
         };
         let divided = red.jellett_divided(pole, x) * (red.body().i3() * red.k());
         if through {
@@ -1043,15 +1273,15 @@ impl Nutation {
         }
     }
 
-    /// The part of psi from the poles subtracted from the series: `sum_p c_p J_p(sigma)` with
+    /// The parts of psi and of phi from the poles subtracted from the series:
+    /// `sum_p c_p J_p(sigma)` and `-sum_p p c_p J_p(sigma)` with
     /// `J_p(sigma) = int_0^sigma dsigma' / (1 - p u(sigma'))`, `1 - p u = a + b cos sigma`,
     /// `a = 1 - p mid`, `b = p half`, in closed form
     /// `J = 2 / sqrt(a^2 - b^2) atan(sqrt((a - b)/(a + b)) tan(sigma/2))` (plus pi past
     /// sigma = pi), with `a - b = 1 - p u2`, `a + b = 1 - p u1` computed without cancellation.
-    fn pole_angle(&self, sigma: f64) -> f64 {
-        self.poles
-            .iter()
-            .map(|&(pole, c)| {
+    fn pole_angles(&self, sigma: f64) -> [f64; 2] {
+        self.poles.iter().fold([0.0; 2], |[psi, phi], &(pole, c)| {
+            let part = {
                 let (minus, plus) = if pole > 0.0 {
                     (self.gap_top, self.gap_top + self.width)
                 } else {
@@ -1065,8 +1295,9 @@ impl Nutation {
                     j += PI;
                 }
                 c * 2.0 * (j + turns * PI) / root
-            })
-            .sum()
+            };
+            [psi + part, phi - pole * part]
+        })
     }
 
     /// The tilt at phase `sigma` (in `[0, 2 pi)`); `odd` says the phase is in an odd
@@ -1117,28 +1348,43 @@ impl Nutation {
         let phase = self.phase(local, odd);
         let (f, _) = self.series.value_and_integral(0, local);
         let (_, psi) = self.series.value_and_integral(1, local);
-        let psi = psi + self.pole_angle(local);
+        let [poles, _] = self.pole_angles(local);
+        let psi = psi + poles;
         let psi = psi_shift + psi + (turns * self.advance).rem_euclid(TAU);
-        self.reduction.omega(
+        self.reduction.omega_with_spin(
             phase.u,
             phase.s,
             psi,
             phase.udot_over_s_times_f / f,
             self.jellett_quotient(&phase).0,
+            phase.spin(&self.reduction),
         )
     }
 
-    /// The state at time t after the initial state.
-    pub fn state_at(&self, body: &Body, t: f64) -> State {
+    /// The period in the units of the dimensionless problem.
+    fn cycle(&self) -> f64 {
+        self.series.full_integral(0)
+    }
+
+    /// The mean rate of the azimuth of the symmetry axis in space, `axis_advance / period`
+    /// (radians per unit of the problem's time); `None` for a motion through the axis, whose
+    /// azimuth jumps by pi at each passage and has an advance defined modulo 2 pi only.
+    pub fn axis_mean_rate(&self) -> Option<f64> {
+        (!(self.through_top || self.through_bottom)).then(|| self.axis_advance / self.period)
+    }
+
+    /// The state at time t (in the problem's units) after the initial state.
+    pub fn state_at(&self, t: f64) -> State {
+        let period = self.cycle();
         let (_, t0) = self.series.value_and_integral(0, self.sigma0);
-        let total = t0 + t;
-        let turns = (total / self.period).floor();
-        let tau = (total - turns * self.period).clamp(0.0, self.period);
+        let total = t0 + t / self.units.time();
+        let turns = (total / period).floor();
+        let tau = (total - turns * period).clamp(0.0, period);
         let sigma = self.series.invert_time(tau) + turns * TAU;
         let (gamma, omega) = self.gamma_omega(sigma, self.psi_ref);
-        State {
+        self.units.state_back(&State {
             gamma,
-            m: body.angular_momentum(&gamma, &omega),
-        }
+            m: self.reduction.body().angular_momentum(&gamma, &omega),
+        })
     }
 }

@@ -1,7 +1,8 @@
-//! Piecewise Chebyshev series of the nutation's integrands `dt/dsigma` and `dpsi/dsigma` on
-//! `[0, pi]`, bisected adaptively where they vary fast, with their integrals in closed form.
+//! Piecewise Chebyshev series of the nutation's integrands `dt/dsigma`, `dpsi/dsigma` and
+//! `dphi/dsigma` on `[0, pi]`, bisected adaptively where they vary fast, with their integrals
+//! in closed form.
 //!
-//! Both integrands are even and 2 pi-periodic in sigma (they depend on sigma through
+//! The integrands are even and 2 pi-periodic in sigma (they depend on sigma through
 //! `u = mid - half cos sigma` only), so `[0, pi]` holds all of one nutation:
 //! `F(sigma) = 2 F(pi) - F(2 pi - sigma)` on `(pi, 2 pi)`. Near a separatrix `dt/dsigma`
 //! has a complex singularity at a distance `epsilon` from the real axis next to a turning
@@ -14,6 +15,15 @@ use std::sync::OnceLock;
 
 /// Chebyshev nodes per panel.
 pub const PANEL_NODES: usize = 32;
+/// The number of integrands: the time, the azimuth psi of gamma in the body frame and the
+/// azimuth phi of the symmetry axis in space (see [`crate::quadrature::nutation`]).
+pub const INTEGRANDS: usize = 3;
+/// The integrands whose convergence decides where a panel is bisected: the time and psi. The
+/// third, phi, is carried on their panels (its truncation still counted): its part regular at
+/// the poles is `-(psi_reg + omega3 dt/dsigma + sum_p c_p) / u`, made of the first two and of
+/// smooth functions of u, so it is resolved where they are; letting it bisect too would move
+/// the panels, and the error estimates of the time and psi, of every nutation.
+const DECIDING: usize = 2;
 /// A panel has converged when its last quarter of coefficients is below this, relative to the
 /// largest coefficient (of the panel or of the first panel, whichever is larger), or below the
 /// round-off floor of its samples.
@@ -22,13 +32,13 @@ const SERIES_TOLERANCE: f64 = 2e-14;
 /// resolved by f64 any more.
 const MIN_WIDTH: f64 = 1e-13;
 
-/// The values of the two integrands at one sigma and their estimated round-off.
+/// The values of the integrands at one sigma and their estimated round-off.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
-    /// `dt/dsigma` and `dpsi/dsigma`.
-    pub values: [f64; 2],
+    /// `dt/dsigma`, `dpsi/dsigma` and `dphi/dsigma`.
+    pub values: [f64; INTEGRANDS],
     /// Their absolute round-off.
-    pub noise: [f64; 2],
+    pub noise: [f64; INTEGRANDS],
 }
 
 /// A Chebyshev series `c0/2 + sum_k c_k T_k(x)` on `[-1, 1]` and that of its integral from -1.
@@ -121,14 +131,14 @@ impl Chebyshev {
     }
 }
 
-/// One panel `[lo, hi]` of sigma: the two series in `x = (sigma - mid) / half_width`, and the
-/// integrals of both integrands from 0 to `lo`.
+/// One panel `[lo, hi]` of sigma: the series in `x = (sigma - mid) / half_width`, and the
+/// integrals of the integrands from 0 to `lo`.
 #[derive(Debug, Clone, PartialEq)]
 struct Panel {
     lo: f64,
     hi: f64,
-    series: [Chebyshev; 2],
-    before: [f64; 2],
+    series: [Chebyshev; INTEGRANDS],
+    before: [f64; INTEGRANDS],
 }
 
 impl Panel {
@@ -155,7 +165,7 @@ impl Panel {
 struct Side {
     panels: Vec<Panel>,
     /// The integrals over `[0, pi/2]`.
-    total: [f64; 2],
+    total: [f64; INTEGRANDS],
 }
 
 impl Side {
@@ -199,17 +209,17 @@ impl Side {
     }
 }
 
-/// The two integrands on `[0, pi]`, piecewise, with the error estimates of their integrals.
+/// The integrands on `[0, pi]`, piecewise, with the error estimates of their integrals.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Piecewise {
     left: Side,
     right: Side,
     /// Estimated truncation error of each half integral `int_0^pi` (the panels' tails times
     /// their widths).
-    pub truncation: [f64; 2],
+    pub truncation: [f64; INTEGRANDS],
     /// Estimated round-off of each half integral (the samples' round-off times the weights,
     /// independent from sample to sample, so adding in quadrature).
-    pub noise: [f64; 2],
+    pub noise: [f64; INTEGRANDS],
     /// Number of samples in the panels kept.
     pub nodes: usize,
 }
@@ -217,7 +227,7 @@ pub struct Piecewise {
 /// Why the integrands could not be represented.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Unresolved {
-    /// Whether `dt/dsigma` converged (if so, `dpsi/dsigma` did not).
+    /// Whether `dt/dsigma` converged (if so, an angle's integrand did not).
     pub time_converged: bool,
     /// Samples spent.
     pub samples: usize,
@@ -229,9 +239,9 @@ pub struct Unresolved {
 struct Build {
     budget: usize,
     spent: usize,
-    truncation: [f64; 2],
-    noise2: [f64; 2],
-    scale: Option<[f64; 2]>,
+    truncation: [f64; INTEGRANDS],
+    noise2: [f64; INTEGRANDS],
+    scale: Option<[f64; INTEGRANDS]>,
     /// The DCT matrix and the Chebyshev nodes ([`panel_tables`]).
     matrix: &'static [f64],
     nodes: &'static [f64],
@@ -248,12 +258,12 @@ impl Build {
         let mut panels: Vec<Panel> = vec![];
         while let Some((lo, hi)) = stack.pop() {
             let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-            let mut values = [vec![], vec![]];
-            let (mut floor, mut square) = ([0.0; 2], [0.0; 2]);
+            let mut values: [Vec<f64>; INTEGRANDS] = Default::default();
+            let (mut floor, mut square) = ([0.0; INTEGRANDS], [0.0; INTEGRANDS]);
             let xs: Vec<f64> = self.nodes.iter().map(|x| mid + half * x).collect();
             for &x in &xs {
                 let s = sample(x)?;
-                for i in 0..2 {
+                for i in 0..INTEGRANDS {
                     values[i].push(s.values[i]);
                     floor[i] += s.noise[i];
                     square[i] += s.noise[i] * s.noise[i];
@@ -264,7 +274,7 @@ impl Build {
             // `eps x / SERIES_TOLERANCE` next to a near-singularity.
             for j in 0..PANEL_NODES {
                 let k = if j + 1 < PANEL_NODES { j + 1 } else { j - 1 };
-                for i in 0..2 {
+                for i in 0..INTEGRANDS {
                     let slope = (values[i][k] - values[i][j]) / (xs[k] - xs[j]);
                     let moved = (slope * f64::EPSILON * xs[j]).abs();
                     floor[i] += moved;
@@ -272,18 +282,20 @@ impl Build {
                 }
             }
             self.spent += PANEL_NODES;
-            let series = [0, 1].map(|i| Chebyshev::from_samples(&values[i], self.matrix));
+            let series = values
+                .each_ref()
+                .map(|v| Chebyshev::from_samples(v, self.matrix));
             let global = *self
                 .scale
-                .get_or_insert([series[0].largest(), series[1].largest()]);
+                .get_or_insert(series.each_ref().map(Chebyshev::largest));
             // The coefficients are sums of n samples times 2/n: their noise is at most twice
             // the mean noise of a sample.
             let floor = floor.map(|f| 2.0 * f / PANEL_NODES as f64);
-            let converged = [0, 1].map(|i| {
+            let converged: [bool; INTEGRANDS] = std::array::from_fn(|i| {
                 series[i].tail() <= SERIES_TOLERANCE * series[i].largest().max(global[i]) + floor[i]
             });
-            if converged[0] && converged[1] {
-                for i in 0..2 {
+            if converged[..DECIDING].iter().all(|&c| c) {
+                for i in 0..INTEGRANDS {
                     // The part of the tail above the round-off floor is truncation; the rest
                     // is the samples' round-off, counted (in quadrature) in the noise.
                     self.truncation[i] += 2.0 * half * (series[i].tail() - floor[i]).max(0.0);
@@ -293,7 +305,7 @@ impl Build {
                     lo,
                     hi,
                     series,
-                    before: [0.0; 2],
+                    before: [0.0; INTEGRANDS],
                 });
                 continue;
             }
@@ -311,7 +323,7 @@ impl Build {
             stack.push((mid, hi));
             stack.push((lo, mid));
         }
-        let mut before = [0.0; 2];
+        let mut before = [0.0; INTEGRANDS];
         for p in &mut panels {
             p.before = before;
             let half = 0.5 * (p.hi - p.lo);
@@ -338,8 +350,8 @@ impl Piecewise {
         let mut build = Build {
             budget,
             spent: 0,
-            truncation: [0.0; 2],
-            noise2: [0.0; 2],
+            truncation: [0.0; INTEGRANDS],
+            noise2: [0.0; INTEGRANDS],
             scale: None,
             matrix: &panel_tables().0,
             nodes: &panel_tables().1,
@@ -426,8 +438,8 @@ mod tests {
         // f = 1 / (2 - cos sigma): int_0^{2 pi} = 2 pi / sqrt(3).
         let p = Piecewise::build(10_000, |s: f64, _| {
             Ok::<_, ()>(Sample {
-                values: [1.0 / (2.0 - s.cos()), s.cos()],
-                noise: [0.0; 2],
+                values: [1.0 / (2.0 - s.cos()), s.cos(), s.sin().powi(2)],
+                noise: [0.0; INTEGRANDS],
             })
         })
         .unwrap()
@@ -436,6 +448,7 @@ mod tests {
         let exact = 2.0 * PI / 3f64.sqrt();
         assert!((p.full_integral(0) - exact).abs() < 1e-14);
         assert!(p.full_integral(1).abs() < 1e-14);
+        assert!((p.full_integral(2) - PI).abs() < 1e-14);
         // The integral at a point (closed form 2/sqrt 3 atan(sqrt 3 tan(s/2))) and its inverse.
         for s in [0.3, 2.0, 4.0, 6.0] {
             let (_, int) = p.value_and_integral(0, s);
@@ -455,8 +468,8 @@ mod tests {
         let eps = 1e-8;
         let p = Piecewise::build(10_000, |_, d: f64| {
             Ok::<_, ()>(Sample {
-                values: [1.0 / (eps * eps + d * d).sqrt(), 1.0],
-                noise: [0.0; 2],
+                values: [1.0 / (eps * eps + d * d).sqrt(), 1.0, 1.0],
+                noise: [0.0; INTEGRANDS],
             })
         })
         .unwrap()
@@ -471,8 +484,8 @@ mod tests {
         // Negative control: a budget of one panel is not enough.
         let r = Piecewise::build(PANEL_NODES, |_, d: f64| {
             Ok::<_, ()>(Sample {
-                values: [1.0 / (eps * eps + d * d).sqrt(), 1.0],
-                noise: [0.0; 2],
+                values: [1.0 / (eps * eps + d * d).sqrt(), 1.0, 1.0],
+                noise: [0.0; INTEGRANDS],
             })
         })
         .unwrap();

@@ -47,7 +47,7 @@ use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
-use num_dual::{first_derivative, second_derivative};
+use num_dual::{first_derivative, second_derivative, second_partial_derivative};
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
 /// `g^2 >= A C`, `g''` stays below about `(m R^2)^2 / (A C)^(3/2)`, i.e. 1e180 (m R^2)^-1 at
@@ -387,6 +387,16 @@ impl Reduction {
         self.routh_g(u).recip() * self.k
     }
 
+    /// The spin `omega3 = K / g` at `x = 1 - p u` from the pole `p`, with g from x
+    /// (`g^2 = g_p^2 + (g^2 - g_p^2)(x)`): near the pole u itself rounds `1 - u^2` to a relative
+    /// error `eps / x`, and a slender body's g changes on the small scale
+    /// `C (A + m h_p^2) / (A m R^2)` of x (with I3 = 1e-4 that made the rate of psi near the
+    /// pole jitter by 1e-13, and its series fail).
+    pub fn spin_in_frame(&self, pole: f64, x: f64) -> f64 {
+        let (_, g) = self.g_change(pole, x);
+        self.k / g
+    }
+
     /// Jellett's remainder `N(u) = H3 - C (R u + a) omega3 = A R s omega_t`, as
     /// `n_p + C K x J(x)` in the frame of the pole of u's hemisphere.
     pub fn jellett_remainder<D: Real>(&self, u: D) -> D {
@@ -498,6 +508,28 @@ impl Reduction {
                 .sum::<f64>()
     }
 
+    /// The round-off bound of `Q'(u)` computed from parameters that carry the absolute errors
+    /// `integral_errors` (as in [`Reduction::q_noise`]): the rounding of the slopes of its own
+    /// terms, `eps` [`Reduction::q_slope_scale`], plus `sum |d2Q/du dp_i| err_i` (by
+    /// automatic differentiation in u and each parameter).
+    pub fn q_slope_noise(&self, u: f64, integral_errors: [f64; 5]) -> f64 {
+        let values = self.parameters();
+        let moved: f64 = (0..5)
+            .map(|i| {
+                let (_, _, _, mixed) = second_partial_derivative(
+                    |(v, p)| {
+                        let mut at = values.map(lift);
+                        at[i] = p;
+                        sum(self.q_terms_at(v, at))
+                    },
+                    (u, values[i]),
+                );
+                mixed.abs() * integral_errors[i]
+            })
+            .sum();
+        f64::EPSILON * self.q_slope_scale(u) + moved
+    }
+
     /// `Q(u)`, `Q'(u)`, `Q''(u)` by automatic differentiation.
     pub fn q_derivatives(&self, u: f64) -> (f64, f64, f64) {
         second_derivative(|v| self.q(v), u)
@@ -529,6 +561,11 @@ impl Reduction {
         .fold((0.0, 0.0), |(value, slope), (t, dt)| {
             (value + t.abs(), slope + dt.abs())
         })
+    }
+
+    /// `d2Q/dx2 = Q''(u)` at `x = 1 - p u` in the frame of pole `p`.
+    pub fn q_curvature_in_frame(&self, pole: f64, x: f64) -> f64 {
+        second_derivative(|v| self.q_in_frame(pole, v), x).2
     }
 
     /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
@@ -592,14 +629,14 @@ impl Reduction {
     }
 
     /// The precession rate `dpsi/dt = u N(u) / (A R (1 - u^2)) - omega3` (module docs),
-    /// from Jellett's quotient `N / (1 - u^2)`.
-    pub fn precession_from_quotient(&self, u: f64, quotient: f64) -> f64 {
-        u * quotient / (self.body.i1() * self.body.radius()) - self.spin(u)
+    /// from Jellett's quotient `N / (1 - u^2)` and the spin omega3.
+    pub fn precession_from_quotient(&self, u: f64, quotient: f64, spin: f64) -> f64 {
+        u * quotient / (self.body.i1() * self.body.radius()) - spin
     }
 
     /// The precession rate `dpsi/dt` at `|u| < 1`.
     pub fn precession_rate(&self, u: f64) -> f64 {
-        self.precession_from_quotient(u, self.jellett_quotient(u))
+        self.precession_from_quotient(u, self.jellett_quotient(u), self.spin(u))
     }
 
     /// gamma and the angular velocity `omega = omega_t t + omega_n n + omega3 e3` at
@@ -615,13 +652,27 @@ impl Reduction {
         omega_n: f64,
         quotient: f64,
     ) -> ([f64; 3], [f64; 3]) {
+        self.omega_with_spin(u, s, psi, omega_n, quotient, self.spin(u))
+    }
+
+    /// [`Reduction::omega`] with the spin omega3 given (from a distance to the pole more
+    /// accurate than u's, [`Reduction::spin_in_frame`]).
+    pub fn omega_with_spin(
+        &self,
+        u: f64,
+        s: f64,
+        psi: f64,
+        omega_n: f64,
+        quotient: f64,
+        spin: f64,
+    ) -> ([f64; 3], [f64; 3]) {
         let omega_t = s * quotient / (self.body.i1() * self.body.radius());
         let (sp, cp) = psi.sin_cos();
         let gamma = [s * cp, s * sp, u];
         let omega = [
             omega_t * cp - omega_n * sp,
             omega_t * sp + omega_n * cp,
-            self.spin(u),
+            spin,
         ];
         (gamma, omega)
     }
