@@ -6,7 +6,7 @@
 mod common;
 
 use common::{assert_exit_2, routh};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A case file in a fresh directory: the default case with `body` as its `[body]` table.
 fn case_with_body(name: &str, body: &str) -> PathBuf {
@@ -25,8 +25,15 @@ fn case_with_body(name: &str, body: &str) -> PathBuf {
 }
 
 /// `routh exact --t 1 --json` on `case`, parsed.
-fn exact_json(case: &PathBuf) -> serde_json::Value {
-    let out = routh(&["exact", "--case", case.to_str().unwrap(), "--t", "1", "--json"]);
+fn exact_json(case: &Path) -> serde_json::Value {
+    let out = routh(&[
+        "exact",
+        "--case",
+        case.to_str().unwrap(),
+        "--t",
+        "1",
+        "--json",
+    ]);
     assert!(
         out.status.success(),
         "{}",

@@ -959,13 +959,13 @@ mod exact_in_any_units {
     use crate::sweep_cases as exact_sweep;
 
     use exact_sweep::{distance, dop853_at};
+    use proptest::prelude::*;
+    use proptest::test_runner::{RngSeed, TestCaseError};
     use routh::body::Body;
     use routh::integrate::{solve_dense, Options};
     use routh::motion::{initial_full, quaternion, rotate, FullMotion, FULL_DIM};
     use routh::quadrature::{ExactSolution, Motion};
     use routh::state::{Normalise, State};
-    use proptest::prelude::*;
-    use proptest::test_runner::{RngSeed, TestCaseError};
     use routh::steady::{routh_threshold, steady_precessions};
     use routh::units::Units;
     use routh::RouthError;
@@ -1088,13 +1088,19 @@ mod exact_in_any_units {
     fn random_problem() -> impl Strategy<Value = (Body, State, Start)> {
         let unit = || [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0];
         (
-            (-1.3f64..0.0, -3.0f64..2f64.log10(), 0.05f64..0.8, any::<bool>()),
+            (
+                -1.3f64..0.0,
+                -3.0f64..2f64.log10(),
+                0.05f64..0.8,
+                any::<bool>(),
+            ),
             (any::<bool>(), 0usize..3, any::<bool>()),
             (unit(), unit(), -1.0f64..1.3, -9.0f64..-3.0, 0.9f64..1.1),
         )
             .prop_map(
                 |((log_i1, log_ratio, a, up), (gravity, kind, top), (g, w, log_w, log_near, f))| {
-                    let start = [Start::Anywhere, Start::NearTheAxis, Start::NearTheThreshold][kind];
+                    let start =
+                        [Start::Anywhere, Start::NearTheAxis, Start::NearTheThreshold][kind];
                     let i1 = 10f64.powf(log_i1);
                     let i3 = (i1 * 10f64.powf(log_ratio)).min(2.0 * i1);
                     let sign = if up { 1.0 } else { -1.0 };
@@ -1212,7 +1218,10 @@ mod exact_in_any_units {
         let horizon = 2.9 * original.period().unwrap();
         let estimates =
             original.accuracy.error_at(horizon) + copy.accuracy.error_at(factors[2] * horizon);
-        assert!(d > 1e3 * (COPY_AGREEMENT + estimates), "{d:e} {estimates:e}");
+        assert!(
+            d > 1e3 * (COPY_AGREEMENT + estimates),
+            "{d:e} {estimates:e}"
+        );
     }
 
     #[test]

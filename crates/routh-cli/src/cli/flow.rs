@@ -5,12 +5,12 @@
 use super::exact::{
     integrals_text, print_summary, state_text, tilt_text, write_samples, Args, Sample, Tilt,
 };
-use std::fmt::Write as _;
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
 use routh::{AppResult as Result, State};
 use serde::Serialize;
+use std::fmt::Write as _;
 
 /// The summary printed by `routh exact --flow`.
 #[derive(Serialize)]

@@ -803,8 +803,8 @@ impl ExactSolution {
     ) -> Result<(f64, Accuracy)> {
         let (_, q1, q2) = red.q_derivatives(u0);
         let slope = q1.abs() + slope_noise;
-        let local = 2.0 * (slope * slope + 2.0 * q2.abs() * udot_bound * udot_bound).sqrt()
-            / q2.abs();
+        let local =
+            2.0 * (slope * slope + 2.0 * q2.abs() * udot_bound * udot_bound).sqrt() / q2.abs();
         let du = (searched + (8.0 * noise / q2.abs()).sqrt()).min(local);
         if !(q2 < 0.0) {
             return Err(RouthError::Separatrix {
