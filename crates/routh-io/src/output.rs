@@ -36,6 +36,10 @@ static STOP: Mutex<Option<Arc<AtomicBool>>> = Mutex::new(None);
 /// A counter that keeps the temporary names of one process distinct.
 static SERIAL: AtomicUsize = AtomicUsize::new(0);
 
+/// The longest file name, in bytes, that the temporary names are kept within: the `NAME_MAX`
+/// of Linux's file systems (ext4, XFS, Btrfs, tmpfs) and of macOS's APFS.
+const NAME_MAX: usize = 255;
+
 /// How many symbolic links are followed before giving up (the limit of Linux's `ELOOP`).
 const MAX_LINK_DEPTH: usize = 40;
 
@@ -133,17 +137,7 @@ fn replace(
     fill: impl FnOnce(&mut dyn Write) -> Result<()>,
 ) -> Result<()> {
     let io = AppError::io(target);
-    let name = target.file_name().ok_or_else(|| RouthError::Option {
-        name: "output path",
-        value: target.display().to_string(),
-        rule: "must name a file",
-    })?;
-    let temporary = Temporary::register(target.with_file_name(format!(
-        ".{}.tmp-{}-{}",
-        name.to_string_lossy(),
-        std::process::id(),
-        SERIAL.fetch_add(1, Ordering::Relaxed)
-    )));
+    let temporary = Temporary::register(temporary_beside(target, "output path")?);
     let file = OpenOptions::new()
         .write(true)
         .create_new(true)
@@ -160,6 +154,31 @@ fn replace(
     std::fs::rename(&temporary.path, target).map_err(&io)?;
     temporary.renamed();
     Ok(())
+}
+
+/// The temporary name beside `target` (the option that named it: `option`):
+/// `.NAME.tmp-PID-N`, N distinct within the process, the name part cut so that the whole
+/// stays within [`NAME_MAX`] bytes whatever the target's name (a name of 255 bytes is valid
+/// and its temporary must be too). The cut keeps the name unique: PID and N are whole.
+pub(crate) fn temporary_beside(target: &Path, option: &'static str) -> Result<PathBuf> {
+    use std::os::unix::ffi::{OsStrExt, OsStringExt};
+    let name = target.file_name().ok_or_else(|| RouthError::Option {
+        name: option,
+        value: target.display().to_string(),
+        rule: "must name a file",
+    })?;
+    let suffix = format!(
+        ".tmp-{}-{}",
+        std::process::id(),
+        SERIAL.fetch_add(1, Ordering::Relaxed)
+    );
+    let room = NAME_MAX - 1 - suffix.len();
+    let kept = &name.as_bytes()[..name.len().min(room)];
+    let mut temporary = Vec::with_capacity(NAME_MAX);
+    temporary.push(b'.');
+    temporary.extend_from_slice(kept);
+    temporary.extend_from_slice(suffix.as_bytes());
+    Ok(target.with_file_name(std::ffi::OsString::from_vec(temporary)))
 }
 
 /// Resolve symbolic links in the last component of `path`, to any depth, so that a link is

@@ -8,7 +8,7 @@
 
 use super::record::Row;
 use super::runner::Sweep;
-use crate::error::{AppError, AppResult as Result, FileError, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
 use std::path::{Path, PathBuf};
 
 /// A table being written.
@@ -29,18 +29,9 @@ pub struct Staged {
 }
 
 impl Staged {
-    /// A temporary path beside `target`.
+    /// A temporary path beside `target` ([`crate::output`]'s temporary name).
     pub fn beside(target: &Path) -> Result<Self> {
-        let name = target.file_name().ok_or_else(|| RouthError::Option {
-            name: "out",
-            value: target.display().to_string(),
-            rule: "must name a file",
-        })?;
-        let tmp = target.with_file_name(format!(
-            ".{}.tmp-{}",
-            name.to_string_lossy(),
-            std::process::id()
-        ));
+        let tmp = crate::output::temporary_beside(target, "out")?;
         // A signal that ends the process (a second one, after the sweep's stop) removes it.
         crate::output::register_temporary(&tmp);
         Ok(Staged {
@@ -50,10 +41,11 @@ impl Staged {
         })
     }
 
-    /// An I/O error on the temporary file.
+    /// An I/O error on the temporary file, named by the target (the file the user asked
+    /// for; the temporary is an implementation detail).
     pub fn io(&self, source: std::io::Error) -> AppError {
         FileError::Io {
-            path: self.tmp.clone(),
+            path: self.target.clone(),
             source,
         }
         .into()
