@@ -68,6 +68,25 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>
     }
 }
 
+/// Whether `path` is the standard output of this process: `-`, or a file (after its links)
+/// that standard output is open on (`/dev/stdout`, or the file that `> FILE` redirects it
+/// to): a command that writes both its report and a file there must send one elsewhere.
+pub fn is_standard_output(path: &Path) -> bool {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    if path == Path::new("-") {
+        return true;
+    }
+    let stdout = std::io::stdout();
+    let same = |meta: std::fs::Metadata| -> Option<bool> {
+        let open = File::from(stdout.as_fd().try_clone_to_owned().ok()?)
+            .metadata()
+            .ok()?;
+        Some((open.dev(), open.ino()) == (meta.dev(), meta.ino()))
+    };
+    std::fs::metadata(path).ok().and_then(same).unwrap_or(false)
+}
+
 /// Write bytes safely (see [`write_atomic`]).
 pub fn write_bytes_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     write_atomic(path, |w| w.write_all(bytes).map_err(AppError::io(path)))

@@ -9,6 +9,7 @@
 use super::record::Row;
 use super::runner::Sweep;
 use crate::error::{AppError, AppResult as Result, FileError};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 /// A table being written.
@@ -17,6 +18,46 @@ pub trait TableWriter: Send {
     fn write(&mut self, rows: &[Row]) -> Result<()>;
     /// Close the file and move it to the target.
     fn finish(self: Box<Self>) -> Result<()>;
+}
+
+/// What `--resume` found in an existing table.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Resumed {
+    /// The runs whose rows were kept (and are not run again).
+    pub done: HashSet<u64>,
+    /// The last row, cut short (a process ended while writing it), dropped: its run is run
+    /// again.
+    pub dropped: Option<PartialRow>,
+}
+
+/// A last row cut short, dropped by `--resume`.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct PartialRow {
+    /// Its line in the file (the header is line 1).
+    pub line: u64,
+    /// The columns it holds.
+    pub columns: usize,
+    /// The columns of a row.
+    pub expected: usize,
+    /// Whether it ends with a line break (every complete row does).
+    pub line_break: bool,
+}
+
+impl std::fmt::Display for PartialRow {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "line {} holds {} of {} columns{}",
+            self.line,
+            self.columns,
+            self.expected,
+            if self.line_break {
+                ""
+            } else {
+                " and no line break"
+            }
+        )
+    }
 }
 
 /// A temporary file beside `target`, removed unless committed.
