@@ -251,7 +251,7 @@ fn sigterm_is_obeyed_within_a_second_by_every_long_command() {
     let long: [Vec<&str>; 5] = [
         vec!["sweep", "--case", &case, "--threads", "1", "--out", table.to_str().unwrap()],
         vec!["simulate", "--case", &case, "--samples", "100", "--out", csv.to_str().unwrap()],
-        vec!["exact", "--case", &case, "--t", "1e9", "--samples", "1000000", "--out", csv.to_str().unwrap()],
+        vec!["exact", "--case", &case, "--t", "1e8", "--samples", "10000000", "--out", csv.to_str().unwrap()],
         vec!["audit", "--points", "100000"],
         vec!["diagram", "--grid", "5000", "--tilts", "5000", "--out", figures.to_str().unwrap()],
     ];

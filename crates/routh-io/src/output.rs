@@ -325,6 +325,34 @@ mod tests {
     }
 
     #[test]
+    fn the_temporary_name_of_a_longest_name_fits_and_stays_unique() {
+        let name = "n".repeat(NAME_MAX);
+        let target = scratch("long").with_file_name(&name);
+        let (a, b) = (
+            temporary_beside(&target, "out").unwrap(),
+            temporary_beside(&target, "out").unwrap(),
+        );
+        assert_ne!(a, b);
+        for t in [&a, &b] {
+            let n = t.file_name().unwrap().to_str().unwrap();
+            assert!(n.len() <= NAME_MAX && n.starts_with(".nnn"), "{n}");
+            assert!(n.contains(&format!(".tmp-{}-", std::process::id())), "{n}");
+        }
+        write_bytes_atomic(&target, b"long").unwrap();
+        assert_eq!(std::fs::read(&target).unwrap(), b"long");
+        assert!(leftovers(target.parent().unwrap()).is_empty());
+        // A short name is kept whole.
+        let short = temporary_beside(Path::new("dir/x.csv"), "out").unwrap();
+        assert!(short.to_str().unwrap().starts_with("dir/.x.csv.tmp-"), "{short:?}");
+    }
+
+    #[test]
+    fn standard_output_is_recognised_by_name() {
+        assert!(is_standard_output(Path::new("-")));
+        assert!(!is_standard_output(&scratch("not-stdout.txt")));
+    }
+
+    #[test]
     fn a_directory_is_refused() {
         let dir = scratch("a-dir");
         std::fs::create_dir_all(&dir).unwrap();

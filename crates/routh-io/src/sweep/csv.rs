@@ -137,3 +137,25 @@ impl TableWriter for CsvTable {
         staged.commit()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::cells;
+    use crate::row::Cell;
+
+    #[test]
+    fn cells_are_split_outside_quotes_as_they_are_written() {
+        let written = crate::row::csv_line(&[
+            Cell::Int(Some(3)),
+            Cell::Text("no quadrature: a, b \"c\"".into()),
+            Cell::Float(None),
+            Cell::Float(Some(0.5)),
+        ]);
+        assert_eq!(
+            cells(&written),
+            ["3", "\"no quadrature: a, b \"\"c\"\"\"", "", "0.5"]
+        );
+        assert_eq!(cells("1,2,3").len(), 3);
+        assert_eq!(cells("").len(), 1);
+    }
+}
