@@ -60,7 +60,9 @@ fn sweep_threads_are_bounded_by_the_cores() {
     for n in ["10000", too_many.as_str()] {
         assert_exit_2(
             &["sweep", "--case", "cases/sweep.toml", "--threads", n],
-            &format!("threads = {n} ({cores} cores available): must be at most 4 per available core"),
+            &format!(
+                "threads = {n} ({cores} cores available): must be at most 4 per available core"
+            ),
         );
     }
 }
@@ -113,7 +115,13 @@ fn a_target_name_of_255_bytes_gets_a_temporary_name_that_fits() {
             "--out",
             sweep_target.to_str().unwrap(),
         ]));
-        assert_eq!(std::fs::read_to_string(&sweep_target).unwrap().lines().count(), 3);
+        assert_eq!(
+            std::fs::read_to_string(&sweep_target)
+                .unwrap()
+                .lines()
+                .count(),
+            3
+        );
         std::fs::remove_file(&target).unwrap();
         std::fs::remove_file(&sweep_target).unwrap();
     }
@@ -126,14 +134,25 @@ fn an_error_about_a_missing_directory_names_the_target() {
     let target = "missing/dir/x.csv";
     for args in [
         vec!["sweep", "--case", "cases/sweep.toml", "--out", target],
-        vec!["simulate", "--t-end", "1", "--samples", "3", "--out", target],
+        vec![
+            "simulate",
+            "--t-end",
+            "1",
+            "--samples",
+            "3",
+            "--out",
+            target,
+        ],
         vec!["audit", "--points", "1", "--markdown", "missing/dir/x.md"],
     ] {
         let out = routh(&args);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains("missing/dir/x."), "{args:?}: {err}");
-        assert!(!err.contains(".tmp-"), "{args:?} names the temporary file: {err}");
+        assert!(
+            !err.contains(".tmp-"),
+            "{args:?} names the temporary file: {err}"
+        );
     }
 }
 
@@ -141,7 +160,11 @@ fn an_error_about_a_missing_directory_names_the_target() {
 fn resume_drops_a_last_row_cut_short_and_says_so() {
     // Before: a row cut after 14 of its 40 columns was kept and counted as resumed.
     let dir = scratch("resume-cut");
-    let case = case_file(&dir, "0.5", "[sweep]\ntilt = { values = [0.1, 0.2, 0.3] }\n");
+    let case = case_file(
+        &dir,
+        "0.5",
+        "[sweep]\ntilt = { values = [0.1, 0.2, 0.3] }\n",
+    );
     let whole = dir.join("whole.csv");
     let cut = dir.join("cut.csv");
     let (whole_arg, cut_arg) = (whole.to_str().unwrap(), cut.to_str().unwrap());
@@ -152,10 +175,18 @@ fn resume_drops_a_last_row_cut_short_and_says_so() {
     let last: Vec<&str> = lines[3].split(',').take(14).collect();
     std::fs::write(
         &cut,
-        format!("{}\n{}\n{}\n{}", lines[0], lines[1], lines[2], last.join(",")),
+        format!(
+            "{}\n{}\n{}\n{}",
+            lines[0],
+            lines[1],
+            lines[2],
+            last.join(",")
+        ),
     )
     .unwrap();
-    let out = routh(&["sweep", "--case", &case, "--out", cut_arg, "--resume", "--json"]);
+    let out = routh(&[
+        "sweep", "--case", &case, "--out", cut_arg, "--resume", "--json",
+    ]);
     let err = succeeded(&out);
     assert!(
         err.contains(&format!(
@@ -169,11 +200,21 @@ fn resume_drops_a_last_row_cut_short_and_says_so() {
     assert_eq!(v["ran"], 1);
     assert_eq!(v["dropped_partial_row"]["columns"], 14);
     assert_eq!(v["dropped_partial_row"]["line"], 4);
-    assert_eq!(std::fs::read_to_string(&cut).unwrap(), text, "the run done again");
+    assert_eq!(
+        std::fs::read_to_string(&cut).unwrap(),
+        text,
+        "the run done again"
+    );
     // A cut row before the last is not a stopped sweep's: refused, naming the file.
     std::fs::write(
         &cut,
-        format!("{}\n{}\n{}\n{}\n", lines[0], last.join(","), lines[2], lines[3]),
+        format!(
+            "{}\n{}\n{}\n{}\n",
+            lines[0],
+            last.join(","),
+            lines[2],
+            lines[3]
+        ),
     )
     .unwrap();
     assert_exit_2(
@@ -193,7 +234,10 @@ fn one_output_stream_per_destination() {
     assert!(err.contains("OK"), "the table on stderr: {err}");
     let out = routh(&["audit", "--points", "1", "--markdown", "-", "--json"]);
     let err = succeeded(&out);
-    assert!(serde_json::from_str::<serde_json::Value>(&err).is_ok(), "{err}");
+    assert!(
+        serde_json::from_str::<serde_json::Value>(&err).is_ok(),
+        "{err}"
+    );
     // `-` as the directory of figures is refused, not a directory named `-`.
     for args in [
         vec!["plot", "--out", "-", "--samples", "10", "--t-end", "1"],
@@ -215,7 +259,10 @@ fn sigterm_latency(dir: &Path, args: &[&str], complete: impl Fn(&Path)) -> Durat
         .spawn()
         .unwrap();
     std::thread::sleep(Duration::from_millis(500));
-    assert!(child.try_wait().unwrap().is_none(), "{args:?} ended before the signal");
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "{args:?} ended before the signal"
+    );
     let kill = std::process::Command::new("kill")
         .args(["-TERM", &child.id().to_string()])
         .status()
@@ -244,16 +291,54 @@ fn sigterm_latency(dir: &Path, args: &[&str], complete: impl Fn(&Path)) -> Durat
 fn sigterm_is_obeyed_within_a_second_by_every_long_command() {
     let dir = scratch("sigterm");
     // Four runs that take hours each, one thread: before, SIGTERM waited for the run.
-    let case = case_file(&dir, "1e9", "[sweep]\ntilt = { values = [0.1, 0.2, 0.3, 0.4] }\n");
+    let case = case_file(
+        &dir,
+        "1e9",
+        "[sweep]\ntilt = { values = [0.1, 0.2, 0.3, 0.4] }\n",
+    );
     let table = dir.join("table.csv");
     let csv = dir.join("x.csv");
     let figures = dir.join("figures");
     let long: [Vec<&str>; 5] = [
-        vec!["sweep", "--case", &case, "--threads", "1", "--out", table.to_str().unwrap()],
-        vec!["simulate", "--case", &case, "--samples", "100", "--out", csv.to_str().unwrap()],
-        vec!["exact", "--case", &case, "--t", "1e8", "--samples", "10000000", "--out", csv.to_str().unwrap()],
+        vec![
+            "sweep",
+            "--case",
+            &case,
+            "--threads",
+            "1",
+            "--out",
+            table.to_str().unwrap(),
+        ],
+        vec![
+            "simulate",
+            "--case",
+            &case,
+            "--samples",
+            "100",
+            "--out",
+            csv.to_str().unwrap(),
+        ],
+        vec![
+            "exact",
+            "--case",
+            &case,
+            "--t",
+            "1e8",
+            "--samples",
+            "10000000",
+            "--out",
+            csv.to_str().unwrap(),
+        ],
         vec!["audit", "--points", "100000"],
-        vec!["diagram", "--grid", "5000", "--tilts", "5000", "--out", figures.to_str().unwrap()],
+        vec![
+            "diagram",
+            "--grid",
+            "5000",
+            "--tilts",
+            "5000",
+            "--out",
+            figures.to_str().unwrap(),
+        ],
     ];
     // A file left by a stopped command is complete: the sweep's table has whole rows.
     let complete = |path: &Path| {

@@ -343,7 +343,10 @@ mod tests {
         assert!(leftovers(target.parent().unwrap()).is_empty());
         // A short name is kept whole.
         let short = temporary_beside(Path::new("dir/x.csv"), "out").unwrap();
-        assert!(short.to_str().unwrap().starts_with("dir/.x.csv.tmp-"), "{short:?}");
+        assert!(
+            short.to_str().unwrap().starts_with("dir/.x.csv.tmp-"),
+            "{short:?}"
+        );
     }
 
     #[test]

@@ -153,34 +153,28 @@ pub fn run(args: Args) -> Result<()> {
     let (mut ran, mut failed) = (0u64, 0u64);
     let settings_row = sweep.run_settings();
     let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
-    let completion = sweep.execute(
-        todo,
-        &pool,
-        chunk(sweep.runs()),
-        &stop,
-        &mut |rows| {
-            if args.out.is_some() || !args.json {
-                writer.write(rows)?;
-            }
-            ran += rows.len() as u64;
-            failed += rows
-                .iter()
-                .filter(|r| r.status == routh::sweep::record::Status::Failed)
-                .count() as u64;
-            if args.json {
-                json_rows.extend(rows.iter().map(|r| {
-                    let cells = r.cells(&settings_row);
-                    names
-                        .iter()
-                        .cloned()
-                        .zip(cells.iter().map(|c| c.to_json()))
-                        .collect::<serde_json::Map<_, _>>()
-                }));
-            }
-            bar.inc(rows.len() as u64);
-            Ok(())
-        },
-    )?;
+    let completion = sweep.execute(todo, &pool, chunk(sweep.runs()), &stop, &mut |rows| {
+        if args.out.is_some() || !args.json {
+            writer.write(rows)?;
+        }
+        ran += rows.len() as u64;
+        failed += rows
+            .iter()
+            .filter(|r| r.status == routh::sweep::record::Status::Failed)
+            .count() as u64;
+        if args.json {
+            json_rows.extend(rows.iter().map(|r| {
+                let cells = r.cells(&settings_row);
+                names
+                    .iter()
+                    .cloned()
+                    .zip(cells.iter().map(|c| c.to_json()))
+                    .collect::<serde_json::Map<_, _>>()
+            }));
+        }
+        bar.inc(rows.len() as u64);
+        Ok(())
+    })?;
     bar.finish_and_clear();
     writer.finish()?;
     let elapsed = start.elapsed().as_secs_f64();

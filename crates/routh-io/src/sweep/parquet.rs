@@ -190,7 +190,9 @@ impl ParquetTable {
                     .write(&b)
                     .map_err(|e| parquet_error(&staged.target, e))?;
             }
-            writer.flush().map_err(|e| parquet_error(&staged.target, e))?;
+            writer
+                .flush()
+                .map_err(|e| parquet_error(&staged.target, e))?;
         }
         let table = ParquetTable {
             staged,

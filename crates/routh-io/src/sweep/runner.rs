@@ -23,8 +23,8 @@ use std::sync::mpsc::{channel, RecvTimeoutError};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-/// The most worker threads per available core ([`pool`]): more threads than cores only share
-/// them (the runs are computation), and each thread ends its run in progress after a stop.
+/// The most worker threads per available core ([`pool`]): the runs are computation, so more
+/// threads than cores only share them (and 10,000 threads of one process slow the machine).
 pub const MAX_THREADS_PER_CORE: usize = 4;
 
 /// How often [`Sweep::execute`] looks at the stop flag while waiting for rows: a stop is

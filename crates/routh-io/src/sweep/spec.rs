@@ -476,14 +476,24 @@ mod tests {
     #[test]
     fn the_runs_are_bounded_before_any_value_is_built() {
         assert_eq!(
-            parse("tilt = { range = [0.1, 1.0], n = 1000 }\nspin = { range = [1.0, 9.0], n = 1000 }")
-                .unwrap()
-                .runs(),
+            parse(
+                "tilt = { range = [0.1, 1.0], n = 1000 }\nspin = { range = [1.0, 9.0], n = 1000 }"
+            )
+            .unwrap()
+            .runs(),
             MAX_RUNS
         );
         for (text, key, value) in [
-            ("tilt = { range = [0.1, 1.0], n = 1000000000000 }", "tilt", "n = 1000000000000"),
-            ("samples = 1000001\ntilt = { range = [0.1, 1.0] }", "samples", "1000001"),
+            (
+                "tilt = { range = [0.1, 1.0], n = 1000000000000 }",
+                "tilt",
+                "n = 1000000000000",
+            ),
+            (
+                "samples = 1000001\ntilt = { range = [0.1, 1.0] }",
+                "samples",
+                "1000001",
+            ),
             (
                 "tilt = { range = [0.1, 1.0], n = 1000 }\nspin = { range = [1.0, 9.0], n = 1001 }",
                 "[sweep]",

@@ -335,7 +335,10 @@ mod tests {
                 e.contains("points") && e.contains(&count.to_string()),
                 "{e}"
             );
-            assert!(e.contains(&MAX_POINTS.to_string()), "the rule states the bound: {e}");
+            assert!(
+                e.contains(&MAX_POINTS.to_string()),
+                "the rule states the bound: {e}"
+            );
         }
     }
 }
