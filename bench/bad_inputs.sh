@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Run the binary on ~130 bad or unusual inputs and tabulate the outcomes by class:
+# Run the binary on ~220 bad or unusual inputs and tabulate the outcomes by class:
 # `refused` = exit 2 with a message and no panic; `ok` = exit 0 with no NaN in its output;
 # anything else (a panic, exit 101 or 134, a NaN printed with exit 0, a leftover temporary
-# file) is counted as `WRONG` and makes the script fail. Usage: bash bench/bad_inputs.sh [BINARY]
+# file) is counted as `WRONG` and makes the script fail. Class `signals`: a long run sent SIGTERM,
+# counted under `refused` when it ends within a second, failing, with no temporary file. Usage: bash bench/bad_inputs.sh [BINARY]
 set -uo pipefail
 cd "$(dirname "$0")/.."
 BIN=${1:-target/release/routh}
@@ -99,6 +100,64 @@ mkfifo "$DIR/fifo"; (cat "$DIR/fifo" > "$DIR/from-fifo" &); try output ok simula
 try output refused simulate --t-end 1 --out "$DIR"
 try output refused simulate --t-end 1 --out "$DIR/no/such/dir/x.csv"
 try output refused simulate --t-end 1 --out ""
+# Temporary names of long target names (255 bytes is the file system's limit of a name).
+for length in 254 255; do
+  name=$(printf 'x%.0s' $(seq $((length - 4)))).csv
+  try output ok simulate --t-end 1 --samples 3 --out "$DIR/$name"; rm -f "$DIR/$name"
+done
+# Errors name the target, not its temporary file.
+try output refused sweep --case cases/sweep.toml --out "$DIR/no/such/dir/x.csv"
+grep -q '\.tmp-' "$DIR/err" && { echo "WRONG: the error names the temporary file: $(cat "$DIR/err")" >&2; wrong_total=$((wrong_total+1)); }
+# One output stream per destination.
+try output refused sweep --case cases/sweep.toml --out -
+try output ok audit --points 1 --markdown -
+try output ok audit --points 1 --markdown - --json
+for cmd in plot animate; do try output refused $cmd --t-end 1 --samples 10 --out -; done
+try output refused diagram --grid 4 --tilts 4 --out -
+# --resume of a table whose last row was cut short: dropped and said.
+sed 's/t_end = 100.0/t_end = 0.5/' "$DEFAULT" > "$DIR/small.toml"
+printf '\n[sweep]\ntilt = { values = [0.1, 0.2, 0.3] }\n' >> "$DIR/small.toml"
+"$BIN" sweep --case "$DIR/small.toml" --out "$DIR/table.csv" >/dev/null
+head -3 "$DIR/table.csv" > "$DIR/cut.csv"; sed -n 4p "$DIR/table.csv" | cut -d, -f1-14 | tr -d '\n' >> "$DIR/cut.csv"
+try output ok sweep --case "$DIR/small.toml" --out "$DIR/cut.csv" --resume
+grep -q 'dropped the last row' "$DIR/err" || { echo "WRONG: --resume kept a cut row silently" >&2; wrong_total=$((wrong_total+1)); }
+cmp -s "$DIR/cut.csv" "$DIR/table.csv" || { echo "WRONG: the resumed table differs" >&2; wrong_total=$((wrong_total+1)); }
+# Sizes: bounded before any work, refused with the key, the value and the rule.
+for args in "audit --points 1000000000000" "audit --points 100001" "audit --points 0" \
+            "sweep --case cases/sweep.toml --threads 10000" "diagram --grid 5001" "diagram --tilts 5001" \
+            "diagram --loop-points 5001" "plot --samples 1000001" "animate --samples 1000001"; do
+  # shellcheck disable=SC2086
+  try sizes refused $args
+done
+for sweep in "tilt = { range = [0.1, 1.0], n = 1000000000000 }" \
+             "samples = 9223372036854775807\ntilt = { range = [0.1, 1.0] }" \
+             "tilt = { range = [0.1, 1.0], n = 2000 }\nspin = { range = [1.0, 9.0], n = 2000 }"; do
+  (cat "$DEFAULT"; printf "\n[sweep]\n$sweep\n") > "$DIR/big.toml"
+  try sizes refused sweep --case "$DIR/big.toml"
+done
+# Signals: SIGTERM half a second into a long run ends it within a second, with a failure exit
+# status and no temporary file (the sweep writes the rows done, whole, and ends with 130).
+sed 's/t_end = 100.0/t_end = 1e9/' "$DEFAULT" > "$DIR/long.toml"
+printf '\n[sweep]\ntilt = { values = [0.1, 0.2, 0.3, 0.4] }\n' >> "$DIR/long.toml"
+signal_try() {
+  local start end ms code
+  "$BIN" "$@" >/dev/null 2>"$DIR/err" & local pid=$!
+  sleep 0.5
+  start=$(date +%s%N); kill -TERM $pid; wait $pid; code=$?; end=$(date +%s%N)
+  ms=$(( (end - start) / 1000000 ))
+  if [[ $code != 0 && $ms -lt 1000 ]] && ! ls -a "$DIR" | grep -q '\.tmp-'; then
+    REFUSED[signals]=$(( ${REFUSED[signals]:-0} + 1 ))
+  else
+    WRONG[signals]=$(( ${WRONG[signals]:-0} + 1 )); wrong_total=$((wrong_total + 1))
+    echo "WRONG (signals, exit $code, $ms ms): $*" >&2
+  fi
+  echo "signals: $1 ended $ms ms after SIGTERM (exit $code)" >&2
+}
+signal_try sweep --case "$DIR/long.toml" --threads 1 --out "$DIR/long.csv"
+signal_try simulate --case "$DIR/long.toml" --samples 100 --out "$DIR/long.csv"
+signal_try exact --case "$DIR/long.toml" --t 1e8 --samples 10000000 --out "$DIR/long.csv"
+signal_try audit --points 100000
+signal_try diagram --grid 5000 --tilts 5000 --out "$DIR/figures"
 # CSV files for plot and animate: empty, header only, one row, NaN, inf, ragged, text, no t,
 # decreasing t, repeated column.
 "$BIN" simulate --t-end 1 --samples 4 --full --out "$DIR/good.csv" >/dev/null
@@ -122,7 +181,7 @@ try csv ok animate --csv "$DIR/good.csv" --out "$DIR/plots"
 
 printf '| class | tried | refused (exit 2, message) | ok (exit 0, no NaN) | wrong |\n|---|---|---|---|---|\n'
 total=0
-for class in body state schema optional options output csv; do
+for class in body state schema optional options output csv sizes signals; do
   r=${REFUSED[$class]:-0}; o=${OK[$class]:-0}; w=${WRONG[$class]:-0}
   total=$((total + r + o + w))
   printf '| %s | %d | %d | %d | %d |\n' "$class" $((r + o + w)) "$r" "$o" "$w"

@@ -1257,7 +1257,7 @@ mod cli_sweep {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        let tmp = stopped.with_file_name(format!(".stopped.csv.tmp-{}", child.id()));
+        let tmp = stopped.with_file_name(format!(".stopped.csv.tmp-{}-0", child.id()));
         let start = std::time::Instant::now();
         while std::fs::read_to_string(&tmp).map_or(0, |t| t.lines().count()) < 2 {
             assert!(start.elapsed().as_secs() < 120, "no rows written");

@@ -559,7 +559,7 @@ mod reliability {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        let tmp = dir.join(format!(".stopped.csv.tmp-{}", child.id()));
+        let tmp = dir.join(format!(".stopped.csv.tmp-{}-0", child.id()));
         let start = Instant::now();
         while std::fs::read_to_string(&tmp).map_or(0, |t| t.lines().count()) < 2 {
             assert!(

@@ -36,6 +36,10 @@ static STOP: Mutex<Option<Arc<AtomicBool>>> = Mutex::new(None);
 /// A counter that keeps the temporary names of one process distinct.
 static SERIAL: AtomicUsize = AtomicUsize::new(0);
 
+/// The longest file name, in bytes, that the temporary names are kept within: the `NAME_MAX`
+/// of Linux's file systems (ext4, XFS, Btrfs, tmpfs) and of macOS's APFS.
+const NAME_MAX: usize = 255;
+
 /// How many symbolic links are followed before giving up (the limit of Linux's `ELOOP`).
 const MAX_LINK_DEPTH: usize = 40;
 
@@ -62,6 +66,25 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => replace(&target, None, fill),
         Err(e) => Err(io(e)),
     }
+}
+
+/// Whether `path` is the standard output of this process: `-`, or a file (after its links)
+/// that standard output is open on (`/dev/stdout`, or the file that `> FILE` redirects it
+/// to): a command that writes both its report and a file there must send one elsewhere.
+pub fn is_standard_output(path: &Path) -> bool {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    if path == Path::new("-") {
+        return true;
+    }
+    let stdout = std::io::stdout();
+    let same = |meta: std::fs::Metadata| -> Option<bool> {
+        let open = File::from(stdout.as_fd().try_clone_to_owned().ok()?)
+            .metadata()
+            .ok()?;
+        Some((open.dev(), open.ino()) == (meta.dev(), meta.ino()))
+    };
+    std::fs::metadata(path).ok().and_then(same).unwrap_or(false)
 }
 
 /// Write bytes safely (see [`write_atomic`]).
@@ -133,17 +156,7 @@ fn replace(
     fill: impl FnOnce(&mut dyn Write) -> Result<()>,
 ) -> Result<()> {
     let io = AppError::io(target);
-    let name = target.file_name().ok_or_else(|| RouthError::Option {
-        name: "output path",
-        value: target.display().to_string(),
-        rule: "must name a file",
-    })?;
-    let temporary = Temporary::register(target.with_file_name(format!(
-        ".{}.tmp-{}-{}",
-        name.to_string_lossy(),
-        std::process::id(),
-        SERIAL.fetch_add(1, Ordering::Relaxed)
-    )));
+    let temporary = Temporary::register(temporary_beside(target, "output path")?);
     let file = OpenOptions::new()
         .write(true)
         .create_new(true)
@@ -160,6 +173,31 @@ fn replace(
     std::fs::rename(&temporary.path, target).map_err(&io)?;
     temporary.renamed();
     Ok(())
+}
+
+/// The temporary name beside `target` (the option that named it: `option`):
+/// `.NAME.tmp-PID-N`, N distinct within the process, the name part cut so that the whole
+/// stays within [`NAME_MAX`] bytes whatever the target's name (a name of 255 bytes is valid
+/// and its temporary must be too). The cut keeps the name unique: PID and N are whole.
+pub(crate) fn temporary_beside(target: &Path, option: &'static str) -> Result<PathBuf> {
+    use std::os::unix::ffi::{OsStrExt, OsStringExt};
+    let name = target.file_name().ok_or_else(|| RouthError::Option {
+        name: option,
+        value: target.display().to_string(),
+        rule: "must name a file",
+    })?;
+    let suffix = format!(
+        ".tmp-{}-{}",
+        std::process::id(),
+        SERIAL.fetch_add(1, Ordering::Relaxed)
+    );
+    let room = NAME_MAX - 1 - suffix.len();
+    let kept = &name.as_bytes()[..name.len().min(room)];
+    let mut temporary = Vec::with_capacity(NAME_MAX);
+    temporary.push(b'.');
+    temporary.extend_from_slice(kept);
+    temporary.extend_from_slice(suffix.as_bytes());
+    Ok(target.with_file_name(std::ffi::OsString::from_vec(temporary)))
 }
 
 /// Resolve symbolic links in the last component of `path`, to any depth, so that a link is
@@ -284,6 +322,37 @@ mod tests {
         write_bytes_atomic(Path::new("/dev/null"), b"anything").unwrap();
         let meta = std::fs::metadata("/dev/null").unwrap();
         assert!(!meta.is_file(), "/dev/null must stay a device");
+    }
+
+    #[test]
+    fn the_temporary_name_of_a_longest_name_fits_and_stays_unique() {
+        let name = "n".repeat(NAME_MAX);
+        let target = scratch("long").with_file_name(&name);
+        let (a, b) = (
+            temporary_beside(&target, "out").unwrap(),
+            temporary_beside(&target, "out").unwrap(),
+        );
+        assert_ne!(a, b);
+        for t in [&a, &b] {
+            let n = t.file_name().unwrap().to_str().unwrap();
+            assert!(n.len() <= NAME_MAX && n.starts_with(".nnn"), "{n}");
+            assert!(n.contains(&format!(".tmp-{}-", std::process::id())), "{n}");
+        }
+        write_bytes_atomic(&target, b"long").unwrap();
+        assert_eq!(std::fs::read(&target).unwrap(), b"long");
+        assert!(leftovers(target.parent().unwrap()).is_empty());
+        // A short name is kept whole.
+        let short = temporary_beside(Path::new("dir/x.csv"), "out").unwrap();
+        assert!(
+            short.to_str().unwrap().starts_with("dir/.x.csv.tmp-"),
+            "{short:?}"
+        );
+    }
+
+    #[test]
+    fn standard_output_is_recognised_by_name() {
+        assert!(is_standard_output(Path::new("-")));
+        assert!(!is_standard_output(&scratch("not-stdout.txt")));
     }
 
     #[test]

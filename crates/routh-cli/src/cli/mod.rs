@@ -97,6 +97,18 @@ pub fn print_json<T: serde::Serialize>(value: &T) -> AppResult<()> {
     out!("{}", json(value))
 }
 
+/// Print a command's report (its text summary or JSON) on standard output, or on standard
+/// error when a file of the command already goes to standard output (`--out -`,
+/// `--markdown -`): one stream per destination.
+pub fn report(text: &str, file_on_stdout: bool) -> AppResult<()> {
+    if file_on_stdout {
+        eprint!("{text}");
+        Ok(())
+    } else {
+        out!("{text}")
+    }
+}
+
 /// Write on standard output: the one path of the commands' output. Where `print!` would panic
 /// on a write error, this returns it, naming standard output.
 pub fn write_out(text: std::fmt::Arguments) -> AppResult<()> {

@@ -94,8 +94,18 @@ pub struct Written {
     pub skipped: Vec<String>,
 }
 
-/// Create the output directory, naming it in the error.
+/// Create the output directory, naming it in the error. `-` is refused: it names standard
+/// output elsewhere, which cannot hold files (`./-` is a directory named `-`).
 pub fn create_dir(dir: &Path) -> Result<()> {
+    if dir == Path::new("-") {
+        return Err(RouthError::Option {
+            name: "out",
+            value: "-".into(),
+            rule: "names a directory for the files, not standard output (`./-` for a directory \
+                   named -)",
+        }
+        .into());
+    }
     std::fs::create_dir_all(dir).map_err(AppError::io(dir))
 }
 

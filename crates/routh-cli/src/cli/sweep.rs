@@ -4,8 +4,8 @@
 use routh::integrate::Method;
 use routh::sweep::open;
 use routh::sweep::record::{columns, Row};
-use routh::sweep::table::TableWriter;
-use routh::sweep::{Completion, Overrides, Sweep};
+use routh::sweep::table::{Resumed, TableWriter};
+use routh::sweep::{pool, Completion, Overrides, Sweep};
 use routh::{AppResult as Result, FileError, RouthError};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -46,14 +46,15 @@ pub struct Args {
     /// by the sweep's own table (`SWEEP_AUTO_TABLE`) and the rows name the method that ran.
     #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method)]
     pub method: Method,
-    /// Worker threads (default: one per core).
+    /// Worker threads (default, or 0: one per core; at most 4 per available core).
     #[arg(long)]
     pub threads: Option<usize>,
     /// The table: FILE.parquet (build with `--features parquet`) or FILE.csv; without it the
     /// rows go to stdout as CSV (or in the JSON).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Continue a stopped sweep: keep the rows of `--out` and run only the missing runs.
+    /// Continue a stopped sweep: keep the rows of `--out` and run only the missing runs (a
+    /// last row cut short is dropped, and said, and its run done again).
     #[arg(long)]
     pub resume: bool,
     /// Print the summary and every row as JSON.
@@ -90,9 +91,7 @@ pub fn run(args: Args) -> Result<()> {
         message: format!("cannot read: {e}"),
     })?;
     let source = args.case.display().to_string();
-    if let Some(n) = args.threads {
-        routh::case::check_option("threads", n as f64, n >= 1, "must be >= 1")?;
-    }
+    let pool = pool(args.threads.unwrap_or(0))?;
     if args.resume && args.out.is_none() {
         return Err(RouthError::Option {
             name: "resume",
@@ -110,7 +109,8 @@ pub fn run(args: Args) -> Result<()> {
     };
     let mut sweep = Sweep::new(&text, &source, overrides)?;
     sweep.batch = !args.no_batch;
-    let (mut writer, done): (Box<dyn TableWriter>, _) = match &args.out {
+    let sweep = Arc::new(sweep);
+    let (mut writer, resumed): (Box<dyn TableWriter>, Resumed) = match &args.out {
         Some(path) => open(path, &sweep, args.resume)?,
         None => {
             if !args.json {
@@ -125,17 +125,16 @@ pub fn run(args: Args) -> Result<()> {
             )
         }
     };
+    let done = &resumed.done;
+    if let (Some(partial), Some(path)) = (&resumed.dropped, &args.out) {
+        eprintln!(
+            "routh sweep: dropped the last row of {}, cut short ({partial}): its run is done again",
+            path.display()
+        );
+    }
     let todo: Vec<u64> = (0..sweep.runs()).filter(|k| !done.contains(k)).collect();
     let stop = Arc::new(AtomicBool::new(false));
     routh::output::stop_on_signal(stop.clone());
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0))
-        .build()
-        .map_err(|e| RouthError::Option {
-            name: "threads",
-            value: format!("{:?} ({e})", args.threads),
-            rule: "the thread pool must start",
-        })?;
     let bar = if std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new(sweep.runs());
         bar.set_style(
@@ -154,29 +153,27 @@ pub fn run(args: Args) -> Result<()> {
     let (mut ran, mut failed) = (0u64, 0u64);
     let settings_row = sweep.run_settings();
     let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
-    let completion = pool.install(|| {
-        sweep.execute(&todo, chunk(sweep.runs()), &stop, &mut |rows| {
-            if args.out.is_some() || !args.json {
-                writer.write(rows)?;
-            }
-            ran += rows.len() as u64;
-            failed += rows
-                .iter()
-                .filter(|r| r.status == routh::sweep::record::Status::Failed)
-                .count() as u64;
-            if args.json {
-                json_rows.extend(rows.iter().map(|r| {
-                    let cells = r.cells(&settings_row);
-                    names
-                        .iter()
-                        .cloned()
-                        .zip(cells.iter().map(|c| c.to_json()))
-                        .collect::<serde_json::Map<_, _>>()
-                }));
-            }
-            bar.inc(rows.len() as u64);
-            Ok(())
-        })
+    let completion = sweep.execute(todo, &pool, chunk(sweep.runs()), &stop, &mut |rows| {
+        if args.out.is_some() || !args.json {
+            writer.write(rows)?;
+        }
+        ran += rows.len() as u64;
+        failed += rows
+            .iter()
+            .filter(|r| r.status == routh::sweep::record::Status::Failed)
+            .count() as u64;
+        if args.json {
+            json_rows.extend(rows.iter().map(|r| {
+                let cells = r.cells(&settings_row);
+                names
+                    .iter()
+                    .cloned()
+                    .zip(cells.iter().map(|c| c.to_json()))
+                    .collect::<serde_json::Map<_, _>>()
+            }));
+        }
+        bar.inc(rows.len() as u64);
+        Ok(())
     })?;
     bar.finish_and_clear();
     writer.finish()?;
@@ -187,6 +184,7 @@ pub fn run(args: Args) -> Result<()> {
             "case": source,
             "runs": sweep.runs(),
             "resumed": done.len(),
+            "dropped_partial_row": resumed.dropped,
             "ran": ran,
             "failed": failed,
             "stopped": stopped,

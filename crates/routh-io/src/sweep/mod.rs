@@ -21,20 +21,15 @@ pub mod spec;
 pub mod table;
 pub mod turning;
 
-pub use runner::{Completion, Overrides, Sweep};
+pub use runner::{pool, Completion, Overrides, Sweep};
 
 use crate::error::{AppResult as Result, RouthError};
-use std::collections::HashSet;
 use std::path::Path;
-use table::TableWriter;
+use table::{Resumed, TableWriter};
 
 /// Open the table `target` for `sweep`: CSV or Parquet by the extension. Returns the writer
-/// and the runs already in the file (with `resume`).
-pub fn open(
-    target: &Path,
-    sweep: &Sweep,
-    resume: bool,
-) -> Result<(Box<dyn TableWriter>, HashSet<u64>)> {
+/// and what is kept of the file (with `resume`).
+pub fn open(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Box<dyn TableWriter>, Resumed)> {
     match target.extension().and_then(|e| e.to_str()) {
         Some("csv") => {
             let (t, done) = csv::CsvTable::create(target, sweep, resume)?;

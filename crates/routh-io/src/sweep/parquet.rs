@@ -6,7 +6,7 @@
 
 use super::record::{columns, Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{check_resumed_row, not_this_sweep, Staged, TableWriter};
+use super::table::{check_resumed_row, not_this_sweep, Resumed, Staged, TableWriter};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::row::{Cell, Kind};
 use arrow_array::{Array, ArrayRef, Float64Array, RecordBatch, StringArray, UInt64Array};
@@ -115,7 +115,7 @@ impl ParquetTable {
     /// Start writing `target`; with `resume`, copy the rows of an existing `target` (checked
     /// to be rows of this sweep: same case text, settings, and design values) and return the
     /// runs they hold.
-    pub fn create(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Self, HashSet<u64>)> {
+    pub fn create(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Self, Resumed)> {
         let schema = schema(sweep);
         let settings = sweep.run_settings();
         let staged = Staged::beside(target)?;
@@ -129,7 +129,7 @@ impl ParquetTable {
             .build();
         let file = std::fs::File::create(&staged.tmp).map_err(|e| staged.io(e))?;
         let mut writer = ArrowWriter::try_new(file, schema.clone(), Some(props))
-            .map_err(|e| parquet_error(&staged.tmp, e))?;
+            .map_err(|e| parquet_error(&staged.target, e))?;
         let mut done = HashSet::new();
         if resume && target.exists() {
             let file = std::fs::File::open(target).map_err(|source| FileError::Io {
@@ -188,9 +188,11 @@ impl ParquetTable {
                 }
                 writer
                     .write(&b)
-                    .map_err(|e| parquet_error(&staged.tmp, e))?;
+                    .map_err(|e| parquet_error(&staged.target, e))?;
             }
-            writer.flush().map_err(|e| parquet_error(&staged.tmp, e))?;
+            writer
+                .flush()
+                .map_err(|e| parquet_error(&staged.target, e))?;
         }
         let table = ParquetTable {
             staged,
@@ -198,7 +200,13 @@ impl ParquetTable {
             schema,
             settings,
         };
-        Ok((table, done))
+        Ok((
+            table,
+            Resumed {
+                done,
+                dropped: None,
+            },
+        ))
     }
 }
 
@@ -208,17 +216,17 @@ impl TableWriter for ParquetTable {
         let writer = self.writer.as_mut().expect("open until finish");
         writer
             .write(&b)
-            .map_err(|e| parquet_error(&self.staged.tmp, e))?;
+            .map_err(|e| parquet_error(&self.staged.target, e))?;
         writer
             .flush()
-            .map_err(|e| parquet_error(&self.staged.tmp, e))
+            .map_err(|e| parquet_error(&self.staged.target, e))
     }
 
     fn finish(mut self: Box<Self>) -> Result<()> {
         let writer = self.writer.take().expect("open until finish");
         let file = writer
             .into_inner()
-            .map_err(|e| parquet_error(&self.staged.tmp, e))?;
+            .map_err(|e| parquet_error(&self.staged.target, e))?;
         file.sync_all().map_err(|e| self.staged.io(e))?;
         let ParquetTable { staged, .. } = *self;
         staged.commit()

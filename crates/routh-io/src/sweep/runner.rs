@@ -17,8 +17,48 @@ use crate::quadrature::{ExactSolution, Motion};
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
 use crate::state::State;
 use rayon::prelude::*;
+use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Instant;
+use std::sync::mpsc::{channel, RecvTimeoutError};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// The most worker threads per available core ([`pool`]): the runs are computation, so more
+/// threads than cores only share them (and 10,000 threads of one process slow the machine).
+pub const MAX_THREADS_PER_CORE: usize = 4;
+
+/// How often [`Sweep::execute`] looks at the stop flag while waiting for rows: a stop is
+/// obeyed within this time plus the writing of the rows done.
+const POLL: Duration = Duration::from_millis(50);
+
+/// Where the rows go as their runs end: `(position in the list of runs, row)`, from any thread.
+type Sink<'s> = &'s (dyn Fn(usize, Row) + Sync);
+
+/// A pool of `threads` worker threads (0: one per core), at most [`MAX_THREADS_PER_CORE`]
+/// per available core (`std::thread::available_parallelism`), refused above with the rule.
+pub fn pool(threads: usize) -> Result<rayon::ThreadPool> {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if threads > MAX_THREADS_PER_CORE * cores {
+        return Err(RouthError::Option {
+            name: "threads",
+            value: format!("{threads} ({cores} cores available)"),
+            rule: "must be at most 4 per available core (the runs are computation: more threads \
+                   than cores only share them)",
+        }
+        .into());
+    }
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| {
+            RouthError::Option {
+                name: "threads",
+                value: format!("{threads} ({e})"),
+                rule: "the thread pool must start",
+            }
+            .into()
+        })
+}
 
 /// A sweep ready to run: the base case, the design, the settings of every run.
 #[derive(Debug, Clone)]
@@ -36,9 +76,10 @@ pub struct Sweep {
     pub batch: bool,
 }
 
-/// A run waiting for a lane: its place among the rows, its number, case and initial state.
+/// A run waiting for a lane: its position in the list of runs, its number, case and initial
+/// state.
 struct Pending {
-    slot: usize,
+    position: usize,
     k: u64,
     case: Case,
     x0: [f64; 6],
@@ -60,7 +101,7 @@ struct LaneQueue<'b, I> {
     body: &'b Body,
     pending: I,
     lanes: [Option<InLane<'b>>; LANES],
-    rows: &'b mut [Option<Row>],
+    sink: Sink<'b>,
     stop: &'b AtomicBool,
 }
 
@@ -96,7 +137,7 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
             return;
         };
         let (sweep, run) = (self.sweep, done.run);
-        self.rows[run.slot] = Some(match end.stop {
+        let row = match end.stop {
             Stop::Failed(e) => sweep.failed(run.k, RouthError::from(e).to_string()),
             _ => {
                 let summary = Summary {
@@ -114,7 +155,8 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                 };
                 sweep.finished(run.k, self.body, &run.case, summary, done.turning.summary())
             }
-        });
+        };
+        (self.sink)(run.position, row);
     }
 }
 
@@ -404,20 +446,25 @@ impl Sweep {
             && self.settings.t_end() > 0.0
     }
 
-    /// The runs `runs` (on this thread), in their order, the runs of each body together in
-    /// lanes of the batched DOP853 ([`batch::lanes`]) or Taylor method ([`batch::taylor::lanes`]):
-    /// each row bitwise the row of [`Sweep::run`].
-    /// Once `stop` is set no run starts. Should the batch panic, its runs are run one at a
-    /// time (where a panicking run is a failed row).
-    fn run_in_lanes(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+    /// The runs `runs` (on this thread), whose positions in the list of runs start at `first`,
+    /// the runs of each body together in lanes of the batched DOP853 ([`batch::lanes`]) or
+    /// Taylor method ([`batch::taylor::lanes`]): each row bitwise the row of [`Sweep::run`],
+    /// handed to `sink` as its run ends. Once `stop` is set no run starts. Should the batch
+    /// panic, its runs are run one at a time (where a panicking run is a failed row; a row
+    /// handed over twice is the same row).
+    fn run_in_lanes(&self, runs: &[u64], first: usize, stop: &AtomicBool, sink: Sink<'_>) {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let mut rows: Vec<Option<Row>> = vec![None; runs.len()];
             let mut bodies: Vec<(Body, Vec<Pending>)> = Vec::new();
-            for (slot, &k) in runs.iter().enumerate() {
+            for (position, &k) in (first..).zip(runs) {
                 match self.start(k) {
-                    Err(e) => rows[slot] = Some(self.failed(k, e.to_string())),
+                    Err(e) => sink(position, self.failed(k, e.to_string())),
                     Ok((case, body, x0)) => {
-                        let run = Pending { slot, k, case, x0 };
+                        let run = Pending {
+                            position,
+                            k,
+                            case,
+                            x0,
+                        };
                         match bodies.iter_mut().find(|(b, _)| *b == body) {
                             Some((_, group)) => group.push(run),
                             None => bodies.push((body, vec![run])),
@@ -433,7 +480,7 @@ impl Sweep {
                     body,
                     pending: group.iter(),
                     lanes: std::array::from_fn(|_| None),
-                    rows: &mut rows,
+                    sink,
                     stop,
                 };
                 let sys = ReducedSystem(body);
@@ -442,61 +489,114 @@ impl Sweep {
                     _ => batch::integrate_in_lanes(&sys, &opts, &mut queue),
                 }
             }
-            Ok::<_, AppError>(rows.into_iter().flatten().collect())
+            Ok::<_, AppError>(())
         }));
-        let one_at_a_time = || {
-            runs.iter()
-                .filter(|_| !stop.load(Ordering::Relaxed))
-                .map(|&k| self.run(k))
-                .collect()
-        };
-        match attempt {
-            Ok(Ok(rows)) => rows,
-            _ => one_at_a_time(),
+        if !matches!(attempt, Ok(Ok(()))) {
+            for (position, &k) in (first..).zip(runs) {
+                if stop.load(Ordering::Relaxed) {
+                    return;
+                }
+                sink(position, self.run(k));
+            }
         }
     }
 
-    /// The rows of `runs` in their order, on the current rayon pool: in lanes
+    /// The runs `runs`, whose positions in the list of runs start at `first`, on the current
+    /// rayon pool, each row handed to `sink` with its position as its run ends: in lanes
     /// ([`Sweep::run_in_lanes`], in pieces of a few hundred runs) or one run at a time. Once
     /// `stop` is set no run starts.
-    fn run_many(&self, runs: &[u64], stop: &AtomicBool) -> Vec<Row> {
+    fn run_many(&self, runs: &[u64], first: usize, stop: &AtomicBool, sink: Sink<'_>) {
         if self.in_lanes() {
             let piece = (runs.len() / (4 * rayon::current_num_threads())).clamp(4 * LANES, 512);
             runs.par_chunks(piece)
-                .flat_map_iter(|part| self.run_in_lanes(part, stop))
-                .collect()
+                .enumerate()
+                .for_each(|(i, part)| self.run_in_lanes(part, first + i * piece, stop, sink));
         } else {
-            runs.par_iter()
-                .filter_map(|&k| (!stop.load(Ordering::Relaxed)).then(|| self.run(k)))
-                .collect()
+            runs.par_iter().enumerate().for_each(|(i, &k)| {
+                if !stop.load(Ordering::Relaxed) {
+                    sink(first + i, self.run(k));
+                }
+            });
         }
     }
 
-    /// Run the runs `todo` (in chunks of `chunk` runs, each chunk's runs in parallel on the
-    /// current rayon pool), handing each chunk's rows, in the order of `todo`, to `write`.
-    /// Between runs `stop` is polled: once it is set no new run starts, the rows done are
-    /// written, and the result is [`Completion::Stopped`].
+    /// Run the runs `todo` on `pool` (made by [`pool`]), `chunk` runs at a time (each
+    /// chunk's runs in parallel), handing their rows, in the order of `todo`, to `write`, one
+    /// chunk at a time (so that at most a chunk of rows waits in memory for its turn).
+    /// The runs go on in the pool while this thread waits for their rows and polls `stop`
+    /// (every [`POLL`]): once it is set no new run starts, the rows of every run ended so far
+    /// are written (in the order of `todo`), and the result is [`Completion::Stopped`] at
+    /// once; the runs still in progress are abandoned (their threads end after them, their
+    /// rows are dropped), so that a stop is obeyed within a fraction of a second however long
+    /// a run is.
     pub fn execute(
-        &self,
-        todo: &[u64],
+        self: &Arc<Self>,
+        todo: Vec<u64>,
+        pool: &rayon::ThreadPool,
         chunk: usize,
-        stop: &AtomicBool,
+        stop: &Arc<AtomicBool>,
         write: &mut dyn FnMut(&[Row]) -> Result<()>,
     ) -> Result<Completion> {
-        for part in todo.chunks(chunk.max(1)) {
-            let rows = self.run_many(part, stop);
-            if !rows.is_empty() {
-                write(&rows)?;
+        let chunk = chunk.max(1);
+        let (sender, rows) = channel::<(usize, Row)>();
+        let (sweep, flag) = (Arc::clone(self), Arc::clone(stop));
+        pool.spawn(move || {
+            let sink = move |position: usize, row: Row| {
+                // The receiver is gone only after a stop: the row is dropped.
+                let _ = sender.send((position, row));
+            };
+            for (i, part) in todo.chunks(chunk).enumerate() {
+                if flag.load(Ordering::Relaxed) {
+                    return;
+                }
+                sweep.run_many(part, i * chunk, &flag, &sink);
+            }
+        });
+        let mut waiting: BTreeMap<usize, Row> = BTreeMap::new();
+        let mut ready: Vec<Row> = Vec::with_capacity(chunk);
+        let mut next = 0;
+        loop {
+            let ended = match rows.recv_timeout(POLL) {
+                Ok((position, row)) => {
+                    if position >= next {
+                        waiting.entry(position).or_insert(row);
+                    }
+                    false
+                }
+                Err(RecvTimeoutError::Timeout) => false,
+                Err(RecvTimeoutError::Disconnected) => true,
+            };
+            while let Some(row) = waiting.remove(&next) {
+                ready.push(row);
+                next += 1;
+                if ready.len() == chunk {
+                    write(&ready)?;
+                    ready.clear();
+                }
             }
             if stop.load(Ordering::Relaxed) {
+                for (position, row) in rows.try_iter() {
+                    if position >= next {
+                        waiting.entry(position).or_insert(row);
+                    }
+                }
+                ready.extend(std::mem::take(&mut waiting).into_values());
+                if !ready.is_empty() {
+                    write(&ready)?;
+                }
                 return Ok(Completion::Stopped);
             }
+            if ended {
+                if !ready.is_empty() {
+                    write(&ready)?;
+                }
+                return Ok(Completion::Finished);
+            }
         }
-        Ok(Completion::Finished)
     }
 
-    /// The rows of the runs `start <= run < stop`, in order, computed on a pool of `threads`
-    /// threads (0: one per core).
+    /// The rows of the runs `start <= run < stop`, in order, computed on a [`pool`] of
+    /// `threads` threads (0: one per core).
     pub fn rows(&self, start: u64, stop: u64, threads: usize) -> Result<Vec<Row>> {
         if start > stop || stop > self.runs() {
             return Err(RouthError::Option {
@@ -506,16 +606,18 @@ impl Sweep {
             }
             .into());
         }
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(|e| RouthError::Option {
-                name: "threads",
-                value: format!("{threads} ({e})"),
-                rule: "the thread pool must start",
-            })?;
+        let pool = pool(threads)?;
         let todo: Vec<u64> = (start..stop).collect();
-        let never = AtomicBool::new(false);
-        Ok(pool.install(|| self.run_many(&todo, &never)))
+        let rows = Mutex::new(vec![None; todo.len()]);
+        let sink = |position: usize, row: Row| {
+            rows.lock().unwrap_or_else(|e| e.into_inner())[position] = Some(row);
+        };
+        pool.install(|| self.run_many(&todo, 0, &AtomicBool::new(false), &sink));
+        Ok(rows
+            .into_inner()
+            .unwrap_or_else(|e| e.into_inner())
+            .into_iter()
+            .flatten()
+            .collect())
     }
 }

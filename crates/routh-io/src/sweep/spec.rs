@@ -29,6 +29,16 @@
 
 use serde::Deserialize;
 
+/// The most runs of a sweep, on a grid (the product of its axes' points, and each axis) or a
+/// random design (`samples`), refused before any value is built: a run takes milliseconds to
+/// seconds, so 10^6 runs are hours to weeks of a core, and their table about 0.5 GB of CSV
+/// (and, with `--json`, about 2 GB of rows kept in memory until printed).
+pub const MAX_RUNS: u64 = 1_000_000;
+
+/// The rule of [`MAX_RUNS`], as the refusals state it.
+const MAX_RUNS_RULE: &str = "a sweep has at most 1000000 runs (a run takes milliseconds to \
+                             seconds: 10^6 runs are hours to weeks of a core)";
+
 /// A `[sweep]` table that cannot be run, refused before any run starts; it names the key
 /// and the value. [`crate::sweep::Sweep::new`] reports it as an error of the case file.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -149,6 +159,16 @@ pub enum Points {
     },
 }
 
+impl Points {
+    /// The number of points on a grid axis (a range of a random design counts as one).
+    pub fn count(&self) -> u64 {
+        match self {
+            Points::Values(v) => v.len() as u64,
+            Points::Range { .. } => 1,
+        }
+    }
+}
+
 /// A random design over a box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RandomDesign {
@@ -226,6 +246,9 @@ impl Spec {
                     if n <= 0 {
                         return Err(refuse(key, n, "must be >= 1"));
                     }
+                    if n as u64 > MAX_RUNS {
+                        return Err(refuse(key, n, MAX_RUNS_RULE));
+                    }
                     samples = Some(n as u64);
                 }
                 "design" => {
@@ -296,7 +319,20 @@ impl Spec {
                 "needs `samples = N` (a grid is not random)",
             ));
         }
-        Ok(Spec { axes, plan })
+        let spec = Spec { axes, plan };
+        if spec.runs() > MAX_RUNS {
+            let sizes: Vec<String> = spec
+                .axes
+                .iter()
+                .map(|a| format!("{} ({})", a.name, a.points.count()))
+                .collect();
+            return Err(refuse(
+                "[sweep]",
+                format!("a grid of {} runs: {}", spec.runs(), sizes.join(" x ")),
+                MAX_RUNS_RULE,
+            ));
+        }
+        Ok(spec)
     }
 
     fn axis(key: &str, value: &toml::Value, random: bool) -> Result<Axis> {
@@ -367,6 +403,9 @@ impl Spec {
                             points: Points::Range { lo, hi, scale },
                         })
                     }
+                    (Some(n), false) if n as u64 > MAX_RUNS => {
+                        return Err(refuse(key, format!("n = {n}"), MAX_RUNS_RULE))
+                    }
                     (Some(n), false) if n >= 2 => (0..n)
                         .map(|i| scale.at(lo, hi, i as f64 / (n - 1) as f64))
                         .collect(),
@@ -407,17 +446,15 @@ impl Spec {
         })
     }
 
-    /// The number of runs.
+    /// The number of runs (saturating at `u64::MAX`: [`Spec::parse`] refuses more than
+    /// [`MAX_RUNS`]).
     pub fn runs(&self) -> u64 {
         match self.plan {
             Plan::Grid => self
                 .axes
                 .iter()
-                .map(|a| match &a.points {
-                    Points::Values(v) => v.len() as u64,
-                    Points::Range { .. } => 1,
-                })
-                .product(),
+                .map(|a| a.points.count())
+                .fold(1u64, u64::saturating_mul),
             Plan::Random { samples, .. } => samples,
         }
     }
@@ -425,5 +462,47 @@ impl Spec {
     /// The column names of the swept quantities.
     pub fn names(&self) -> Vec<String> {
         self.axes.iter().map(|a| a.name.clone()).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Spec> {
+        Spec::parse(&text.parse::<toml::Table>().unwrap())
+    }
+
+    #[test]
+    fn the_runs_are_bounded_before_any_value_is_built() {
+        assert_eq!(
+            parse(
+                "tilt = { range = [0.1, 1.0], n = 1000 }\nspin = { range = [1.0, 9.0], n = 1000 }"
+            )
+            .unwrap()
+            .runs(),
+            MAX_RUNS
+        );
+        for (text, key, value) in [
+            (
+                "tilt = { range = [0.1, 1.0], n = 1000000000000 }",
+                "tilt",
+                "n = 1000000000000",
+            ),
+            (
+                "samples = 1000001\ntilt = { range = [0.1, 1.0] }",
+                "samples",
+                "1000001",
+            ),
+            (
+                "tilt = { range = [0.1, 1.0], n = 1000 }\nspin = { range = [1.0, 9.0], n = 1001 }",
+                "[sweep]",
+                "a grid of 1001000 runs: spin (1001) x tilt (1000)",
+            ),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert_eq!((e.key.as_str(), e.value.as_str()), (key, value), "{e}");
+            assert!(e.rule.contains(&format!("at most {MAX_RUNS} runs")), "{e}");
+        }
     }
 }

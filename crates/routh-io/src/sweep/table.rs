@@ -8,7 +8,8 @@
 
 use super::record::Row;
 use super::runner::Sweep;
-use crate::error::{AppError, AppResult as Result, FileError, RouthError};
+use crate::error::{AppError, AppResult as Result, FileError};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 /// A table being written.
@@ -17,6 +18,46 @@ pub trait TableWriter: Send {
     fn write(&mut self, rows: &[Row]) -> Result<()>;
     /// Close the file and move it to the target.
     fn finish(self: Box<Self>) -> Result<()>;
+}
+
+/// What `--resume` found in an existing table.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Resumed {
+    /// The runs whose rows were kept (and are not run again).
+    pub done: HashSet<u64>,
+    /// The last row, cut short (a process ended while writing it), dropped: its run is run
+    /// again.
+    pub dropped: Option<PartialRow>,
+}
+
+/// A last row cut short, dropped by `--resume`.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct PartialRow {
+    /// Its line in the file (the header is line 1).
+    pub line: u64,
+    /// The columns it holds.
+    pub columns: usize,
+    /// The columns of a row.
+    pub expected: usize,
+    /// Whether it ends with a line break (every complete row does).
+    pub line_break: bool,
+}
+
+impl std::fmt::Display for PartialRow {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "line {} holds {} of {} columns{}",
+            self.line,
+            self.columns,
+            self.expected,
+            if self.line_break {
+                ""
+            } else {
+                " and no line break"
+            }
+        )
+    }
 }
 
 /// A temporary file beside `target`, removed unless committed.
@@ -29,18 +70,9 @@ pub struct Staged {
 }
 
 impl Staged {
-    /// A temporary path beside `target`.
+    /// A temporary path beside `target` ([`crate::output`]'s temporary name).
     pub fn beside(target: &Path) -> Result<Self> {
-        let name = target.file_name().ok_or_else(|| RouthError::Option {
-            name: "out",
-            value: target.display().to_string(),
-            rule: "must name a file",
-        })?;
-        let tmp = target.with_file_name(format!(
-            ".{}.tmp-{}",
-            name.to_string_lossy(),
-            std::process::id()
-        ));
+        let tmp = crate::output::temporary_beside(target, "out")?;
         // A signal that ends the process (a second one, after the sweep's stop) removes it.
         crate::output::register_temporary(&tmp);
         Ok(Staged {
@@ -50,10 +82,11 @@ impl Staged {
         })
     }
 
-    /// An I/O error on the temporary file.
+    /// An I/O error on the temporary file, named by the target (the file the user asked
+    /// for; the temporary is an implementation detail).
     pub fn io(&self, source: std::io::Error) -> AppError {
         FileError::Io {
-            path: self.tmp.clone(),
+            path: self.target.clone(),
             source,
         }
         .into()

@@ -15,6 +15,7 @@
 
 use crate::body::Body;
 use crate::differential::Dual6;
+use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::integrals::geometric;
 use crate::poisson::first::{Alpha, Beta, FirstBracket, UserFunction};
@@ -56,7 +57,14 @@ impl Status {
     }
 }
 
+/// The most points per claim of an audit run ([`Sample::new`]). The audit of 20 points takes
+/// about a second and a half (on one core of the machine of docs/reliability.md), and its time
+/// grows with the points: 100,000 points are a few hours and a few megabytes (each point is
+/// 48 bytes), where 10^12 asked for 48 TB at once.
+pub const MAX_POINTS: usize = 100_000;
+
 /// The random points of an audit run: `count` points from the SplitMix64 stream of `seed`.
+/// [`Sample::new`] checks the count; the fields are public for the fixed samples of tests.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Sample {
     /// The seed of the generator.
@@ -66,6 +74,21 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// The sample of `count` points from the stream of `seed`: `count` between 1 and
+    /// [`MAX_POINTS`], refused with the rule otherwise, before any point is drawn.
+    pub fn new(seed: u64, count: usize) -> Result<Self> {
+        if (1..=MAX_POINTS).contains(&count) {
+            Ok(Sample { seed, count })
+        } else {
+            Err(RouthError::Option {
+                name: "points",
+                value: count.to_string(),
+                rule: "must be between 1 and 100000 (the audit of 20 points takes about 1.5 s: \
+                       100000 take hours)",
+            })
+        }
+    }
+
     /// Points on `|gamma| = 1` away from the singular sets (see the module documentation).
     pub fn points(&self, body: &Body) -> Vec<[f64; 6]> {
         let mut rng = SplitMix64::new(self.seed);
@@ -296,4 +319,26 @@ pub fn of(body: Body, h: fn(&Body, &[Dual6; 6]) -> Dual6) -> impl Fn(&[Dual6; 6]
 /// `H4 = (gamma, gamma)`.
 pub fn h4(x: &[Dual6; 6]) -> Dual6 {
     geometric(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sample_is_bounded_before_any_point_is_drawn() {
+        assert_eq!(Sample::new(3, 7).unwrap(), Sample { seed: 3, count: 7 });
+        assert!(Sample::new(3, MAX_POINTS).is_ok());
+        for count in [0, MAX_POINTS + 1, 1_000_000_000_000] {
+            let e = Sample::new(3, count).unwrap_err().to_string();
+            assert!(
+                e.contains("points") && e.contains(&count.to_string()),
+                "{e}"
+            );
+            assert!(
+                e.contains(&MAX_POINTS.to_string()),
+                "the rule states the bound: {e}"
+            );
+        }
+    }
 }
