@@ -2,11 +2,8 @@
 
 use crate::convert::{bad_argument, record};
 use pyo3::prelude::*;
+use routh_core::audit::claim::MAX_POINTS;
 use routh_core::audit::claims::{audit as run_audit, Sample};
-
-/// Most points per claim (the audit of 20 points takes a few seconds; this bounds a call to
-/// hours, not years).
-const MAX_POINTS: usize = 100_000;
 
 /// Check every computable claim of sections 2.1 to 4 of the paper at `points` random
 /// phase-space points (SplitMix64 with `seed`), as `routh audit --json`: a list of dicts with
@@ -16,10 +13,10 @@ const MAX_POINTS: usize = 100_000;
 #[pyfunction]
 #[pyo3(signature = (points = 20, seed = 1))]
 pub fn audit<'py>(py: Python<'py>, points: i64, seed: u64) -> PyResult<Bound<'py, PyAny>> {
-    let count = usize::try_from(points)
+    let sample = usize::try_from(points)
         .ok()
-        .filter(|&n| (1..=MAX_POINTS).contains(&n))
+        .and_then(|count| Sample::new(seed, count).ok())
         .ok_or_else(|| bad_argument("points", format!("{points} must lie in [1, {MAX_POINTS}]")))?;
-    let verdicts = py.detach(|| run_audit(&Sample { seed, count }));
+    let verdicts = py.detach(|| run_audit(&sample));
     record(py, &verdicts)
 }
