@@ -784,9 +784,14 @@ mod tests {
         ] {
             let (refused_name, _, rule) = refused(below);
             assert_eq!(refused_name, name);
-            assert!(rule.starts_with(&format!("must be >= {bound:e} ")), "{rule}");
+            assert!(
+                rule.starts_with(&format!("must be >= {bound:e} ")),
+                "{rule}"
+            );
         }
-        b.tolerances(2.2e-14, 2.220446049250313e-16).build().unwrap();
+        b.tolerances(2.2e-14, 2.220446049250313e-16)
+            .build()
+            .unwrap();
     }
 
     /// Regression (issue 33): `--atol 1e-320` ended in "step size too small at t = 0: h = 0";
@@ -805,14 +810,20 @@ mod tests {
     #[test]
     fn samples_on_an_empty_span_blame_t_end() {
         for (t_end, samples) in [(0.0, 2), (0.0, 1000), (1e-310, 2)] {
-            let (name, value, rule) =
-                refused(Settings::builder().t_end(t_end).samples(samples));
+            let (name, value, rule) = refused(Settings::builder().t_end(t_end).samples(samples));
             assert_eq!((name, value), ("t_end", t_end.to_string()));
-            assert!(rule.contains("t_end = 0 makes the span [0, t_end] empty"), "{rule}");
+            assert!(
+                rule.contains("t_end = 0 makes the span [0, t_end] empty"),
+                "{rule}"
+            );
         }
         // Controls: no samples on an empty span, or samples on a span of 1e-300.
         Settings::builder().t_end(0.0).samples(0).build().unwrap();
-        Settings::builder().t_end(1e-300).samples(1000).build().unwrap();
+        Settings::builder()
+            .t_end(1e-300)
+            .samples(1000)
+            .build()
+            .unwrap();
     }
 
     /// The default case and its copies in other units: the body's mass scaled by 1e-30 and
@@ -843,9 +854,13 @@ mod tests {
     /// The dimensionless final state (gamma, M T / (m R^2)) and the accepted steps of a run of
     /// `body` from `state` over `t_end`.
     fn dimensionless_run(body: &Body, state: &State, settings: Settings) -> ([f64; 6], usize) {
-        let summary = run(body, &ReducedSystem(body), state.to_array(), &settings, &mut |_, _| {
-            Ok(())
-        })
+        let summary = run(
+            body,
+            &ReducedSystem(body),
+            state.to_array(),
+            &settings,
+            &mut |_, _| Ok(()),
+        )
         .unwrap();
         let units = Units::of(body, &state.omega(body));
         (units.state(&summary.final_state).to_array(), summary.steps)
@@ -885,7 +900,9 @@ mod tests {
                 let copy_state = crate::units::scaled_state(&state, *factors);
                 let (y, copy_steps) = dimensionless_run(&copy, &copy_state, settings(factors[2]));
                 let gap = (0..6).map(|i| (x[i] - y[i]).abs()).fold(0.0, f64::max);
-                let what = format!("{method} project {project} {factors:?}: {steps} and {copy_steps} steps");
+                let what = format!(
+                    "{method} project {project} {factors:?}: {steps} and {copy_steps} steps"
+                );
                 assert!(gap < 1e-10, "{what}: final states {gap:e} apart");
                 let exact = factors.iter().all(|f| f.log2().fract() == 0.0);
                 if exact {
@@ -904,7 +921,11 @@ mod tests {
     #[test]
     fn a_tolerance_in_the_users_units_resolves_nothing_of_a_light_body() {
         let (body, state, _) = default_and_copies();
-        let (x, steps) = dimensionless_run(&body, &state, Settings::builder().t_end(5.0).build().unwrap());
+        let (x, steps) = dimensionless_run(
+            &body,
+            &state,
+            Settings::builder().t_end(5.0).build().unwrap(),
+        );
         let light = crate::units::scaled_body(&body, [1e-30, 1.0, 1.0]).unwrap();
         let light_state = crate::units::scaled_state(&state, [1e-30, 1.0, 1.0]);
         let sys = ReducedSystem(&light);
@@ -918,6 +939,10 @@ mod tests {
         let y = units.state(&State::from_array(stepper.y())).to_array();
         let gap = (0..6).map(|i| (x[i] - y[i]).abs()).fold(0.0, f64::max);
         assert!(gap > 1e-6, "{gap:e}");
-        assert!(stepper.stats().steps * 2 < steps, "{} {steps}", stepper.stats().steps);
+        assert!(
+            stepper.stats().steps * 2 < steps,
+            "{} {steps}",
+            stepper.stats().steps
+        );
     }
 }

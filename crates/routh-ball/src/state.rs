@@ -138,12 +138,21 @@ mod tests {
         for size in [1e200, 1e-200, f64::MAX, 5e-324] {
             let state = State::new([size, size, 0.0], [0.0; 3], Normalise::Rescale).unwrap();
             for (got, want) in state.gamma.iter().zip([half, half, 0.0]) {
-                assert!((got - want).abs() <= f64::EPSILON, "{size}: {:?}", state.gamma);
+                assert!(
+                    (got - want).abs() <= f64::EPSILON,
+                    "{size}: {:?}",
+                    state.gamma
+                );
             }
         }
         // Control: a unit gamma is kept as it is.
         let unit = [0.6, 0.0, 0.8];
-        assert_eq!(State::new(unit, [0.0; 3], Normalise::Rescale).unwrap().gamma, unit);
+        assert_eq!(
+            State::new(unit, [0.0; 3], Normalise::Rescale)
+                .unwrap()
+                .gamma,
+            unit
+        );
     }
 
     /// A gamma of length 0 or with a non-finite component is refused, named with its value
@@ -151,7 +160,9 @@ mod tests {
     #[test]
     fn a_gamma_of_zero_or_infinite_length_is_refused() {
         for normalise in [Normalise::Rescale, Normalise::Reject] {
-            let e = State::new([0.0; 3], [0.0; 3], normalise).unwrap_err().to_string();
+            let e = State::new([0.0; 3], [0.0; 3], normalise)
+                .unwrap_err()
+                .to_string();
             assert!(
                 e.contains("gamma = [0.0, 0.0, 0.0] has length 0") && e.contains("non-zero"),
                 "{e}"
@@ -159,11 +170,17 @@ mod tests {
             let e = State::new([f64::INFINITY, 0.0, 0.0], [0.0; 3], normalise)
                 .unwrap_err()
                 .to_string();
-            assert!(e.contains("gamma = [inf, 0.0, 0.0] has a non-finite"), "{e}");
+            assert!(
+                e.contains("gamma = [inf, 0.0, 0.0] has a non-finite"),
+                "{e}"
+            );
         }
         let e = State::new([1e200, 1e200, 0.0], [0.0; 3], Normalise::Reject)
             .unwrap_err()
             .to_string();
-        assert!(e.contains("not a unit vector: |gamma| - 1 = 1.414e200"), "{e}");
+        assert!(
+            e.contains("not a unit vector: |gamma| - 1 = 1.414e200"),
+            "{e}"
+        );
     }
 }

@@ -36,17 +36,52 @@ fn refusal(text: &str) -> String {
 #[test]
 fn type_and_length_errors_name_table_key_and_value() {
     let cases = [
-        ("body", "m", "\"heavy\"", "invalid type: string \"heavy\", expected f64"),
+        (
+            "body",
+            "m",
+            "\"heavy\"",
+            "invalid type: string \"heavy\", expected f64",
+        ),
         ("body", "R", "[1.0]", "invalid type: sequence, expected f64"),
-        ("body", "a", "true", "invalid type: boolean `true`, expected f64"),
+        (
+            "body",
+            "a",
+            "true",
+            "invalid type: boolean `true`, expected f64",
+        ),
         ("body", "I1", "{ x = 1 }", "expected f64"),
-        ("body", "I2", "\"0.4\"", "invalid type: string \"0.4\", expected f64"),
+        (
+            "body",
+            "I2",
+            "\"0.4\"",
+            "invalid type: string \"0.4\", expected f64",
+        ),
         ("body", "I3", "false", "expected f64"),
         ("body", "G", "\"earth\"", "expected f64"),
-        ("initial", "gamma", "[0.0, 1.0]", "invalid length 2, expected an array of length 3"),
-        ("initial", "gamma", "[0.0, 0.0, 0.0, 1.0]", "expected an array of length 3"),
-        ("initial", "gamma", "\"up\"", "expected an array of length 3"),
-        ("initial", "omega", "[1.0]", "invalid length 1, expected an array of length 3"),
+        (
+            "initial",
+            "gamma",
+            "[0.0, 1.0]",
+            "invalid length 2, expected an array of length 3",
+        ),
+        (
+            "initial",
+            "gamma",
+            "[0.0, 0.0, 0.0, 1.0]",
+            "expected an array of length 3",
+        ),
+        (
+            "initial",
+            "gamma",
+            "\"up\"",
+            "expected an array of length 3",
+        ),
+        (
+            "initial",
+            "omega",
+            "[1.0]",
+            "invalid length 1, expected an array of length 3",
+        ),
         ("initial", "omega", "[1.0, 2.0, \"x\"]", "expected f64"),
         ("initial", "normalize", "1", "expected a boolean"),
         ("integration", "t_end", "\"long\"", "expected f64"),
@@ -57,20 +92,28 @@ fn type_and_length_errors_name_table_key_and_value() {
     ];
     for (table, key, value, rule) in cases {
         let e = refusal(&with(table, key, value));
-        let shown: toml::Value = toml::from_str::<toml::Table>(&format!("v = {value}")).unwrap()
-            ["v"]
-            .clone();
+        let shown: toml::Value =
+            toml::from_str::<toml::Table>(&format!("v = {value}")).unwrap()["v"].clone();
         let want = format!("case file case.toml: in [{table}]: invalid {key} = {shown}: ");
-        assert!(e.starts_with(&want), "{table}.{key} = {value}: {e}\n(wanted {want})");
+        assert!(
+            e.starts_with(&want),
+            "{table}.{key} = {value}: {e}\n(wanted {want})"
+        );
         assert!(e.contains(rule), "{table}.{key} = {value}: {e}");
     }
     // The array keys M and com, which the default case does not write.
     let m_instead = with("initial", "omega", "[1.0, 2.0]").replace("omega =", "M =");
     let e = refusal(&m_instead);
-    assert!(e.contains("in [initial]: invalid M = [1.0, 2.0]: invalid length 2"), "{e}");
+    assert!(
+        e.contains("in [initial]: invalid M = [1.0, 2.0]: invalid length 2"),
+        "{e}"
+    );
     let com = with("body", "a", "0.3").replace("a = 0.3", "com = [0.0, 0.1]");
     let e = refusal(&com);
-    assert!(e.contains("in [body]: invalid com = [0.0, 0.1]: invalid length 2"), "{e}");
+    assert!(
+        e.contains("in [body]: invalid com = [0.0, 0.1]: invalid length 2"),
+        "{e}"
+    );
     // Control: the default case is read.
     Case::parse(DEFAULT_CASE, "case.toml").unwrap();
 }
@@ -93,18 +136,41 @@ fn missing_and_unknown_keys_are_named() {
 #[test]
 fn sweep_type_errors_name_key_and_value() {
     let cases = [
-        ("samples = \"many\"\ntilt = { range = [0.1, 0.2] }", "`samples` = \"many\"", "must be an integer"),
-        ("seed = 1.5\nsamples = 4\ntilt = { range = [0.1, 0.2] }", "`seed` = 1.5", "must be an integer"),
-        ("design = 3\nsamples = 4\ntilt = { range = [0.1, 0.2] }", "`design` = 3", "must be \"sobol\""),
+        (
+            "samples = \"many\"\ntilt = { range = [0.1, 0.2] }",
+            "`samples` = \"many\"",
+            "must be an integer",
+        ),
+        (
+            "seed = 1.5\nsamples = 4\ntilt = { range = [0.1, 0.2] }",
+            "`seed` = 1.5",
+            "must be an integer",
+        ),
+        (
+            "design = 3\nsamples = 4\ntilt = { range = [0.1, 0.2] }",
+            "`design` = 3",
+            "must be \"sobol\"",
+        ),
         ("tilt = 0.3", "`tilt` = 0.3", "expected { values = [...] }"),
-        ("tilt = { values = [0.1, \"x\"] }", "`tilt` = { values = [0.1, \"x\"] }", "expected f64"),
+        (
+            "tilt = { values = [0.1, \"x\"] }",
+            "`tilt` = { values = [0.1, \"x\"] }",
+            "expected f64",
+        ),
         ("spin = { range = [1.0], n = 3 }", "`spin`", "range"),
-        ("spin = { range = [1.0, 2.0], n = \"3\" }", "`spin`", "expected i64"),
+        (
+            "spin = { range = [1.0, 2.0], n = \"3\" }",
+            "`spin`",
+            "expected i64",
+        ),
     ];
     for (text, named, rule) in cases {
         let table: toml::Table = text.parse().unwrap();
         let e = Spec::parse(&table).unwrap_err().to_string();
-        assert!(e.starts_with(&format!("[sweep] key {named}")), "{text}: {e}");
+        assert!(
+            e.starts_with(&format!("[sweep] key {named}")),
+            "{text}: {e}"
+        );
         assert!(e.contains(rule), "{text}: {e}");
     }
     // Control: a valid table is read.
