@@ -207,7 +207,7 @@ mod tests {
             (body(1e10, 0.5), "m", 1e10),
             (body(1.0, 1e-12), "I3", 1e-12),
         ] {
-            let name = format!("{name} = {value}");
+            let name = format!("{name} = {}", crate::error::Number(value));
             let e = check_body(&b).unwrap_err().to_string();
             assert!(
                 e.starts_with(&format!("invalid body parameter {name}: makes the inertia"))

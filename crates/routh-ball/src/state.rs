@@ -145,13 +145,21 @@ mod tests {
                 );
             }
         }
-        // Control: a unit gamma is kept as it is.
-        let unit = [0.6, 0.0, 0.8];
+        // Controls: a unit gamma is kept, to the bit or to an ulp.
+        let unit = [0.0, 0.0, 1.0];
         assert_eq!(
             State::new(unit, [0.0; 3], Normalise::Rescale)
                 .unwrap()
                 .gamma,
             unit
+        );
+        let unit = [0.6, 0.0, 0.8];
+        let kept = State::new(unit, [0.0; 3], Normalise::Rescale)
+            .unwrap()
+            .gamma;
+        assert!(
+            (0..3).all(|i| (kept[i] - unit[i]).abs() <= f64::EPSILON),
+            "{kept:?}"
         );
     }
 

@@ -70,7 +70,7 @@ fn a_huge_mass_is_blamed_not_the_spin() {
     for command in ["simulate", "exact", "steady"] {
         assert_exit_2(
             &[command, "--case", &heavy],
-            &format!("invalid body parameter m = {}: makes the inertia", 1e40),
+            "invalid body parameter m = 1e40: makes the inertia",
         );
     }
     // Control: the same body in other units (mass and moments by 1e30) runs.
@@ -96,7 +96,7 @@ fn heavy_copy(name: &str) -> String {
 fn tolerances_are_refused_by_their_printed_bounds() {
     assert_exit_2(
         &["simulate", "--atol", "1e-320"],
-        "invalid option atol = 0.00000",
+        "invalid option atol = 1e-320",
     );
     assert_exit_2(
         &["simulate", "--atol", "1e-320"],
@@ -104,7 +104,7 @@ fn tolerances_are_refused_by_their_printed_bounds() {
     );
     assert_exit_2(
         &["simulate", "--rtol", "2.1e-14"],
-        "invalid option rtol = 0.000000000000021: must be >= 2.2e-14",
+        "invalid option rtol = 2.1e-14: must be >= 2.2e-14",
     );
     simulate_json(&[
         "--rtol",
