@@ -323,16 +323,17 @@ fn deserialise<T: serde::de::DeserializeOwned>(
 
 /// The key (and its value) whose value causes the error `rule` of deserialising `entries` as
 /// `T`. serde reads the entries in order and stops at the first error, so the culprit is the
-/// entry whose addition to the entries before it first gives that error; none when the error
-/// does not come from one entry (a missing key: the error is there without any entry).
+/// entry whose addition to the entries before it first gives that error; none for a missing
+/// key (serde's "missing field `R`", which names it, comes after all entries are read, so
+/// the last entry would seem to cause it).
 fn key_in_error<'a, T: serde::de::DeserializeOwned>(
     entries: &'a toml::Table,
     rule: &str,
 ) -> Option<(&'a String, &'a toml::Value)> {
-    let mut before = toml::Table::new();
-    if deserialise::<T>(&before).err().as_deref() == Some(rule) {
+    if rule.starts_with("missing field") {
         return None;
     }
+    let mut before = toml::Table::new();
     for (key, value) in entries {
         before.insert(key.clone(), value.clone());
         if deserialise::<T>(&before).err().as_deref() == Some(rule) {
