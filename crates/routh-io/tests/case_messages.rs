@@ -68,7 +68,7 @@ fn type_and_length_errors_name_table_key_and_value() {
             "initial",
             "gamma",
             "[0.0, 0.0, 0.0, 1.0]",
-            "expected an array of length 3",
+            "invalid length 4, expected fewer elements in array",
         ),
         (
             "initial",
