@@ -143,9 +143,9 @@ impl SettingsBuilder {
 
     /// The settings, if valid: t_end finite and >= 0, the tolerances by
     /// [`check_tolerances`], max_steps >= 1, samples at most [`MAX_SAMPLES`],
-    /// project_every >= 1, the steps of RK4 at most max_steps, samples 0 or >= 2, and t_end
-    /// > 0 with samples (their times distinct: t_end / (samples - 1) a normal f64). The first
-    /// violation, in this order, is the error, naming the option.
+    /// project_every >= 1, the steps of RK4 at most max_steps, samples 0 or >= 2, and a
+    /// positive t_end with samples (their times distinct: t_end / (samples - 1) a normal f64).
+    /// The first violation, in this order, is the error, naming the option.
     pub fn build(self) -> Result<Settings> {
         let settings = self.unchecked;
         check_option(
