@@ -12,7 +12,7 @@
 #[derive(Debug, thiserror::Error)]
 pub enum RouthError {
     /// A body parameter breaks a rule (non-finite, non-positive, |a| >= R, ...).
-    #[error("invalid body parameter {name} = {value}: {rule}")]
+    #[error("invalid body parameter {name} = {}: {rule}", Number(*value))]
     Parameter {
         /// The parameter's name as in the paper (m, R, a, I1, I2, I3, G).
         name: &'static str,
@@ -114,6 +114,24 @@ pub enum RouthError {
     /// The numerical integration failed.
     #[error("integration failed: {0}")]
     Integrate(#[from] crate::integrate::IntegrateError),
+}
+
+/// A number in a message as a reader reads it: the shorter of its plain decimal (`-1`,
+/// `9.81`) and its shortest round-trip form with an exponent (`1e40`, `1e-320`, where the plain
+/// decimal has dozens or hundreds of digits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Number(pub f64);
+
+impl std::fmt::Display for Number {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let plain = self.0.to_string();
+        let exponent = format!("{:?}", self.0);
+        f.write_str(if exponent.len() < plain.len() {
+            &exponent
+        } else {
+            &plain
+        })
+    }
 }
 
 /// Shorthand for results of this crate.

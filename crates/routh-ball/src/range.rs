@@ -15,8 +15,18 @@ use crate::state::State;
 /// `det I_Q det A`) must be a finite normal f64, `(2.2e-308)^(1/6)` to `(1.8e308)^(1/6)`.
 pub const INERTIA_RANGE: (f64, f64) = (1.6e-51, 5.5e51);
 
+/// The largest condition number `(I_max + m r_max^2) / I_min` of the inertia about the contact
+/// point accepted. `I_Q = I + m (r^2 - r r^T)` has the eigenvalue of about `m r^2 + I` across
+/// the contact vector r and only about I along it: `M = I_Q omega` holds omega's component
+/// along r in a part of M of relative size `I_min / (m r^2)`, so that the rounding of M (one
+/// epsilon) leaves omega with a relative error of epsilon times this ratio: 2.2e-6 at the
+/// bound. Beyond, the cancellation in `det I_Q` grows until omega is not finite (m = 1e40 for
+/// the default body), a failure caused by the ratio of m r^2 to the moments, not by the spin.
+pub const MAX_CONDITION: f64 = 1e10;
+
 /// Check that the body's inertia about the contact point can be inverted in f64 at every
-/// tilt, and that its weight times its height is finite.
+/// tilt ([`INERTIA_RANGE`], [`MAX_CONDITION`]: the parameter that breaks it named, m or the
+/// smallest moment), and that its weight times its height is finite.
 pub fn check_body(body: &impl AsBall) -> Result<()> {
     let body = &body.ball();
     let (low, high) = INERTIA_RANGE;
@@ -24,8 +34,10 @@ pub fn check_body(body: &impl AsBall) -> Result<()> {
     let offset = norm(&body.com());
     let r_max = body.radius() + offset;
     let r_min = body.radius() - offset;
-    let largest = moments.iter().fold(0.0_f64, |a, &b| a.max(b)) + body.m() * r_max * r_max;
-    let smallest = moments.iter().fold(f64::INFINITY, |a, &b| a.min(b)) + body.m() * r_min * r_min;
+    let largest_moment = moments.iter().fold(0.0_f64, |a, &b| a.max(b));
+    let smallest_moment = moments.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+    let largest = largest_moment + body.m() * r_max * r_max;
+    let smallest = smallest_moment + body.m() * r_min * r_min;
     let cause = || {
         format!(
             "m = {:?}, R = {:?}, com = {:?}, I = {:?}",
@@ -51,6 +63,29 @@ pub fn check_body(body: &impl AsBall) -> Result<()> {
                        its inverse),",
             direction: "underflow",
             value: smallest,
+        });
+    }
+    let condition = largest / smallest_moment;
+    if !(condition <= MAX_CONDITION) {
+        // The larger of the two factors of the ratio: the mass against the moments, or the
+        // moments against each other.
+        let heavy = largest / largest_moment >= largest_moment / smallest_moment;
+        let (name, value) = if heavy {
+            ("m", body.m())
+        } else {
+            let i = moments
+                .iter()
+                .position(|&v| v == smallest_moment)
+                .unwrap_or(0);
+            (["I1", "I2", "I3"][i], smallest_moment)
+        };
+        return Err(RouthError::Parameter {
+            name,
+            value,
+            rule: "makes the inertia about the contact point I_Q = I + m (r^2 - r r^T) too \
+                   ill-conditioned for f64: (I_max + m (R + |com|)^2) / I_min must be at most \
+                   1e10 (MAX_CONDITION), or the state's M = I_Q omega loses omega along the \
+                   contact vector r in its rounding (relative error 2.2e-16 times that ratio)",
         });
     }
     let weight = body.m() * body.gravity() * r_max;
@@ -156,6 +191,32 @@ mod tests {
         let with_mass = |m| Body::new(m, 1.0, 0.3, 0.4, 0.4, 0.5, 9.81).unwrap();
         let e = check_body(&with_mass(1e300)).unwrap_err().to_string();
         assert!(e.contains("m = 1e300") && e.contains("inertia"), "{e}");
-        check_body(&with_mass(1e50)).unwrap();
+        check_body(&with_mass(1e9)).unwrap();
+    }
+
+    /// Regression (issue 33): m = 1e40 in the default case blamed "the spin omega3 = inf"
+    /// (the spin is 8): `det I_Q`, of relative size `I / (m r^2)`, cancelled to nothing. The
+    /// parameter that makes I_Q ill-conditioned is named with the rule: m when `m r^2`
+    /// dominates, the smallest moment when it is tiny; the same body in other units (every
+    /// mass and moment by 1e30) is accepted, the ratio having no units.
+    #[test]
+    fn an_ill_conditioned_inertia_names_its_cause() {
+        let body = |m, i3| Body::new(m, 1.0, 0.3, 0.4, 0.4, i3, 9.81).unwrap();
+        for (b, name, value) in [
+            (body(1e40, 0.5), "m", 1e40),
+            (body(1e10, 0.5), "m", 1e10),
+            (body(1.0, 1e-12), "I3", 1e-12),
+        ] {
+            let name = format!("{name} = {}", crate::error::Number(value));
+            let e = check_body(&b).unwrap_err().to_string();
+            assert!(
+                e.starts_with(&format!("invalid body parameter {name}: makes the inertia"))
+                    && e.contains("at most 1e10"),
+                "{e}"
+            );
+        }
+        check_body(&body(1e9, 0.5)).unwrap();
+        check_body(&body(1.0, 1e-9)).unwrap();
+        check_body(&Body::new(1e30, 1.0, 0.3, 0.4e30, 0.4e30, 0.5e30, 9.81).unwrap()).unwrap();
     }
 }

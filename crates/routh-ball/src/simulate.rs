@@ -4,15 +4,16 @@
 use crate::auto;
 use crate::ball::AsBall;
 use crate::body::Body;
-use crate::error::{Result, RouthError};
+use crate::error::{Number, Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
-    check_samples, drive, stepper, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
-    Projection, Stepper, Stop,
+    check_samples, drive, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
+    Projection, Scaled, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
+use crate::units::Units;
 use serde::Serialize;
 use std::cell::RefCell;
 use std::time::Instant;
@@ -60,7 +61,9 @@ impl Settings {
         self.rtol
     }
 
-    /// Absolute tolerance (DOP853).
+    /// Absolute tolerance, in the units of the motion ([`motion_scales`]): on gamma as it is
+    /// (dimensionless), on M in units of the momentum scale `m R^2 / T` (to the nearest power
+    /// of two), so that the same motion in other units is integrated alike.
     pub fn atol(&self) -> f64 {
         self.atol
     }
@@ -140,8 +143,9 @@ impl SettingsBuilder {
 
     /// The settings, if valid: t_end finite and >= 0, the tolerances by
     /// [`check_tolerances`], max_steps >= 1, samples at most [`MAX_SAMPLES`],
-    /// project_every >= 1, the steps of RK4 at most max_steps, samples 0 or >= 2. The first
-    /// violation, in this order, is the error, naming the option.
+    /// project_every >= 1, the steps of RK4 at most max_steps, samples 0 or >= 2, and a
+    /// positive t_end with samples (their times distinct: t_end / (samples - 1) a normal f64).
+    /// The first violation, in this order, is the error, naming the option.
     pub fn build(self) -> Result<Settings> {
         let settings = self.unchecked;
         check_option(
@@ -187,6 +191,16 @@ impl SettingsBuilder {
                 value: "1".into(),
                 rule: "must be 0 or >= 2 (the samples include both ends)",
             });
+        }
+        if settings.samples >= 2 {
+            check_option(
+                "t_end",
+                settings.t_end,
+                settings.t_end / (settings.samples - 1) as f64 >= f64::MIN_POSITIVE,
+                "must be > 0 when samples are asked for (samples >= 2): t_end = 0 makes the \
+                 span [0, t_end] empty, and samples need distinct times (t_end / (samples - 1) \
+                 at least the smallest normal f64, 2.2250738585072014e-308)",
+            )?;
         }
         Ok(settings)
     }
@@ -340,10 +354,17 @@ impl Default for Settings {
 /// The largest relative tolerance accepted: above it the integrals drift by whole percents
 /// (rtol = 1 lets H2 drift by 40 % over the default case) and the run is not a solution.
 pub const MAX_RTOL: f64 = 1e-2;
-/// The smallest relative tolerance accepted, 100 machine epsilons (2.2e-14): the rounding
-/// of each step's update is of the order of a few epsilons of the state, so a smaller local
-/// error target is not what the controller can verify.
-pub const MIN_RTOL: f64 = 100.0 * f64::EPSILON;
+/// The smallest relative tolerance accepted, 2.2e-14 (about 100 machine epsilons, 99.1):
+/// the rounding of each step's update is of the order of a few epsilons of the state, so a
+/// smaller local error target is not what the controller can verify. The rule's message
+/// prints this value as it is (a test holds them together).
+pub const MIN_RTOL: f64 = 2.2e-14;
+/// The smallest absolute tolerance accepted, one machine epsilon (2.220446049250313e-16).
+/// The absolute tolerance applies to the state in the units of the motion
+/// ([`integrate_span`]), where the state's size is about 1: an absolute error below the
+/// rounding of that size (one epsilon) cannot be verified, and a subnormal one (1e-320)
+/// makes the first step size 0.
+pub const MIN_ATOL: f64 = f64::EPSILON;
 
 /// Fail with [`RouthError::Option`] unless `ok`.
 pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str) -> Result<()> {
@@ -352,14 +373,14 @@ pub fn check_option(name: &'static str, value: f64, ok: bool, rule: &'static str
     } else {
         Err(RouthError::Option {
             name,
-            value: value.to_string(),
+            value: Number(value).to_string(),
             rule,
         })
     }
 }
 
-/// The rule of the tolerances: rtol finite in [100 machine epsilons, 1e-2) (see [`MIN_RTOL`],
-/// [`MAX_RTOL`]); atol finite and > 0.
+/// The rule of the tolerances: rtol finite in [[`MIN_RTOL`], [`MAX_RTOL`]); atol finite and
+/// at least [`MIN_ATOL`] (in the units of the motion).
 pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
     check_option(
         "rtol",
@@ -377,14 +398,22 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
         "rtol",
         rtol,
         rtol >= MIN_RTOL,
-        "must be >= 100 machine epsilons (2.2e-14): below it the step's own rounding exceeds \
-         the error the controller asks for",
+        "must be >= 2.2e-14 (about 100 machine epsilons): below it the step's own rounding \
+         exceeds the error the controller asks for",
     )?;
     check_option(
         "atol",
         atol,
         atol.is_finite() && atol > 0.0,
         "must be finite and > 0",
+    )?;
+    check_option(
+        "atol",
+        atol,
+        atol >= MIN_ATOL,
+        "must be >= 2.220446049250313e-16 (one machine epsilon): atol applies to the state \
+         in the units of the motion, whose size is about 1, and f64 does not resolve an \
+         absolute error below its rounding",
     )
 }
 
@@ -495,7 +524,8 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
 /// Integrate `sys`, whose state starts with the reduced phase-space point `(gamma, M)`, over
 /// `span` (either direction) with the method, tolerances, projection and step limit of
 /// `settings` (its `t_end` and `samples` are not used; the rest was checked when it was
-/// built): the one use of the library's driver
+/// built), the absolute tolerance applied in the units of the motion ([`motion_scales`],
+/// through the exact change of variables [`Scaled`]): the one use of the library's driver
 /// [`drive`] by `simulate`, [`crate::problem::Problem`], the sweep and Python.
 ///
 /// After each accepted step, as in [`drive`]: a non-finite state ends the run with
@@ -546,7 +576,10 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         settings.rtol.min(settings.atol),
         settings.project,
     );
-    let mut stepper = stepper(method, sys, t0, y0, t1, &opts).map_err(RouthError::from)?;
+    let scaled = Scaled::new(sys, motion_scales(body, &x0));
+    let mut stepper = scaled
+        .stepper(method, t0, y0, t1, &opts)
+        .map_err(RouthError::from)?;
     let plan = Drive {
         samples,
         project: level
@@ -559,7 +592,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     // reports after `on_step`.
     let mut step_end = None;
     let outcome = drive(
-        stepper.as_mut(),
+        &mut stepper,
         &plan,
         &mut |s, y| {
             let mut y = *y;
@@ -602,6 +635,19 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         t: outcome.t,
         y: outcome.y,
     })
+}
+
+/// The scales of the components of a state that starts with the reduced point `x0 = (gamma,
+/// M)`, in which the absolute tolerance of a run applies ([`integrate_span`]): 1 for gamma
+/// (dimensionless), the unit of angular momentum `m R^2 / T` of the motion for M
+/// ([`Units::of`] the body and the initial omega: m the mass, or `I_max / R^2` if larger, T
+/// the faster of the fall `sqrt(R / G)` and the spin `1 / |omega|`), 1 for the components that
+/// follow (the orientation, and the position of the full motion, in its own units). A body
+/// and its state scaled in mass, length or time ([`crate::units`]) have the same state in
+/// these units, so the same tolerance asks the same of each.
+pub fn motion_scales<const N: usize>(body: &impl AsBall, x0: &[f64; 6]) -> [f64; N] {
+    let momentum = Units::of(body, &State::from_array(x0).omega(body)).momentum();
+    std::array::from_fn(|i| if (3..6).contains(&i) { momentum } else { 1.0 })
 }
 
 /// The reduced field (mg-eq) of a body as an [`OdeSystem`].
@@ -662,11 +708,8 @@ mod tests {
         );
         assert_eq!(refused(b.tolerances(MAX_RTOL, 1e-12)).0, "rtol");
         let (name, value, rule) = refused(b.tolerances(1e-20, 1e-12));
-        assert_eq!((name, value.as_str()), ("rtol", "0.00000000000000000001"));
-        assert!(
-            rule.starts_with("must be >= 100 machine epsilons (2.2e-14)"),
-            "{rule}"
-        );
+        assert_eq!((name, value.as_str()), ("rtol", "1e-20"));
+        assert!(rule.starts_with("must be >= 2.2e-14"), "{rule}");
         assert_eq!(
             refused(b.tolerances(f64::NAN, 1e-12)).2,
             "must be finite and > 0"
@@ -714,9 +757,10 @@ mod tests {
         assert_eq!(refused(b.tolerances(1.0, 0.0).samples(1)).0, "rtol");
         // Controls: the defaults and the edges of each rule are accepted.
         assert_eq!(b.build().unwrap(), Settings::default());
+        b.t_end(0.0).build().unwrap();
         let edge = b
-            .t_end(0.0)
-            .tolerances(MIN_RTOL, f64::MIN_POSITIVE)
+            .t_end(1.0)
+            .tolerances(MIN_RTOL, MIN_ATOL)
             .samples(MAX_SAMPLES)
             .projection(true, 1)
             .method(Method::Rk4 { steps: 10 })
@@ -725,5 +769,169 @@ mod tests {
             .unwrap();
         assert_eq!(edge.rtol(), MIN_RTOL);
         assert_eq!(edge.to_builder().samples(2).build().unwrap().samples(), 2);
+    }
+
+    /// Regression (issue 33): `--rtol 2.2e-14`, the bound the message printed, was refused
+    /// (the bound was 100 epsilons, 2.220446049250313e-14). The bound and the number in each
+    /// rule are one value: the rule prints the constant exactly, and the constant is accepted
+    /// while the next smaller f64 is not.
+    #[test]
+    fn the_printed_bounds_are_the_bounds() {
+        let b = Settings::builder();
+        for (bound, name, below) in [
+            (MIN_RTOL, "rtol", b.tolerances(MIN_RTOL.next_down(), 1e-12)),
+            (MIN_ATOL, "atol", b.tolerances(1e-12, MIN_ATOL.next_down())),
+        ] {
+            let (refused_name, _, rule) = refused(below);
+            assert_eq!(refused_name, name);
+            assert!(
+                rule.starts_with(&format!("must be >= {bound:e} ")),
+                "{rule}"
+            );
+        }
+        b.tolerances(2.2e-14, 2.220446049250313e-16)
+            .build()
+            .unwrap();
+    }
+
+    /// Regression (issue 33): `--atol 1e-320` ended in "step size too small at t = 0: h = 0";
+    /// a tolerance f64 cannot resolve is now refused when the settings are built, naming it.
+    #[test]
+    fn an_unresolvable_atol_is_refused_when_built() {
+        for atol in [1e-320, 1e-300, 1e-17] {
+            let (name, value, rule) = refused(Settings::builder().tolerances(1e-12, atol));
+            assert_eq!((name, value), ("atol", Number(atol).to_string()));
+            assert!(rule.contains("one machine epsilon"), "{rule}");
+        }
+    }
+
+    /// Regression (issue 33): `--t-end 0 --samples 2` blamed "samples = 0", a value never
+    /// given (the sample times 0 and 0 were not distinct); the cause, t_end, is named.
+    #[test]
+    fn samples_on_an_empty_span_blame_t_end() {
+        for (t_end, samples) in [(0.0, 2), (0.0, 1000), (1e-310, 2)] {
+            let (name, value, rule) = refused(Settings::builder().t_end(t_end).samples(samples));
+            assert_eq!((name, value), ("t_end", Number(t_end).to_string()));
+            assert!(
+                rule.contains("t_end = 0 makes the span [0, t_end] empty"),
+                "{rule}"
+            );
+        }
+        // Controls: no samples on an empty span, or samples on a span of 1e-300.
+        Settings::builder().t_end(0.0).samples(0).build().unwrap();
+        Settings::builder()
+            .t_end(1e-300)
+            .samples(1000)
+            .build()
+            .unwrap();
+    }
+
+    /// The default case and its copies in other units: the body's mass scaled by 1e-30 and
+    /// 1e30, its length by 1e-10 and 1e10, its time by 1e-3 and 1e3 (the spin and G scaled).
+    fn default_and_copies() -> (Body, State, Vec<[f64; 3]>) {
+        let body = Body::default();
+        let state = State::from_omega(
+            &body,
+            [0.3_f64.sin(), 0.0, 0.3_f64.cos()],
+            [0.5, 0.2, 8.0],
+            crate::state::Normalise::Reject,
+        )
+        .unwrap();
+        let copies = vec![
+            [1e-30, 1.0, 1.0],
+            [1e30, 1.0, 1.0],
+            [1.0, 1e-10, 1.0],
+            [1.0, 1e10, 1.0],
+            [1.0, 1.0, 1e-3],
+            [1.0, 1.0, 1e3],
+        ];
+        (body, state, copies)
+    }
+
+    /// The dimensionless final state (gamma, M T / (m R^2)) and the accepted steps of a run of
+    /// `body` from `state` over `t_end`.
+    fn dimensionless_run(body: &Body, state: &State, settings: Settings) -> ([f64; 6], usize) {
+        let summary = run(
+            body,
+            &ReducedSystem(body),
+            state.to_array(),
+            &settings,
+            &mut |_, _| Ok(()),
+        )
+        .unwrap();
+        let units = Units::of(body, &state.omega(body));
+        (units.state(&summary.final_state).to_array(), summary.steps)
+    }
+
+    /// Regression (issue 33): atol was absolute in the user's units, so that with m = 1e-30
+    /// it resolved nothing of M and with m = 1e12 it meant nothing. In the units of the motion
+    /// ([`motion_scales`]) every copy of the default case in other units gives the same
+    /// dimensionless final state to 1e-10 (each copy solves the same dimensionless problem,
+    /// its parameters rounded to a few ulp, with the absolute tolerance on M the same to a
+    /// factor of 2 (the power of two nearest to each copy's momentum scale): the copies differ
+    /// by their global errors, which at rtol = atol = 1e-12 over 5 time units, about 40
+    /// periods of the spin, are about 1e-11), in nearly the same number of steps (within 5 %:
+    /// the power of two moves the weight of M's absolute tolerance by at most 2x), by every
+    /// adaptive method over 5 time units. Measured: at most 4.8e-13 apart (DOP853), steps
+    /// within 4 (of 123 to 169; the Taylor method 31 or 32). Not with projection: the
+    /// projection onto the level set ([`LevelSet::project`]) takes the smallest correction in
+    /// the Euclidean norm of (gamma, M) in the user's units, so that the copy of mass 1e30
+    /// ends 2.8e-7 from the original.
+    #[test]
+    fn copies_in_other_units_are_integrated_alike() {
+        let (body, state, copies) = default_and_copies();
+        for method in [Method::Dop853, Method::Vern9, Method::Taylor, Method::Auto] {
+            let settings = |s: f64| {
+                Settings::builder()
+                    .method(method)
+                    .t_end(5.0 * s)
+                    .build()
+                    .unwrap()
+            };
+            let (x, steps) = dimensionless_run(&body, &state, settings(1.0));
+            for factors in &copies {
+                let copy = crate::units::scaled_body(&body, *factors).unwrap();
+                let copy_state = crate::units::scaled_state(&state, *factors);
+                let (y, copy_steps) = dimensionless_run(&copy, &copy_state, settings(factors[2]));
+                let gap = (0..6).map(|i| (x[i] - y[i]).abs()).fold(0.0, f64::max);
+                let what = format!("{method} {factors:?}: {steps} and {copy_steps} steps");
+                eprintln!("{what}: final states {gap:e} apart");
+                assert!(gap < 1e-10, "{what}: final states {gap:e} apart");
+                assert!(steps.abs_diff(copy_steps) * 20 <= steps, "{what}");
+            }
+        }
+    }
+
+    /// Negative control of [`copies_in_other_units_are_integrated_alike`]: the copies of mass
+    /// 1e-30 and 1e30 integrated with the absolute tolerance in the user's units (every scale
+    /// 1, as before issue 33: on the light copy atol is far above M, on the heavy one far below
+    /// the rounding of M) fail the test's criteria: the final states 1e-10 apart or more, or
+    /// the steps more than 5 % apart.
+    #[test]
+    fn a_tolerance_in_the_users_units_fails_the_copies() {
+        let (body, state, _) = default_and_copies();
+        let settings = Settings::builder().t_end(5.0).build().unwrap();
+        let (x, steps) = dimensionless_run(&body, &state, settings);
+        let mut failures = Vec::new();
+        for mass in [1e-30, 1e30] {
+            let copy = crate::units::scaled_body(&body, [mass, 1.0, 1.0]).unwrap();
+            let copy_state = crate::units::scaled_state(&state, [mass, 1.0, 1.0]);
+            let sys = ReducedSystem(&copy);
+            let scaled = Scaled::new(&sys, [1.0; 6]);
+            let opts = Options::new(1e-12, 1e-12).unwrap();
+            let mut stepper = scaled
+                .stepper(Method::Dop853, 0.0, copy_state.to_array(), 5.0, &opts)
+                .unwrap();
+            while !stepper.step().unwrap() {}
+            let units = Units::of(&copy, &copy_state.omega(&copy));
+            let y = units.state(&State::from_array(stepper.y())).to_array();
+            let gap = (0..6).map(|i| (x[i] - y[i]).abs()).fold(0.0, f64::max);
+            let copy_steps = stepper.stats().steps;
+            if gap >= 1e-10 || steps.abs_diff(copy_steps) * 20 > steps {
+                failures.push(mass);
+            }
+            eprintln!("mass {mass:e}: gap {gap:e}, steps {copy_steps} against {steps}");
+        }
+        assert!(!failures.is_empty());
     }
 }

@@ -24,7 +24,8 @@ pub enum Normalise {
     /// Reject |gamma| - 1 beyond [`UNIT_TOLERANCE`].
     #[default]
     Reject,
-    /// Rescale gamma to unit length (gamma must still be finite and non-zero).
+    /// Rescale gamma to unit length (gamma must still be finite and non-zero; any finite size
+    /// is rescaled without overflow).
     Rescale,
 }
 
@@ -97,19 +98,97 @@ fn check_finite(name: &str, v: &[f64; 3]) -> Result<()> {
     }
 }
 
+/// `gamma` validated (finite; of unit length within [`UNIT_TOLERANCE`], or rescaled to it
+/// with [`Normalise::Rescale`]). The length is computed with the largest component divided
+/// out first, so that neither its squares overflow (1e200) nor underflow (1e-200).
 fn checked_gamma(gamma: [f64; 3], normalise: Normalise) -> Result<[f64; 3]> {
     check_finite("gamma", &gamma)?;
-    let norm = gamma.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let largest = gamma.iter().fold(0.0_f64, |a, c| a.max(c.abs()));
+    if largest == 0.0 {
+        return Err(RouthError::State(format!(
+            "gamma = {gamma:?} has length 0 and cannot be normalised: the normal of the plane \
+             must be a non-zero vector"
+        )));
+    }
+    let direction = gamma.map(|c| c / largest);
+    let length = direction.iter().map(|c| c * c).sum::<f64>().sqrt();
     match normalise {
-        Normalise::Reject if (norm - 1.0).abs() > UNIT_TOLERANCE => Err(RouthError::State(format!(
-            "gamma = {gamma:?} is not a unit vector: |gamma| - 1 = {:.3e} exceeds {UNIT_TOLERANCE:e} \
-             (normalize = true in a case's [initial] table, or normalize=True in Python, rescales it)",
-            norm - 1.0
-        ))),
-        Normalise::Reject => Ok(gamma),
-        Normalise::Rescale if norm == 0.0 => {
-            Err(RouthError::State("gamma = [0, 0, 0] cannot be normalised".into()))
+        Normalise::Reject if (largest * length - 1.0).abs() > UNIT_TOLERANCE => {
+            Err(RouthError::State(format!(
+                "gamma = {gamma:?} is not a unit vector: |gamma| - 1 = {:.3e} exceeds {UNIT_TOLERANCE:e} \
+                 (normalize = true in a case's [initial] table, or normalize=True in Python, rescales it)",
+                largest * length - 1.0
+            )))
         }
-        Normalise::Rescale => Ok(gamma.map(|c| c / norm)),
+        Normalise::Reject => Ok(gamma),
+        Normalise::Rescale => Ok(direction.map(|c| c / length)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression (issue 33): gamma = [1e200, 1e200, 0] with `normalize = true` ran with
+    /// gamma = [0, 0, 0], the sum of its squares having overflowed. Its length is now taken
+    /// with the largest component divided out: the direction is kept, to an ulp.
+    #[test]
+    fn a_huge_or_tiny_gamma_is_normalised_without_overflow() {
+        let half = std::f64::consts::FRAC_1_SQRT_2;
+        for size in [1e200, 1e-200, f64::MAX, 5e-324] {
+            let state = State::new([size, size, 0.0], [0.0; 3], Normalise::Rescale).unwrap();
+            for (got, want) in state.gamma.iter().zip([half, half, 0.0]) {
+                assert!(
+                    (got - want).abs() <= f64::EPSILON,
+                    "{size}: {:?}",
+                    state.gamma
+                );
+            }
+        }
+        // Controls: a unit gamma is kept, to the bit or to an ulp.
+        let unit = [0.0, 0.0, 1.0];
+        assert_eq!(
+            State::new(unit, [0.0; 3], Normalise::Rescale)
+                .unwrap()
+                .gamma,
+            unit
+        );
+        let unit = [0.6, 0.0, 0.8];
+        let kept = State::new(unit, [0.0; 3], Normalise::Rescale)
+            .unwrap()
+            .gamma;
+        assert!(
+            (0..3).all(|i| (kept[i] - unit[i]).abs() <= f64::EPSILON),
+            "{kept:?}"
+        );
+    }
+
+    /// A gamma of length 0 or with a non-finite component is refused, named with its value
+    /// and the rule, whether it is to be normalised or not; so is a huge one not normalised.
+    #[test]
+    fn a_gamma_of_zero_or_infinite_length_is_refused() {
+        for normalise in [Normalise::Rescale, Normalise::Reject] {
+            let e = State::new([0.0; 3], [0.0; 3], normalise)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains("gamma = [0.0, 0.0, 0.0] has length 0") && e.contains("non-zero"),
+                "{e}"
+            );
+            let e = State::new([f64::INFINITY, 0.0, 0.0], [0.0; 3], normalise)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains("gamma = [inf, 0.0, 0.0] has a non-finite"),
+                "{e}"
+            );
+        }
+        let e = State::new([1e200, 1e200, 0.0], [0.0; 3], Normalise::Reject)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("not a unit vector: |gamma| - 1 = 1.414e200"),
+            "{e}"
+        );
     }
 }

@@ -194,6 +194,117 @@ pub fn stepper<'a, S: OdeSystem<N>, const N: usize>(
     })
 }
 
+/// A system in the variables `z_i = y_i / scale_i`, each `scale_i` a power of two: its
+/// steppers ([`Scaled::stepper`]) control the error of `z`, so that the absolute tolerance
+/// applies to component `i` in units of `scale_i` (Hairer's vector `ATOL = atol scale`, for
+/// every method, the Taylor method's norms of coefficients included). Powers of two make the
+/// change of variables exact (outside the subnormal range): `y = scale z` is the stepper's
+/// state to the bit, and a method without error control (RK4) takes the same steps as on the
+/// system itself.
+#[derive(Debug, Clone, Copy)]
+pub struct Scaled<'a, S, const N: usize> {
+    sys: &'a S,
+    scale: [f64; N],
+}
+
+impl<'a, S: OdeSystem<N>, const N: usize> Scaled<'a, S, N> {
+    /// `sys` in units of about `units` (each finite and > 0; otherwise 1), each rounded to
+    /// the nearest power of two (in the normal range of f64).
+    pub fn new(sys: &'a S, units: [f64; N]) -> Self {
+        let power_of_two = |u: f64| {
+            if u.is_finite() && u > 0.0 {
+                2f64.powi((u.log2().round() as i32).clamp(f64::MIN_EXP - 1, f64::MAX_EXP - 1))
+            } else {
+                1.0
+            }
+        };
+        Scaled {
+            sys,
+            scale: units.map(power_of_two),
+        }
+    }
+
+    /// The scale of each component (powers of two).
+    pub fn scale(&self) -> [f64; N] {
+        self.scale
+    }
+
+    /// The stepper of `method` ([`stepper`]) on this system, from `(t0, y0)` towards
+    /// `t_end`, in the variables `y` of the system it scales: its state, dense output and
+    /// `set_state` are in `y`, its error control in `z = y / scale`.
+    pub fn stepper(
+        &'a self,
+        method: Method,
+        t0: f64,
+        y0: [f64; N],
+        t_end: f64,
+        opts: &Options,
+    ) -> Result<ScaledStepper<'a, N>, IntegrateError> {
+        Ok(ScaledStepper {
+            inner: stepper(method, self, t0, to_z(&self.scale, &y0), t_end, opts)?,
+            scale: self.scale,
+            y: y0,
+        })
+    }
+}
+
+impl<S: OdeSystem<N>, const N: usize> OdeSystem<N> for Scaled<'_, S, N> {
+    type Kernels = taylor::Interpreted;
+
+    #[inline(always)]
+    fn rhs(&self, t: f64, z: &[f64; N]) -> [f64; N] {
+        to_z(&self.scale, &self.sys.rhs(t, &to_y(&self.scale, z)))
+    }
+
+    fn record(&self, t: taylor::Var, z: &[taylor::Var; N]) -> Option<[taylor::Var; N]> {
+        let y = std::array::from_fn(|i| z[i] * self.scale[i]);
+        let f = self.sys.record(t, &y)?;
+        Some(std::array::from_fn(|i| f[i] / self.scale[i]))
+    }
+}
+
+/// `z` back in the variables `y = scale z`.
+fn to_y<const N: usize>(scale: &[f64; N], z: &[f64; N]) -> [f64; N] {
+    std::array::from_fn(|i| z[i] * scale[i])
+}
+
+/// `y` in the variables `z = y / scale`.
+fn to_z<const N: usize>(scale: &[f64; N], y: &[f64; N]) -> [f64; N] {
+    std::array::from_fn(|i| y[i] / scale[i])
+}
+
+/// A stepper of a [`Scaled`] system, seen in the variables of the system it scales.
+pub struct ScaledStepper<'a, const N: usize> {
+    inner: Box<dyn Stepper<N> + 'a>,
+    scale: [f64; N],
+    y: [f64; N],
+}
+
+impl<const N: usize> Stepper<N> for ScaledStepper<'_, N> {
+    fn step(&mut self) -> Result<bool, IntegrateError> {
+        let done = self.inner.step();
+        self.y = to_y(&self.scale, self.inner.y());
+        done
+    }
+
+    fn clock(&self) -> Clock {
+        self.inner.clock()
+    }
+
+    fn y(&self) -> &[f64; N] {
+        &self.y
+    }
+
+    fn dense(&self, t: f64) -> [f64; N] {
+        to_y(&self.scale, &self.inner.dense(t))
+    }
+
+    fn set_state(&mut self, y: [f64; N]) {
+        self.inner.set_state(to_z(&self.scale, &y));
+        self.y = y;
+    }
+}
+
 /// Options of the adaptive integrator, valid once built: [`Options::new`] and the `with_*`
 /// setters refuse a value that breaks its rule ([`IntegrateError::InvalidOption`] naming it),
 /// so that a stepper never sees invalid options.

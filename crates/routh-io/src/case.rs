@@ -17,7 +17,7 @@
 //! [integration]     # optional, and so is each key (these are the defaults)
 //! t_end = 100.0
 //! rtol = 1e-12
-//! atol = 1e-12
+//! atol = 1e-12     # in the units of the motion: on M in units of m R^2 / T (Settings::atol)
 //! max_steps = 10000000
 //! ```
 //!
@@ -292,6 +292,10 @@ fn reject_unknown_keys(document: &toml::Table) -> std::result::Result<(), String
     Ok(())
 }
 
+/// The table `[name]` of `document` deserialised as `T`, the one place where a case's tables
+/// meet serde: an error names the table, and a type or length error (whose text from the
+/// parser names neither the key nor the value) the key and its value as well, with the
+/// parser's text as the rule ([`key_in_error`]).
 fn table<T: serde::de::DeserializeOwned>(
     document: &toml::Table,
     name: &str,
@@ -299,8 +303,42 @@ fn table<T: serde::de::DeserializeOwned>(
     let value = document
         .get(name)
         .ok_or_else(|| format!("missing table [{name}]"))?;
-    value
-        .clone()
+    let Some(entries) = value.as_table() else {
+        return Err(format!("`{name}` must be a table [{name}]"));
+    };
+    deserialise::<T>(entries).map_err(|rule| match key_in_error::<T>(entries, &rule) {
+        Some((key, value)) => format!("in [{name}]: invalid {key} = {value}: {rule}"),
+        None => format!("in [{name}]: {rule}"),
+    })
+}
+
+/// `entries` deserialised as `T`, or the parser's message.
+fn deserialise<T: serde::de::DeserializeOwned>(
+    entries: &toml::Table,
+) -> std::result::Result<T, String> {
+    toml::Value::Table(entries.clone())
         .try_into()
-        .map_err(|e: toml::de::Error| format!("in [{name}]: {}", e.message()))
+        .map_err(|e: toml::de::Error| e.message().to_string())
+}
+
+/// The key (and its value) whose value causes the error `rule` of deserialising `entries` as
+/// `T`. serde reads the entries in order and stops at the first error, so the culprit is the
+/// entry whose addition to the entries before it first gives that error; none for a missing
+/// key (serde's "missing field `R`", which names it, comes after all entries are read, so
+/// the last entry would seem to cause it).
+fn key_in_error<'a, T: serde::de::DeserializeOwned>(
+    entries: &'a toml::Table,
+    rule: &str,
+) -> Option<(&'a String, &'a toml::Value)> {
+    if rule.starts_with("missing field") {
+        return None;
+    }
+    let mut before = toml::Table::new();
+    for (key, value) in entries {
+        before.insert(key.clone(), value.clone());
+        if deserialise::<T>(&before).err().as_deref() == Some(rule) {
+            return Some((key, value));
+        }
+    }
+    None
 }
