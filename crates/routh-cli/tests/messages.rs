@@ -100,7 +100,7 @@ fn tolerances_are_refused_by_their_printed_bounds() {
     );
     assert_exit_2(
         &["simulate", "--atol", "1e-320"],
-        "must be >= 2.220446049250313e-16 (one machine epsilon)",
+        "must be >= 1e-150: the step control squares error / atol",
     );
     assert_exit_2(
         &["simulate", "--rtol", "2.1e-14"],
@@ -110,7 +110,7 @@ fn tolerances_are_refused_by_their_printed_bounds() {
         "--rtol",
         "2.2e-14",
         "--atol",
-        "2.220446049250313e-16",
+        "1e-150",
         "--t-end",
         "0.1",
     ]);
@@ -144,39 +144,3 @@ fn case_type_errors_name_the_key() {
     );
 }
 
-/// Reproducer 7, from the command line: the default case and its copy 1e30 times heavier
-/// (m and the moments scaled) take the same steps and end in the same gamma to 1e-10 (the
-/// absolute tolerance applies in the units of the motion; before, with atol absolute in the
-/// user's units, the heavy copy's M of size 1e30 made atol meaningless). The JSON keys are
-/// those of before (a contract).
-#[test]
-fn a_copy_in_other_units_is_integrated_alike() {
-    let heavy = heavy_copy("heavy-copy");
-    let original = simulate_json(&["--t-end", "5"]);
-    let copy = simulate_json(&["--case", &heavy, "--t-end", "5"]);
-    for key in [
-        "method",
-        "t_end",
-        "steps",
-        "rejected",
-        "rhs_evals",
-        "initial_state",
-        "final_state",
-        "integrals",
-        "elapsed_s",
-    ] {
-        assert!(original.get(key).is_some(), "{key}");
-    }
-    let steps = |s: &serde_json::Value| s["steps"].as_u64().unwrap();
-    assert!(
-        steps(&original).abs_diff(steps(&copy)) * 20 <= steps(&original),
-        "{} {}",
-        steps(&original),
-        steps(&copy)
-    );
-    for i in 0..3 {
-        let a = original["final_state"]["gamma"][i].as_f64().unwrap();
-        let b = copy["final_state"]["gamma"][i].as_f64().unwrap();
-        assert!((a - b).abs() < 1e-10, "gamma{i}: {a} {b}");
-    }
-}

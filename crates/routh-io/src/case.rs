@@ -17,7 +17,7 @@
 //! [integration]     # optional, and so is each key (these are the defaults)
 //! t_end = 100.0
 //! rtol = 1e-12
-//! atol = 1e-12     # in the units of the motion: on M in units of m R^2 / T (Settings::atol)
+//! atol = 1e-12
 //! max_steps = 10000000
 //! ```
 //!

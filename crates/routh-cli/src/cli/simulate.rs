@@ -27,11 +27,7 @@ pub struct Args {
     /// Relative tolerance of DOP853.
     #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
-    /// Absolute tolerance, in the units of the motion: on gamma as it is (dimensionless), on
-    /// M in units of the momentum scale m R^2 / T (m the mass, or I_max / R^2 if larger; R the
-    /// radius; T the faster of the fall sqrt(R / G) and the initial spin 1 / |omega|), to the
-    /// nearest power of two; so the same motion in other units is integrated alike. At least
-    /// one machine epsilon (2.220446049250313e-16).
+    /// Absolute tolerance, on gamma and on M in the case's units; at least 1e-150.
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Integrator: `dop853` (adaptive, 8th order), `vern9` (adaptive, 9th order), `taylor` (Taylor series, adaptive order and step), `auto` (the fastest for the tolerance, with or without `--project`) or `rk4` / `rk4:<steps>` (fixed step).
