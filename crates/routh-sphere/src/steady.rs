@@ -646,11 +646,12 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
 
 /// [`steady_precessions`] with the bound beyond which an unlisted far steady precession lies.
 ///
-/// The roots omega_t are found in the body's units, from samples of `Q'(cos theta)` at
-/// `omega_t = -1 / T, 0, 1 / T` (T of the motion, [`Units`]: the samples scale with the body,
-/// and every decision of [`sampled_quadratic_roots`] is relative to them, so the roots are
-/// scale-free; in the body's units the states are those the quadrature's reference data were
-/// made from, to the bit); the stability of each is judged in the units of the motion.
+/// The roots omega_t are found in the units of the motion ([`Units`]), from samples of
+/// `Q'(cos theta)` at `omega_t T = -1, 0, 1`, and converted back; every decision of
+/// [`sampled_quadratic_roots`] is relative to the samples, so the roots are scale-free. (In
+/// the body's units the reduction's terms carry powers of m R^2: for m = 1e25, R = 2.3e7 the
+/// slope overflowed and the motion was refused, while its copy in other units was solved;
+/// tests/scaling.rs.) The stability of each is judged in the units of the motion too.
 pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPrecessions> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;
@@ -666,8 +667,8 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
     let scaled = units.body(body)?;
     let u = theta.cos();
     let slope = |omega_t: f64| -> Result<(f64, f64)> {
-        let state = tilted_state(body, theta, omega_t, spin)?;
-        let red = Reduction::of_state(body, &state)?;
+        let state = tilted_state(&scaled, theta, omega_t, spin * t)?;
+        let red = Reduction::of_state(&scaled, &state)?;
         let value = red.q_derivatives(u).1;
         if value.is_finite() {
             Ok((value, f64::EPSILON * red.q_slope_scale(u)))
@@ -675,7 +676,7 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             representable(
                 &scaled,
                 spin * t,
-                &units.state(&state).to_array(),
+                &state.to_array(),
                 "the slope Q'(cos theta) of the condition of steady precession",
                 value,
             )
@@ -685,12 +686,13 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
     // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 / T
     // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
     // at theta = pi/2) there is none.
-    let roots = sampled_quadratic_roots(slope, 1.0 / t)?;
+    let roots = sampled_quadratic_roots(slope, 1.0)?;
     let precessions = roots
         .roots
         .into_iter()
         .zip(roots.accuracies)
         .map(|(omega_t, omega_t_accuracy)| {
+            let (omega_t, omega_t_accuracy) = (omega_t / t, omega_t_accuracy / t);
             let state = tilted_state(body, theta, omega_t, spin)?;
             let precession = u * omega_t / theta.sin() - spin;
             let judged = stability(&scaled, &units.state(&state), precession * t)?;
@@ -710,6 +712,6 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
         .collect::<Result<Vec<_>>>()?;
     Ok(TiltPrecessions {
         precessions,
-        unlisted_beyond: roots.unresolved,
+        unlisted_beyond: roots.unresolved.map(|bound| bound / t),
     })
 }

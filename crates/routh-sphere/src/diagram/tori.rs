@@ -24,6 +24,7 @@
 //! [`integrate_level_set`] checks a count independently: it integrates (mg-eq) with DOP853 from
 //! points sampled on the level set and records the range of gamma3 each trajectory covers.
 
+use super::relative_equilibria::plane_rate;
 use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
@@ -32,6 +33,7 @@ use crate::problem::{Problem, Status};
 use crate::quadrature::Reduction;
 use crate::simulate::Settings;
 use crate::state::{Normalise, State};
+use crate::units::Units;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -97,13 +99,50 @@ fn critical_points(red: &Reduction) -> Result<Vec<f64>> {
 /// What the turning points are roots of.
 const TURNING: &str = "the turning points of Q";
 
-/// Whether `q` is zero within the tolerance at `u`.
+/// Whether `q` is zero within the tolerance at `u`: against the round-off of Q's terms and
+/// that of `u` itself, one ulp of which moves each term by its slope (the slopes cancel in
+/// `Q'` at a critical point, not in the round-off). Near a pole the terms of Q vanish like
+/// `1 - u^2` while their slopes do not, so the terms alone understate the round-off there:
+/// the steady precession at tilt 0.01 of a balanced ball (a = 0, I1 = I3) left Q = 5e-21
+/// above its double root, far above `q_scale` epsilons, and the count called its value
+/// regular, with a torus of width 1.5e-10 (found by tests/scaling.rs).
 fn negligible(red: &Reduction, u: f64, q: f64) -> bool {
-    q.abs() <= CRITICAL_TOLERANCE * red.q_scale(u)
+    q.abs() <= CRITICAL_TOLERANCE * (red.q_scale(u) + u.abs() * red.q_slope_scale(u))
 }
 
-/// The tori of the value `value` of the body (I1 = I2), from the intervals where Q > 0.
+/// The tori of the value `value` of the body (I1 = I2), from the intervals where Q > 0,
+/// computed in the units of the value's motion ([`value_units`]; in the body's units the
+/// reduction's terms carry powers of m R^2 that overflow for large bodies) and returned with
+/// `value` as given.
 pub fn torus_count(body: &Body, value: Value) -> Result<TorusCount> {
+    let units = value_units(body, value)?;
+    let count = count_in_units(&units.body(body)?, value.in_units(&units))?;
+    Ok(TorusCount { value, ..count })
+}
+
+/// The units of the motions of `value`: [`Units::with_rate`] with the fastest of the rates
+/// its integrals give, that of the vertical spins of its H3 ([`plane_rate`]), `|K| / (m R^2)`
+/// and `sqrt(|H1| / (m R^2))` (each scales as a rate with the body, so the count is
+/// scale-free).
+pub fn value_units(body: &Body, value: Value) -> Result<Units> {
+    let inertia = Units::with_rate(body, 0.0).inertia();
+    let rate = plane_rate(body, value.h3)?
+        .max(value.k.abs() / inertia)
+        .max((value.h1.abs() / inertia).sqrt());
+    if !rate.is_finite() {
+        return Err(RouthError::Singular {
+            formula: "the units of a value of the integrals",
+            reason: format!(
+                "the rate of its motion is not finite at H1 = {}, H3 = {}, K = {}",
+                value.h1, value.h3, value.k
+            ),
+        });
+    }
+    Ok(Units::with_rate(body, rate))
+}
+
+/// [`torus_count`] in the units of its arguments.
+fn count_in_units(body: &Body, value: Value) -> Result<TorusCount> {
     let red = value.reduction(body)?;
     let mut nodes = vec![-1.0];
     nodes.extend(critical_points(&red)?);
