@@ -77,15 +77,32 @@ pub(crate) fn root(f: impl Fn(f64) -> f64, a: f64, b: f64, what: &'static str) -
     })
 }
 
-/// The critical points of Q in (-1, 1), ascending.
+/// Halvings of the first tilt step toward each pole ([`critical_points`]): down to
+/// `pi / 4096 / 2^48`, about 3e-18, below which `1 - |u|` is not resolved in f64.
+const POLE_HALVINGS: i32 = 48;
+
+/// The critical points of Q in (-1, 1), ascending: sign changes of Q' on
+/// [`CRITICAL_POINT_SAMPLES`] equal steps of the tilt, and on steps halved toward each pole
+/// ([`POLE_HALVINGS`]), where a motion within the first step of the axis has a critical point
+/// and its neighbour closer than one step (the minimum of Q at an unstable steady precession
+/// 4e-4 from the lower pole and the maximum beside it were both in the first step, and the
+/// count called the critical value regular; tests/scaling.rs).
 fn critical_points(red: &Reduction) -> Result<Vec<f64>> {
     let slope = |u: f64| red.q_derivatives(u).1;
-    let tilts: Vec<f64> = (0..=CRITICAL_POINT_SAMPLES)
-        .map(|i| (PI * (1.0 - i as f64 / CRITICAL_POINT_SAMPLES as f64)).cos())
+    let step = PI / CRITICAL_POINT_SAMPLES as f64;
+    let near_poles = (1..=POLE_HALVINGS).map(|k| step * 0.5f64.powi(k));
+    let mut angles: Vec<f64> = (0..=CRITICAL_POINT_SAMPLES)
+        .map(|i| PI * (1.0 - i as f64 / CRITICAL_POINT_SAMPLES as f64))
+        .chain(near_poles.clone())
+        .chain(near_poles.map(|d| PI - d))
         .collect();
+    angles.sort_by(|a, b| b.total_cmp(a));
+    // The halvings below the resolution of u give the poles themselves again: kept once.
+    let mut tilts: Vec<f64> = angles.iter().map(|t| t.cos()).collect();
+    tilts.dedup();
     let slopes: Vec<f64> = tilts.iter().map(|&u| slope(u)).collect();
     let mut points = vec![];
-    for i in 0..CRITICAL_POINT_SAMPLES {
+    for i in 0..tilts.len() - 1 {
         let (a, b) = (tilts[i], tilts[i + 1]);
         if slopes[i] == 0.0 && i > 0 {
             points.push(a);
