@@ -567,3 +567,45 @@ fn q_second_derivative_near_a_pole_within_its_accuracy() {
         );
     }
 }
+
+/// Negative controls of the comparisons above: a copy's number left unconverted is not the
+/// original's; contradicting verdicts and types do not agree; DOP853 from a vertical spin of
+/// the default body at half its threshold, tilted by 1e-7, leaves it (the instability the
+/// unstable verdicts are checked by), and at twice the threshold stays near it.
+#[test]
+fn the_comparisons_can_fail() {
+    let body = Body::default();
+    let w = routh_threshold(&body, 1.0);
+    let copy = scaled_body(&body, [1e6, 1e-3, 10.0]).unwrap();
+    let (v, c) = (
+        vertical_spin(&body, 1.0, 0.5 * w).unwrap(),
+        vertical_spin(&copy, 1.0, 0.05 * w).unwrap(),
+    );
+    let q2 = v.stability.q_second_derivative;
+    assert!(same(
+        c.stability.q_second_derivative,
+        0.01,
+        q2,
+        1.0,
+        SAME,
+        v.verdict.q_accuracy
+    ));
+    assert!(!same(
+        c.stability.q_second_derivative,
+        1.0,
+        q2,
+        1.0,
+        SAME,
+        v.verdict.q_accuracy
+    ));
+    assert!(!agree(StabilityType::Elliptic, Decision::Unstable));
+    assert!(!agree(StabilityType::FocusFocus, Decision::Stable));
+    for (f, grows) in [(0.5, true), (2.0, false)] {
+        let spin = vertical_spin(&body, 1.0, f * w).unwrap();
+        let units = Units::of(&body, &spin.state.omega(&body));
+        let scaled = units.body(&body).unwrap();
+        let start = tilted(&scaled, &units.state(&spin.state), 1e-7).to_array();
+        let far = largest_departure(&scaled, start, 50.0, 0.0).unwrap();
+        assert_eq!(far > 1e3 * 1e-7, grows, "f = {f}: {far}");
+    }
+}
