@@ -190,14 +190,18 @@ pub struct SteadyPrecession {
 
 /// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
 /// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0
-/// ([`missing_threshold`] says why). Evaluated with the mass divided out,
-/// `sqrt(4 G a p (A/m + l^2)) / (C/m + R l)`, so that no product of masses and inertias can
-/// overflow: the one formula that `steady`, `diagram` and Python report.
+/// ([`missing_threshold`] says why). Evaluated with the masses divided by the mass unit `mu`
+/// of [`Units`] (`max(m, I_max / R^2)`), `sqrt(4 G a p (A/mu + n l^2) n) / (C/mu + n R l)`,
+/// `n = m / mu <= 1`, so that no product of masses and inertias can overflow, nor a quotient
+/// by a tiny mass (with m = 6.5e-319 and I = 8.4e-5 the quotient `I / m` was infinite and the
+/// threshold NaN; found by the fuzz target `numerics_model`): the one formula that `steady`,
+/// `diagram` and Python report.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
-    let m = body.m();
+    let mu = Units::with_rate(body, 0.0).mass();
+    let n = body.m() / mu;
     let l = body.radius() + body.a() * pole;
-    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / m + l * l);
-    lift.max(0.0).sqrt() / (body.i3() / m + body.radius() * l)
+    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / mu + n * l * l) * n;
+    lift.max(0.0).sqrt() / (body.i3() / mu + n * body.radius() * l)
 }
 
 /// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
