@@ -717,7 +717,7 @@ mod steady {
         )
         .unwrap();
         let wc = routh_threshold(&body, 1.0);
-        assert!(wc.is_finite() && wc >= 0.0 && wc < 1e-150, "{wc}");
+        assert!((0.0..1e-150).contains(&wc), "{wc}");
         let v = vertical_spin(&body, 1.0, 8.352941176470586e-5).unwrap();
         assert_eq!(v.routh_threshold, Some(wc));
         assert_eq!(v.verdict.decision, Decision::Stable);
