@@ -190,14 +190,18 @@ pub struct SteadyPrecession {
 
 /// Routh's threshold spin rate for the vertical spin at `gamma3 = pole`:
 /// `w_c = sqrt(4 m G a p (A + m l^2)) / (C + m R l)`, `l = R + a p`, when `a p > 0`; else 0
-/// ([`missing_threshold`] says why). Evaluated with the mass divided out,
-/// `sqrt(4 G a p (A/m + l^2)) / (C/m + R l)`, so that no product of masses and inertias can
-/// overflow: the one formula that `steady`, `diagram` and Python report.
+/// ([`missing_threshold`] says why). Evaluated with the masses divided by the mass unit `mu`
+/// of [`Units`] (`max(m, I_max / R^2)`), `sqrt(4 G a p (A/mu + n l^2) n) / (C/mu + n R l)`,
+/// `n = m / mu <= 1`, so that no product of masses and inertias can overflow, nor a quotient
+/// by a tiny mass (with m = 6.5e-319 and I = 8.4e-5 the quotient `I / m` was infinite and the
+/// threshold NaN; found by the fuzz target `numerics_model`): the one formula that `steady`,
+/// `diagram` and Python report.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
-    let m = body.m();
+    let mu = Units::with_rate(body, 0.0).mass();
+    let n = body.m() / mu;
     let l = body.radius() + body.a() * pole;
-    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / m + l * l);
-    lift.max(0.0).sqrt() / (body.i3() / m + body.radius() * l)
+    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / mu + n * l * l) * n;
+    lift.max(0.0).sqrt() / (body.i3() / mu + n * body.radius() * l)
 }
 
 /// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
@@ -646,11 +650,12 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
 
 /// [`steady_precessions`] with the bound beyond which an unlisted far steady precession lies.
 ///
-/// The roots omega_t are found in the body's units, from samples of `Q'(cos theta)` at
-/// `omega_t = -1 / T, 0, 1 / T` (T of the motion, [`Units`]: the samples scale with the body,
-/// and every decision of [`sampled_quadratic_roots`] is relative to them, so the roots are
-/// scale-free; in the body's units the states are those the quadrature's reference data were
-/// made from, to the bit); the stability of each is judged in the units of the motion.
+/// The roots omega_t are found in the units of the motion ([`Units`]), from samples of
+/// `Q'(cos theta)` at `omega_t T = -1, 0, 1`, and converted back; every decision of
+/// [`sampled_quadratic_roots`] is relative to the samples, so the roots are scale-free. (In
+/// the body's units the reduction's terms carry powers of m R^2: for m = 1e25, R = 2.3e7 the
+/// slope overflowed and the motion was refused, while its copy in other units was solved;
+/// tests/scaling.rs.) The stability of each is judged in the units of the motion too.
 pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPrecessions> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;
@@ -666,8 +671,8 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
     let scaled = units.body(body)?;
     let u = theta.cos();
     let slope = |omega_t: f64| -> Result<(f64, f64)> {
-        let state = tilted_state(body, theta, omega_t, spin)?;
-        let red = Reduction::of_state(body, &state)?;
+        let state = tilted_state(&scaled, theta, omega_t, spin * t)?;
+        let red = Reduction::of_state(&scaled, &state)?;
         let value = red.q_derivatives(u).1;
         if value.is_finite() {
             Ok((value, f64::EPSILON * red.q_slope_scale(u)))
@@ -675,7 +680,7 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             representable(
                 &scaled,
                 spin * t,
-                &units.state(&state).to_array(),
+                &state.to_array(),
                 "the slope Q'(cos theta) of the condition of steady precession",
                 value,
             )
@@ -685,12 +690,13 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
     // A far root that the samples do not resolve (`unresolved`: omega_t beyond about 1e3 / T
     // over the relative round-off of Q') is not listed; where the quadratic is linear (a = 0
     // at theta = pi/2) there is none.
-    let roots = sampled_quadratic_roots(slope, 1.0 / t)?;
+    let roots = sampled_quadratic_roots(slope, 1.0)?;
     let precessions = roots
         .roots
         .into_iter()
         .zip(roots.accuracies)
         .map(|(omega_t, omega_t_accuracy)| {
+            let (omega_t, omega_t_accuracy) = (omega_t / t, omega_t_accuracy / t);
             let state = tilted_state(body, theta, omega_t, spin)?;
             let precession = u * omega_t / theta.sin() - spin;
             let judged = stability(&scaled, &units.state(&state), precession * t)?;
@@ -710,6 +716,6 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
         .collect::<Result<Vec<_>>>()?;
     Ok(TiltPrecessions {
         precessions,
-        unlisted_beyond: roots.unresolved,
+        unlisted_beyond: roots.unresolved.map(|bound| bound / t),
     })
 }

@@ -1046,7 +1046,7 @@ mod fuzz_properties {
 
         #[test]
         fn numerical_entry_points_on_arbitrary_numbers(bytes in prop::collection::vec(any::<u8>(), 144..160)) {
-            properties::numerics(&properties::decode_f64s(&bytes), true);
+            properties::numerics(&properties::decode_f64s(&bytes), properties::Parts::All);
         }
 
         #[test]
@@ -1064,7 +1064,7 @@ mod fuzz_properties {
             properties::numerics(&[
                 1.0, 1.0, a, 0.4, 0.4, 0.5, 9.81, -1.0,
                 theta.sin(), 0.0, theta.cos(), 0.1 * tip, 0.0, spin, t, tilt,
-            ], true);
+            ], properties::Parts::All);
         }
     }
 
@@ -1114,7 +1114,7 @@ mod fuzz_properties {
             196, 196, 196, 255, 165, 165, 165, 165, 255, 0, 215, 0, 255, 255, 255, 255, 0, 215,
             196, 255, 196, 0, 196, 196, 0, 38, 10, 255,
         ];
-        properties::numerics(&properties::decode_f64s(bytes), true);
+        properties::numerics(&properties::decode_f64s(bytes), properties::Parts::All);
         // Negative control: a moment at the limit is accepted.
         let sane = routh::Body::new(
             body.m(),
@@ -1147,7 +1147,7 @@ mod fuzz_properties {
             0, 255, 255, 255, 255, 255, 0, 196, 255, 196, 0, 196, 10, 255,
         ];
         let values = properties::decode_f64s(bytes);
-        properties::numerics(&values, true);
+        properties::numerics(&values, properties::Parts::All);
         let [m, r, a, i1, _, i3, g] = values[..7].try_into().unwrap();
         let body = routh::Body::new(m, r, a, i1, i1, i3, g).unwrap();
         let state = routh::State::from_omega(

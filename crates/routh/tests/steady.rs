@@ -697,6 +697,35 @@ mod steady {
         }
     }
 
+    /// Fuzz crash (issue 33, `numerics_model`): with a subnormal mass, m = 6.5e-319, and
+    /// moments 8.4e-5, Routh's threshold divided the moments by m, got infinity and gave
+    /// NaN. With the masses divided by the mass unit `max(m, I / R^2)` it is finite and tiny
+    /// (the threshold tends to 0 with the mass: `w_c^2` is proportional to m), and its Q''
+    /// root agrees. Negative control: the former formula, `I / m`, is NaN here.
+    #[test]
+    fn fuzz_crash_threshold_of_a_tiny_mass_is_finite() {
+        let r = 0.008352941176470587;
+        let i = 8.352941176470588e-5;
+        let body = Body::new(
+            6.4729e-319,
+            r,
+            8.352941176470588e-5,
+            i,
+            i,
+            i,
+            9.999999906484256e-5,
+        )
+        .unwrap();
+        let wc = routh_threshold(&body, 1.0);
+        assert!((0.0..1e-150).contains(&wc), "{wc}");
+        let v = vertical_spin(&body, 1.0, 8.352941176470586e-5).unwrap();
+        assert_eq!(v.routh_threshold, Some(wc));
+        assert_eq!(v.verdict.decision, Decision::Stable);
+        let (m, l) = (body.m(), r + body.a());
+        let former = (4.0 * body.gravity() * body.a() * (i / m + l * l)).sqrt() / (i / m + r * l);
+        assert!(former.is_nan());
+    }
+
     /// A Routh sphere and its spin, dimensionless-looking (m = R = 1), drawn at random:
     /// moments from slender (I3 = 0.02 I1) to flat (I3 = 2 I1, the triangle inequality's
     /// limit), both signs of a, gravity or none (a quarter of the bodies), and a spin of either

@@ -69,8 +69,24 @@ pub struct RelativeEquilibrium {
 }
 
 impl RelativeEquilibrium {
-    /// The relative equilibrium through `state` rotating at `precession`, classified.
+    /// The relative equilibrium through `state` rotating at `precession`, classified in the
+    /// units of its motion (`Units::of`) and returned in the body's units, with `state` as
+    /// given. In the body's units Q'' and its round-off came out of the reduction with the
+    /// powers of m R^2 of its terms: for the copy of a balanced vertical spin with m = 1.3e22,
+    /// R = 1e9 the type was "undecided" where the original's was elliptic (tests/scaling.rs).
     pub fn new(body: &Body, theta: f64, state: State, precession: f64) -> Result<Self> {
+        let units = Units::of(body, &state.omega(body));
+        let scaled = units.body(body)?;
+        let motion = units.state(&state);
+        let inner = Self::in_units(&scaled, theta, motion, precession * units.time())?;
+        Ok(RelativeEquilibrium {
+            state,
+            ..inner.back(&units)
+        })
+    }
+
+    /// [`RelativeEquilibrium::new`] in the units of its arguments.
+    fn in_units(body: &Body, theta: f64, state: State, precession: f64) -> Result<Self> {
         let value = Value::of_state(body, &state);
         let lin = linearise(body, &state, precession)?;
         let omega = state.omega(body);

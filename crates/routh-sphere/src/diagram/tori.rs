@@ -24,6 +24,7 @@
 //! [`integrate_level_set`] checks a count independently: it integrates (mg-eq) with DOP853 from
 //! points sampled on the level set and records the range of gamma3 each trajectory covers.
 
+use super::relative_equilibria::plane_rate;
 use super::value::Value;
 use crate::body::Body;
 use crate::error::{Result, RouthError};
@@ -32,6 +33,7 @@ use crate::problem::{Problem, Status};
 use crate::quadrature::Reduction;
 use crate::simulate::Settings;
 use crate::state::{Normalise, State};
+use crate::units::Units;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -75,15 +77,32 @@ pub(crate) fn root(f: impl Fn(f64) -> f64, a: f64, b: f64, what: &'static str) -
     })
 }
 
-/// The critical points of Q in (-1, 1), ascending.
+/// Halvings of the first tilt step toward each pole ([`critical_points`]): down to
+/// `pi / 4096 / 2^48`, about 3e-18, below which `1 - |u|` is not resolved in f64.
+const POLE_HALVINGS: i32 = 48;
+
+/// The critical points of Q in (-1, 1), ascending: sign changes of Q' on
+/// [`CRITICAL_POINT_SAMPLES`] equal steps of the tilt, and on steps halved toward each pole
+/// ([`POLE_HALVINGS`]), where a motion within the first step of the axis has a critical point
+/// and its neighbour closer than one step (the minimum of Q at an unstable steady precession
+/// 4e-4 from the lower pole and the maximum beside it were both in the first step, and the
+/// count called the critical value regular; tests/scaling.rs).
 fn critical_points(red: &Reduction) -> Result<Vec<f64>> {
     let slope = |u: f64| red.q_derivatives(u).1;
-    let tilts: Vec<f64> = (0..=CRITICAL_POINT_SAMPLES)
-        .map(|i| (PI * (1.0 - i as f64 / CRITICAL_POINT_SAMPLES as f64)).cos())
+    let step = PI / CRITICAL_POINT_SAMPLES as f64;
+    let near_poles = (1..=POLE_HALVINGS).map(|k| step * 0.5f64.powi(k));
+    let mut angles: Vec<f64> = (0..=CRITICAL_POINT_SAMPLES)
+        .map(|i| PI * (1.0 - i as f64 / CRITICAL_POINT_SAMPLES as f64))
+        .chain(near_poles.clone())
+        .chain(near_poles.map(|d| PI - d))
         .collect();
+    angles.sort_by(|a, b| b.total_cmp(a));
+    // The halvings below the resolution of u give the poles themselves again: kept once.
+    let mut tilts: Vec<f64> = angles.iter().map(|t| t.cos()).collect();
+    tilts.dedup();
     let slopes: Vec<f64> = tilts.iter().map(|&u| slope(u)).collect();
     let mut points = vec![];
-    for i in 0..CRITICAL_POINT_SAMPLES {
+    for i in 0..tilts.len() - 1 {
         let (a, b) = (tilts[i], tilts[i + 1]);
         if slopes[i] == 0.0 && i > 0 {
             points.push(a);
@@ -97,13 +116,50 @@ fn critical_points(red: &Reduction) -> Result<Vec<f64>> {
 /// What the turning points are roots of.
 const TURNING: &str = "the turning points of Q";
 
-/// Whether `q` is zero within the tolerance at `u`.
+/// Whether `q` is zero within the tolerance at `u`: against the round-off of Q's terms and
+/// that of `u` itself, one ulp of which moves each term by its slope (the slopes cancel in
+/// `Q'` at a critical point, not in the round-off). Near a pole the terms of Q vanish like
+/// `1 - u^2` while their slopes do not, so the terms alone understate the round-off there:
+/// the steady precession at tilt 0.01 of a balanced ball (a = 0, I1 = I3) left Q = 5e-21
+/// above its double root, far above `q_scale` epsilons, and the count called its value
+/// regular, with a torus of width 1.5e-10 (found by tests/scaling.rs).
 fn negligible(red: &Reduction, u: f64, q: f64) -> bool {
-    q.abs() <= CRITICAL_TOLERANCE * red.q_scale(u)
+    q.abs() <= CRITICAL_TOLERANCE * (red.q_scale(u) + u.abs() * red.q_slope_scale(u))
 }
 
-/// The tori of the value `value` of the body (I1 = I2), from the intervals where Q > 0.
+/// The tori of the value `value` of the body (I1 = I2), from the intervals where Q > 0,
+/// computed in the units of the value's motion ([`value_units`]; in the body's units the
+/// reduction's terms carry powers of m R^2 that overflow for large bodies) and returned with
+/// `value` as given.
 pub fn torus_count(body: &Body, value: Value) -> Result<TorusCount> {
+    let units = value_units(body, value)?;
+    let count = count_in_units(&units.body(body)?, value.in_units(&units))?;
+    Ok(TorusCount { value, ..count })
+}
+
+/// The units of the motions of `value`: [`Units::with_rate`] with the fastest of the rates
+/// its integrals give, that of the vertical spins of its H3 ([`plane_rate`]), `|K| / (m R^2)`
+/// and `sqrt(|H1| / (m R^2))` (each scales as a rate with the body, so the count is
+/// scale-free).
+pub fn value_units(body: &Body, value: Value) -> Result<Units> {
+    let inertia = Units::with_rate(body, 0.0).inertia();
+    let rate = plane_rate(body, value.h3)?
+        .max(value.k.abs() / inertia)
+        .max((value.h1.abs() / inertia).sqrt());
+    if !rate.is_finite() {
+        return Err(RouthError::Singular {
+            formula: "the units of a value of the integrals",
+            reason: format!(
+                "the rate of its motion is not finite at H1 = {}, H3 = {}, K = {}",
+                value.h1, value.h3, value.k
+            ),
+        });
+    }
+    Ok(Units::with_rate(body, rate))
+}
+
+/// [`torus_count`] in the units of its arguments.
+fn count_in_units(body: &Body, value: Value) -> Result<TorusCount> {
     let red = value.reduction(body)?;
     let mut nodes = vec![-1.0];
     nodes.extend(critical_points(&red)?);
