@@ -407,8 +407,8 @@ pub fn check_tolerances(rtol: f64, atol: f64) -> Result<()> {
         "atol",
         atol,
         atol >= MIN_ATOL,
-        "must be >= 1e-150: the step control squares error / atol, and below 1e-150 those \
-         squares leave the range of f64 (the first step size becomes 0)",
+        "must be >= 1e-150 (the step control squares error / atol: below it those squares \
+         leave the range of f64 and the first step size becomes 0)",
     )
 }
 

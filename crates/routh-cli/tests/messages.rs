@@ -100,7 +100,7 @@ fn tolerances_are_refused_by_their_printed_bounds() {
     );
     assert_exit_2(
         &["simulate", "--atol", "1e-320"],
-        "must be >= 1e-150: the step control squares error / atol",
+        "must be >= 1e-150 (the step control squares error / atol",
     );
     assert_exit_2(
         &["simulate", "--rtol", "2.1e-14"],
