@@ -8,8 +8,8 @@ use crate::error::{Number, Result, RouthError};
 use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
-    check_samples, drive, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
-    stepper, Projection, Stepper, Stop,
+    check_samples, drive, stepper, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
+    Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
 use crate::state::State;
@@ -767,9 +767,7 @@ mod tests {
                 "{rule}"
             );
         }
-        b.tolerances(2.2e-14, 1e-150)
-            .build()
-            .unwrap();
+        b.tolerances(2.2e-14, 1e-150).build().unwrap();
     }
 
     /// Regression (issue 33): `--atol 1e-320` ended in "step size too small at t = 0: h = 0";

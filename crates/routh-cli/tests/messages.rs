@@ -106,14 +106,7 @@ fn tolerances_are_refused_by_their_printed_bounds() {
         &["simulate", "--rtol", "2.1e-14"],
         "invalid option rtol = 2.1e-14: must be >= 2.2e-14",
     );
-    simulate_json(&[
-        "--rtol",
-        "2.2e-14",
-        "--atol",
-        "1e-150",
-        "--t-end",
-        "0.1",
-    ]);
+    simulate_json(&["--rtol", "2.2e-14", "--atol", "1e-150", "--t-end", "0.1"]);
 }
 
 /// Reproducer 4: `--t-end 0 --samples 2` blamed "samples = 0", a value never given; t_end,
@@ -143,4 +136,3 @@ fn case_type_errors_name_the_key() {
         "in [body]: invalid m = \"one\": invalid type: string \"one\", expected f64",
     );
 }
-
