@@ -323,7 +323,7 @@ fn sigterm_is_obeyed_within_a_second_by_every_long_command() {
             "--case",
             &case,
             "--t",
-            "1e8",
+            "1e4",
             "--samples",
             "10000000",
             "--out",
