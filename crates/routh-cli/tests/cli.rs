@@ -147,19 +147,11 @@ mod cli_exact_steady {
     //! The `routh exact` and `routh steady` commands run as a user would: JSON keys, CSV output,
     //! and exit code 2 with a message on bad input.
 
-    use std::process::Output;
 
     use crate::common;
     use common::{assert_exit_2, routh};
 
-    fn json(out: &Output) -> serde_json::Value {
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-    }
+    use common::json_of as json;
 
     #[test]
     fn exact_json_has_the_required_keys() {
@@ -999,13 +991,7 @@ mod cli_sweep {
     fn sweep_json(args: &[&str]) -> serde_json::Value {
         let mut all = vec!["sweep", "--json"];
         all.extend_from_slice(args);
-        let out = routh(&all);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        serde_json::from_slice(&out.stdout).unwrap()
+        crate::common::json_of(&routh(&all))
     }
 
     const GRID: &str = "[sweep]\ntilt = { range = [0.3, 1.2], n = 4 }\nspin = { values = [4.0, 6.0] }\n\"body.a\" = { values = [0.2, 0.3] }\n";
@@ -1490,14 +1476,7 @@ mod steady_and_diagram_scales {
     /// A coarse resolution of `diagram`, for runs that check keys and refusals.
     const QUICK: [&str; 6] = ["--tilts", "20", "--grid", "4", "--loop-points", "8"];
 
-    fn json(out: &std::process::Output) -> serde_json::Value {
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        serde_json::from_slice(&out.stdout).unwrap()
-    }
+    use crate::common::json_of as json;
 
     /// The default case with its omega replaced by `(0, 0, spin)`.
     fn spinning(name: &str, spin: &str) -> std::path::PathBuf {

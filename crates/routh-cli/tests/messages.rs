@@ -24,13 +24,7 @@ const GAMMA: &str = "gamma = [0.29552020666133955, 0.0, 0.955336489125606]";
 fn simulate_json(args: &[&str]) -> serde_json::Value {
     let mut all = vec!["simulate", "--json"];
     all.extend_from_slice(args);
-    let out = routh(&all);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    common::json_of(&routh(&all))
 }
 
 /// Reproducer 1: gamma = [1e200, 1e200, 0] with `normalize = true` ran with gamma = [0, 0, 0];

@@ -15,7 +15,7 @@ mod reliability {
     use std::process::{Command, Output, Stdio};
     use std::time::{Duration, Instant};
 
-    use crate::common;
+    use crate::common::{self, listing};
 
     const DEFAULT: &str = routh::case::DEFAULT_CASE;
 
@@ -56,16 +56,6 @@ mod reliability {
     fn succeeded(out: &Output) -> String {
         assert!(out.status.success(), "{}", text(&out.stderr));
         text(&out.stdout)
-    }
-
-    /// The names in `dir`.
-    fn listing(dir: &Path) -> Vec<String> {
-        let mut names: Vec<String> = std::fs::read_dir(dir)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        names.sort();
-        names
     }
 
     fn case_file(dir: &Path, name: &str, text: &str) -> String {

@@ -25,6 +25,27 @@ pub fn routh(args: &[&str]) -> Output {
     command().args(args).output().expect("the binary runs")
 }
 
+/// The JSON that a successful run printed on standard output (the run's stderr in the
+/// message when it failed).
+pub fn json_of(out: &Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
+}
+
+/// The names in `dir`, sorted.
+pub fn listing(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
 /// Run `routh` with `args` and check that it fails as bad input should: exit code 2, a
 /// message containing `expected` on stderr, and no panic.
 pub fn assert_exit_2(args: &[&str], expected: &str) {
