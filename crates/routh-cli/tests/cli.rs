@@ -147,7 +147,6 @@ mod cli_exact_steady {
     //! The `routh exact` and `routh steady` commands run as a user would: JSON keys, CSV output,
     //! and exit code 2 with a message on bad input.
 
-
     use crate::common;
     use common::{assert_exit_2, routh};
 

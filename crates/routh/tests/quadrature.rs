@@ -973,7 +973,7 @@ mod exact_in_any_units {
     use routh::quadrature::{ExactSolution, Motion};
     use routh::state::{Normalise, State};
     use routh::steady::{routh_threshold, steady_precessions};
-    use routh::units::Units;
+    use routh::units::{scaled_body, scaled_state, Units};
     use routh::RouthError;
     use std::f64::consts::{PI, TAU};
 
@@ -981,29 +981,13 @@ mod exact_in_any_units {
         State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
     }
 
-    /// A state scaled in mass by `k`, length by `l` and time by `s`: `M -> k l^2 / s M`.
-    fn scaled_state(x: &State, [k, l, s]: [f64; 3]) -> State {
-        State {
-            gamma: x.gamma,
-            m: x.m.map(|v| k * l * l / s * v),
-        }
-    }
-
     /// The same motion in other units: the body and the state scaled in mass by `k`, length by
-    /// `l` and time by `s` (`I -> k l^2 I`, `G -> l / s^2 G`).
+    /// `l` and time by `s` (the library's [`scaled_body`] and [`scaled_state`]).
     fn scaled(body: &Body, x: &State, factors: [f64; 3]) -> (Body, State) {
-        let [k, l, s] = factors;
-        let copy = Body::new(
-            k * body.m(),
-            l * body.radius(),
-            l * body.a(),
-            k * l * l * body.i1(),
-            k * l * l * body.i2(),
-            k * l * l * body.i3(),
-            l / (s * s) * body.gravity(),
+        (
+            scaled_body(body, factors).unwrap(),
+            scaled_state(x, factors),
         )
-        .unwrap();
-        (copy, scaled_state(x, factors))
     }
 
     /// The relative difference of two numbers against `scale`.
