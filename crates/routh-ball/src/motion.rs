@@ -16,7 +16,7 @@
 //! * Kinematics of the rigid body: `dQ/dt = Q [omega]x` with omega in the body frame, i.e.
 //!   `dq/dt = q * (0, omega) / 2` (quaternion product), plus a term that vanishes on
 //!   `|q| = 1` and restores the norm against integration error
-//!   ([`QUATERNION_RESTORING_RATE`]). Then `d(Q^T e)/dt = (Q^T e) x omega`
+//!   ([`QUATERNION_RESTORING_FRACTION`]). Then `d(Q^T e)/dt = (Q^T e) x omega`
 //!   for a fixed space vector e: with `e = -e_z` this is the `dgamma/dt = gamma x omega` of
 //!   (m-eq), which the tests check.
 //! * No slip (rel-ch): the velocity of the centre of mass is `v = -omega x r = r x omega` in the
@@ -33,9 +33,10 @@
 use crate::ball::AsBall;
 use crate::body::Body;
 use crate::field::vector_field;
-use crate::integrate::OdeSystem;
+use crate::integrate::{OdeSystem, RunUnits};
 use crate::scalar::cross;
 use crate::state::State;
+use crate::units::Units;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 /// The number of components of the extended state `(gamma, M, q, x, y)`.
@@ -54,13 +55,16 @@ pub const FULL_COLUMN_NAMES: [&str; 9] = [
     "contact_y",
 ];
 
-/// The rate (1/s) at which the quaternion equation pulls `|q|` back to 1: the term
+/// The rate `k` at which the quaternion equation pulls `|q|` back to 1, as a fraction of the
+/// motion's rate `1 / T` (the time T of [`Units::of`] at the current state, rounded to a power
+/// of two, so that a copy of the motion in other units has the same `k T`): the term
 /// `-k (|q|^2 - 1) q` added to `q' = q * (0, omega) / 2` vanishes on the unit sphere, so it
 /// leaves the motion unchanged, and off it makes `e = |q|^2 - 1` obey `e' = -2k e (1 + e)`
 /// up to the integration error. Without it DOP853 at tolerance 1e-12 lets `|q| - 1` drift
-/// linearly to 1.3e-12 at t = 100 (default case); with k = 1 it stays below 5e-13, with no
-/// projection needed in any driver. k = 1 is slow beside |omega| ~ 10, so it adds no stiffness.
-pub const QUATERNION_RESTORING_RATE: f64 = 1.0;
+/// linearly to 1.3e-12 at t = 100 (default case); with k = 1 (1/8 of the default case's
+/// rate 1/T = 8 s^-1) it stays below 5e-13, with no projection needed in any driver. An
+/// eighth of the motion's rate is slow beside it, so it adds no stiffness.
+pub const QUATERNION_RESTORING_FRACTION: f64 = 0.125;
 
 /// The equations of motion of the full system: the reduced field (mg-eq) together with the
 /// quaternion kinematics and the horizontal velocity of the centre of mass from (rel-ch).
@@ -80,8 +84,9 @@ impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
         let state = State::from_array(&x);
         let omega = state.omega(self.body);
         let q = quaternion(y);
+        let k = QUATERNION_RESTORING_FRACTION / Units::of(self.body, &omega).binary().time();
         let q_dot = q * Quaternion::new(0.0, omega[0], omega[1], omega[2]) * 0.5
-            - q * (QUATERNION_RESTORING_RATE * (q.norm_squared() - 1.0));
+            - q * (k * (q.norm_squared() - 1.0));
         let r = self.body.ball().contact_vector(&state.gamma);
         let velocity = rotate(&q, &cross(&r, &omega));
         let mut dy = [0.0; FULL_DIM];
@@ -90,6 +95,21 @@ impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
         dy[10] = velocity[0];
         dy[11] = velocity[1];
         dy
+    }
+
+    /// The reduced state's units ([`Units::of_reduced`]), 1 for the quaternion, R (rounded
+    /// to a power of two) for the position of the contact point.
+    fn units(&self, y0: &[f64; FULL_DIM]) -> RunUnits<FULL_DIM> {
+        let reduced = Units::of_reduced(self.body, &std::array::from_fn(|i| y0[i]));
+        let r = Units::with_rate(self.body, 0.0).binary().length();
+        let mut components = [1.0; FULL_DIM];
+        components[..6].copy_from_slice(&reduced.components);
+        components[10] = r;
+        components[11] = r;
+        RunUnits {
+            time: reduced.time,
+            components,
+        }
     }
 }
 

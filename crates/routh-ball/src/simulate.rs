@@ -13,6 +13,7 @@ use crate::integrate::{
 };
 use crate::projection::LevelSet;
 use crate::state::State;
+use crate::units::Units;
 use serde::Serialize;
 use std::cell::RefCell;
 use std::time::Instant;
@@ -646,6 +647,11 @@ impl<B: AsBall> OdeSystem<6> for ReducedSystem<'_, B> {
         use crate::field::{vector_field_in, OmegaForm};
         Some(vector_field_in(OmegaForm::Determinant, self.0, y))
     }
+
+    /// gamma dimensionless, M in the motion's unit of angular momentum ([`Units::of_reduced`]).
+    fn units(&self, y0: &[f64; 6]) -> crate::integrate::RunUnits<6> {
+        Units::of_reduced(self.0, y0)
+    }
 }
 
 /// The reduced field (mg-eq) for the batched integrator: the one generic
@@ -654,6 +660,11 @@ impl<B: AsBall> crate::batch::Field<6> for ReducedSystem<'_, B> {
     #[inline(always)]
     fn eval<D: crate::scalar::Scalar>(&self, y: &[D; 6]) -> [D; 6] {
         crate::field::vector_field(self.0, y)
+    }
+
+    /// As the one-at-a-time run's ([`Units::of_reduced`]).
+    fn units(&self, y0: &[f64; 6]) -> crate::integrate::RunUnits<6> {
+        Units::of_reduced(self.0, y0)
     }
 }
 

@@ -20,6 +20,7 @@
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
 use crate::error::Result;
+use crate::integrate::RunUnits;
 use crate::state::State;
 
 /// The units of length, mass and time of a problem (see the module's documentation).
@@ -154,6 +155,23 @@ impl Units {
         State {
             gamma: state.gamma,
             m: state.m.map(|v| self.moment(v) * self.time),
+        }
+    }
+
+    /// The units of a run of `ball` from the reduced state `x = (gamma, M)`, in which an
+    /// integrator measures its absolute tolerance and makes its first step
+    /// ([`OdeSystem::units`]): the time T of the motion from `x`, 1 for gamma and the unit of
+    /// angular momentum `m R^2 / T` for M, rounded to powers of two ([`Units::binary`]), so
+    /// that the same motion written in other units is integrated with the same steps.
+    ///
+    /// [`OdeSystem::units`]: crate::integrate::OdeSystem::units
+    pub fn of_reduced(ball: &impl AsBall, x: &[f64; 6]) -> RunUnits<6> {
+        let state = State::from_array(x);
+        let units = Units::of(ball, &state.omega(ball)).binary();
+        let p = units.momentum();
+        RunUnits {
+            time: units.time(),
+            components: [1.0, 1.0, 1.0, p, p, p],
         }
     }
 

@@ -174,8 +174,8 @@ impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
             let (mut err5, mut err3) = (0.0, 0.0);
             let k = &self.k;
             for i in 0..N {
-                let sk = run.weight(i, run.y[i] + h * inc[i]);
-                let e3 = inc[i] - BHH[0] * k[0][i] - BHH[8] * k[8][i] - BHH[11] * k[11][i];
+                let (s, sk) = run.weight(i, run.y[i] + h * inc[i]);
+                let e3 = (inc[i] - BHH[0] * k[0][i] - BHH[8] * k[8][i] - BHH[11] * k[11][i]) * s;
                 err3 += (e3 / sk) * (e3 / sk);
                 let e5 = ER[0] * k[0][i]
                     + ER[5] * k[5][i]
@@ -185,6 +185,7 @@ impl<S: OdeSystem<N>, const N: usize> Dop853<'_, S, N> {
                     + ER[9] * k[9][i]
                     + ER[10] * k[10][i]
                     + ER[11] * k[11][i];
+                let e5 = e5 * s;
                 err5 += (e5 / sk) * (e5 / sk);
             }
             if !run.ctl.judge(scaled_error(err5, err3, h, N)) {

@@ -71,6 +71,117 @@ pub trait OdeSystem<const N: usize> {
     fn record(&self, _t: taylor::Var, _y: &[taylor::Var; N]) -> Option<[taylor::Var; N]> {
         None
     }
+
+    /// The units of a run from `y0` ([`RunUnits`]): of each component, in which the absolute
+    /// tolerance is measured (the adaptive methods keep the local error of component `i`
+    /// below about `(atol + rtol |y_i| / u_i) u_i` and size their Taylor series by
+    /// `|y_i| / u_i`), and of time, in which Hairer's initial step guess is made. A system
+    /// whose components have scales of their own (a momentum in the units of the motion)
+    /// returns them, so that the same motion written in other units is integrated with the
+    /// same steps: with units that are powers of two, to the bit (DOP853, Vern9) or to the
+    /// rounding of the Taylor method's step formula. All 1 (the default): the units the
+    /// components are written in.
+    fn units(&self, _y0: &[f64; N]) -> RunUnits<N> {
+        RunUnits::one()
+    }
+}
+
+/// The units of a run ([`OdeSystem::units`]): of time and of each component.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunUnits<const N: usize> {
+    /// The unit of time.
+    pub time: f64,
+    /// The unit of each component.
+    pub components: [f64; N],
+}
+
+impl<const N: usize> RunUnits<N> {
+    /// Every unit 1: the units the problem is written in.
+    pub fn one() -> Self {
+        RunUnits {
+            time: 1.0,
+            components: [1.0; N],
+        }
+    }
+}
+
+/// The scales of a run: the inverses `1 / u_i` of the units of its components
+/// ([`OdeSystem::units`]), by which each component is multiplied to be measured against the
+/// absolute tolerance, and the unit of time rounded to a power of two `2^e` (so that times
+/// and rates are converted to it exactly). A unit that is not a finite positive number with a
+/// finite positive inverse is taken as 1 (that component, or time, is measured in the units
+/// it is written in). The one place where the steppers and the lanes turn units into the
+/// weights of the error norm, the sizes of the Taylor series and the first step's units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scales<const N: usize> {
+    inverse: [f64; N],
+    /// `e`, the unit of time being `2^e`.
+    time_exponent: i32,
+}
+
+/// `u` if it and its inverse are finite and positive, else 1.
+fn usable(u: f64) -> f64 {
+    let inverse = 1.0 / u;
+    if u > 0.0 && u.is_finite() && inverse.is_finite() && inverse > 0.0 {
+        u
+    } else {
+        1.0
+    }
+}
+
+/// `x 2^e`, exact unless the result leaves the normal range (the power applied in parts,
+/// so that no factor overflows or underflows on its own).
+fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
+    const PART: i32 = 1000;
+    while e > PART {
+        x *= 2f64.powi(PART);
+        e -= PART;
+    }
+    while e < -PART {
+        x *= 2f64.powi(-PART);
+        e += PART;
+    }
+    x * 2f64.powi(e)
+}
+
+impl<const N: usize> Scales<N> {
+    /// The scales of a run with the units `units`.
+    pub fn of_units(units: &RunUnits<N>) -> Self {
+        Scales {
+            inverse: units.components.map(|u| 1.0 / usable(u)),
+            time_exponent: usable(units.time).log2().round() as i32,
+        }
+    }
+
+    /// The units the problem is written in (every scale 1).
+    pub fn one() -> Self {
+        Scales::of_units(&RunUnits::one())
+    }
+
+    /// The scale of component `i`, `1 / u_i`.
+    #[inline(always)]
+    pub fn of(&self, i: usize) -> f64 {
+        self.inverse[i]
+    }
+
+    /// The unit of time `T = 2^e`.
+    pub fn time(&self) -> f64 {
+        times_power_of_two(1.0, self.time_exponent)
+    }
+
+    /// `x T^k`: a quantity of `k` dimensions of time (or `-k` of rate) in the unit of time,
+    /// exactly.
+    #[inline(always)]
+    pub fn in_time_unit(&self, x: f64, k: i32) -> f64 {
+        times_power_of_two(x, k.saturating_mul(self.time_exponent))
+    }
+
+    /// `||v / u||_inf`: the largest component of `v` measured in its unit.
+    #[inline(always)]
+    pub fn max_norm(&self, v: impl Iterator<Item = f64>) -> f64 {
+        v.zip(self.inverse)
+            .fold(0.0, |m, (x, s)| m.max(x.abs() * s))
+    }
 }
 
 impl<F, const N: usize> OdeSystem<N> for F

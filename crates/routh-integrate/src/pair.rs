@@ -9,10 +9,14 @@ use std::cell::Cell;
 
 use super::compensated::compensated_add;
 use super::control::{fixed_step_options, Clock, Law, StepControl};
-use super::{check_start, IntegrateError, OdeSystem, Options};
+use super::{check_start, IntegrateError, OdeSystem, Options, Scales};
 
 /// Hairer's initial step size guess `HINIT` for a method of order `order`, given
-/// `f0 = f(t, y)` (one right-hand-side call).
+/// `f0 = f(t, y)` (one right-hand-side call), made in the run's units (`scales`, [`Scales`]):
+/// the components measured in their units and time in its unit `T`, so that a motion
+/// written in other units gets the same guess (Hairer's formula mixes rates of the first and
+/// second order, `max(||f'|| / ||y||, ||f|| / ||y||)`, so it depends on the unit of time it is
+/// evaluated in). With every unit 1, Hairer's code, operation for operation.
 #[allow(clippy::too_many_arguments)] // Hairer's argument list
 pub fn hinit<S: OdeSystem<N>, const N: usize>(
     sys: &S,
@@ -22,20 +26,23 @@ pub fn hinit<S: OdeSystem<N>, const N: usize>(
     posneg: f64,
     hmax: f64,
     opts: &Options,
+    scales: &Scales<N>,
     order: i32,
 ) -> f64 {
+    let unit = scales.time();
+    let sk = |i: usize| opts.atol() + opts.rtol() * (y[i].abs() * scales.of(i));
     let (mut dnf, mut dny) = (0.0, 0.0);
     for i in 0..N {
-        let sk = opts.atol() + opts.rtol() * y[i].abs();
-        dnf += (f0[i] / sk).powi(2);
-        dny += (y[i] / sk).powi(2);
+        dnf += (f0[i] * unit * scales.of(i) / sk(i)).powi(2);
+        dny += (y[i] * scales.of(i) / sk(i)).powi(2);
     }
+    // The guesses in units of T, then in time.
     let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
         1.0e-6
     } else {
         (dny / dnf).sqrt() * 0.01
     };
-    h = h.min(hmax).copysign(posneg);
+    h = (h * unit).min(hmax).copysign(posneg);
     let mut y1 = [0.0; N];
     for i in 0..N {
         y1[i] = y[i] + h * f0[i];
@@ -43,16 +50,16 @@ pub fn hinit<S: OdeSystem<N>, const N: usize>(
     let f1 = sys.rhs(t + h, &y1);
     let mut der2 = 0.0;
     for i in 0..N {
-        let sk = opts.atol() + opts.rtol() * y[i].abs();
-        der2 += ((f1[i] - f0[i]) / sk).powi(2);
+        der2 += ((f1[i] - f0[i]) * unit * scales.of(i) / sk(i)).powi(2);
     }
-    der2 = der2.sqrt() / h;
+    der2 = der2.sqrt() / (h / unit);
     let der12 = der2.abs().max(dnf.sqrt());
-    let h1 = if der12 <= 1e-15 {
-        1.0e-6_f64.max(h.abs() * 1.0e-3)
-    } else {
-        (0.01 / der12).powf(1.0 / f64::from(order))
-    };
+    let h1 = unit
+        * if der12 <= 1e-15 {
+            1.0e-6_f64.max((h / unit).abs() * 1.0e-3)
+        } else {
+            (0.01 / der12).powf(1.0 / f64::from(order))
+        };
     (100.0 * h.abs()).min(h1).min(hmax).copysign(posneg)
 }
 
@@ -64,6 +71,8 @@ pub struct RkStart<'a, S, const N: usize> {
     pub(crate) f0: [f64; N],
     pub(crate) control: StepControl,
     pub(crate) opts: Options,
+    /// The scales of the components ([`OdeSystem::units`] at `y0`).
+    pub(crate) scales: Scales<N>,
 }
 
 /// The start of a run of a Runge–Kutta pair of `order` under `law` from `(t0, y0)` to
@@ -85,10 +94,11 @@ pub(crate) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
     if f0.iter().any(|v| !v.is_finite()) {
         return Err(IntegrateError::NonFinite { t: t0 });
     }
+    let scales = Scales::of_units(&sys.units(&y0));
     let mut guessed = false;
     let mut control = StepControl::new(law, t0, t_end, opts, |posneg, hmax| {
         guessed = true;
-        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, order)
+        hinit(sys, t0, &y0, &f0, posneg, hmax, opts, &scales, order)
     });
     control.count_evals(1 + usize::from(guessed));
     Ok(RkStart {
@@ -97,6 +107,7 @@ pub(crate) fn rk_start<'a, S: OdeSystem<N>, const N: usize>(
         f0,
         control,
         opts: *opts,
+        scales,
     })
 }
 
@@ -176,6 +187,8 @@ pub(crate) struct RkRun<'a, S, C, const N: usize> {
     /// Time, step sizes, acceptance, end and counters of the run.
     pub(crate) ctl: StepControl,
     pub(crate) opts: Options,
+    /// The scales of the components, in which the error is measured.
+    scales: Scales<N>,
     /// Current state (after [`RkRun::set_state`], if called).
     pub(crate) y: [f64; N],
     /// `f(t, y)` for the current (possibly projected) state: the first stage of the next step.
@@ -195,6 +208,7 @@ impl<'a, S: OdeSystem<N>, C: Copy, const N: usize> RkRun<'a, S, C, N> {
             sys: start.sys,
             ctl: start.control,
             opts: start.opts,
+            scales: start.scales,
             y: start.y0,
             f: start.f0,
             y_prev: start.y0,
@@ -203,11 +217,14 @@ impl<'a, S: OdeSystem<N>, C: Copy, const N: usize> RkRun<'a, S, C, N> {
         }
     }
 
-    /// The weight `atol + rtol max(|y_i|, |y_new|)` of component `i` in the error of an
-    /// attempt whose new value there is `y_new` (Hairer's `SK`).
+    /// The scale `s_i` of component `i` and its weight `atol + rtol max(|y_i|, |y_new|) s_i`
+    /// in the error of an attempt whose new value there is `y_new` (Hairer's `SK`, in the
+    /// component's units): the error `e_i` of the component counts as `e_i s_i / SK`.
     #[inline(always)]
-    pub(crate) fn weight(&self, i: usize, y_new: f64) -> f64 {
-        self.opts.atol() + self.opts.rtol() * self.y[i].abs().max(y_new.abs())
+    pub(crate) fn weight(&self, i: usize, y_new: f64) -> (f64, f64) {
+        let s = self.scales.of(i);
+        let size = self.y[i].abs().max(y_new.abs()) * s;
+        (s, self.opts.atol() + self.opts.rtol() * size)
     }
 
     /// The accepted attempt with the increment `delta = h sum b_i k_i` becomes the last step:

@@ -130,8 +130,9 @@ impl<S: OdeSystem<N>, const N: usize> Vern9<'_, S, N> {
                 let est = weighted(&E, k);
                 let mut err = 0.0;
                 for i in 0..N {
-                    let sk = run.weight(i, run.y[i] + h * inc[i]);
-                    err += (est[i] / sk) * (est[i] / sk);
+                    let (s, sk) = run.weight(i, run.y[i] + h * inc[i]);
+                    let e = est[i] * s;
+                    err += (e / sk) * (e / sk);
                 }
                 h.abs() * (err / N as f64).sqrt()
             };

@@ -27,7 +27,7 @@ pub struct Args {
     /// Relative tolerance of DOP853.
     #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
-    /// Absolute tolerance, on gamma and on M in the case's units; at least 1e-150.
+    /// Absolute tolerance, in the motion's units (gamma dimensionless, M in units of m R^2 / T: see the README); at least 1e-150.
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Integrator: `dop853` (adaptive, 8th order), `vern9` (adaptive, 9th order), `taylor` (Taylor series, adaptive order and step), `auto` (the fastest for the tolerance, with or without `--project`) or `rk4` / `rk4:<steps>` (fixed step).

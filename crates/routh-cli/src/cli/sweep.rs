@@ -35,7 +35,7 @@ pub struct Args {
     /// Relative tolerance of DOP853.
     #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
-    /// Absolute tolerance of DOP853.
+    /// Absolute tolerance, in the motion's units (gamma dimensionless, M in units of m R^2 / T: see the README); at least 1e-150.
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// The most steps of one run (default: the case's `max_steps`, else 10,000,000); a run

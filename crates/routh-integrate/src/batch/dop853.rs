@@ -120,6 +120,10 @@ impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
     fn rhs(&self, _t: f64, y: &[f64; N]) -> [f64; N] {
         self.0.eval(y)
     }
+
+    fn units(&self, y0: &[f64; N]) -> crate::RunUnits<N> {
+        self.0.units(y0)
+    }
 }
 
 /// DOP853 in lanes: the stages of every lane (structure of arrays); the lanes' states and
@@ -127,6 +131,8 @@ impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
 struct Dop853Lanes<'f, F, const N: usize, const L: usize> {
     field: &'f F,
     opts: Options,
+    /// The scales of the components of each lane's run ([`crate::Scales`]).
+    scales: [Lanes<L>; N],
     /// `f(y)`, the first stage of the next step.
     f: [Lanes<L>; N],
     k: Stages<Lanes<L>, N>,
@@ -158,6 +164,7 @@ pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     let mut method = Dop853Lanes::<F, N, L> {
         field,
         opts: *opts,
+        scales: [Lanes::splat(1.0); N],
         f: zero,
         k: [zero; 16],
     };
@@ -177,6 +184,11 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
             (e, stats)
         })?;
         set_lane(&mut self.f, l, &start.f0);
+        set_lane(
+            &mut self.scales,
+            l,
+            &std::array::from_fn(|i| start.scales.of(i)),
+        );
         Ok(start.control)
     }
 
@@ -204,9 +216,9 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
         let (rtol, atol) = (self.opts.rtol(), self.opts.atol());
         let (mut err5, mut err3) = (Lanes::splat(0.0), Lanes::splat(0.0));
         for i in 0..N {
-            let y_new = runs.y[i] + h * inc[i];
-            let sk = runs.y[i].abs().max(y_new.abs()) * rtol + atol;
-            let e3 = inc[i] - k[0][i] * BHH[0] - k[8][i] * BHH[8] - k[11][i] * BHH[11];
+            let (y_new, s) = (runs.y[i] + h * inc[i], self.scales[i]);
+            let sk = runs.y[i].abs().max(y_new.abs()) * s * rtol + atol;
+            let e3 = (inc[i] - k[0][i] * BHH[0] - k[8][i] * BHH[8] - k[11][i] * BHH[11]) * s;
             err3 = err3 + (e3 / sk) * (e3 / sk);
             let e5 = k[0][i] * ER[0]
                 + k[5][i] * ER[5]
@@ -216,6 +228,7 @@ impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lan
                 + k[9][i] * ER[9]
                 + k[10][i] * ER[10]
                 + k[11][i] * ER[11];
+            let e5 = e5 * s;
             err5 = err5 + (e5 / sk) * (e5 / sk);
         }
         let accepted: [bool; L] = std::array::from_fn(|l| {

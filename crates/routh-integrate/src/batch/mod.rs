@@ -52,4 +52,11 @@ use crate::scalar::Scalar;
 pub trait Field<const N: usize> {
     /// `f(y)`.
     fn eval<D: Scalar>(&self, y: &[D; N]) -> [D; N];
+
+    /// The unit of each component for a run from `y0`, as
+    /// [`OdeSystem::units`](crate::OdeSystem::units) (the same for a lane and for the
+    /// one-at-a-time run); all 1 by default.
+    fn units(&self, _y0: &[f64; N]) -> crate::RunUnits<N> {
+        crate::RunUnits::one()
+    }
 }

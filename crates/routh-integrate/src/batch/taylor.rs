@@ -21,15 +21,19 @@ use super::runs::{LaneMethod, Queue, Runs};
 use super::{Job, Lanes};
 use crate::taylor::coefficient::Coefficient;
 use crate::taylor::tape::Isa;
-use crate::taylor::{max_norm, taylor_order, Kernels, SeriesRule, Tape};
-use crate::{Clock, IntegrateError, Law, OdeSystem, Options, Stats, StepControl, Stepper};
+use crate::taylor::{taylor_order, Kernels, SeriesRule, Tape};
+use crate::{Clock, IntegrateError, Law, OdeSystem, Options, Scales, Stats, StepControl, Stepper};
 
-/// The Taylor method in lanes: the tape with the coefficients of every lane and each lane's
-/// order; the lanes' states and step control are `Runs`'.
-struct TaylorLanes<const N: usize, const L: usize, K> {
+/// The Taylor method in lanes: the system (for the units of each run), the tape with the
+/// coefficients of every lane and each lane's order; the lanes' states and step control are
+/// `Runs`'.
+struct TaylorLanes<'s, S: ?Sized, const N: usize, const L: usize, K> {
+    sys: &'s S,
     tape: Tape<N, Lanes<L>, K>,
     opts: Options,
     rule: SeriesRule,
+    /// The scales of the components of each lane's run ([`Scales`]).
+    scales: [Scales<N>; L],
     /// The order of each lane's step under way, then of its last accepted step (0: free).
     order: [usize; L],
 }
@@ -86,20 +90,25 @@ pub fn integrate_in_on<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, co
         method: "taylor",
         reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
     })?;
-    let mut method = TaylorLanes::<N, L, S::Kernels> {
+    let mut method = TaylorLanes::<S, N, L, S::Kernels> {
+        sys,
         tape: tape.with_coefficients(),
         opts: *opts,
         rule: SeriesRule::new(opts.rtol(), opts.atol(), max_order),
+        scales: [Scales::one(); L],
         order: [0; L],
     };
     Runs::integrate(isa, &mut method, queue);
     Ok(())
 }
 
-impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLanes<N, L, K> {
-    /// As [`Taylor::new`](crate::Taylor::new): the lane's tape as new.
+impl<S: OdeSystem<N> + ?Sized, const N: usize, const L: usize, K: Kernels> LaneMethod<N, L>
+    for TaylorLanes<'_, S, N, L, K>
+{
+    /// As [`Taylor::new`](crate::Taylor::new): the lane's tape as new, the scales of its run.
     fn start(&mut self, l: usize, job: &Job<N>) -> Result<StepControl, (IntegrateError, Stats)> {
         self.tape.clear_lane(l);
+        self.scales[l] = Scales::of_units(&self.sys.units(&job.y0));
         Ok(StepControl::new(
             Law::Series,
             job.t0,
@@ -116,7 +125,7 @@ impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLane
         if let Some(control) = &runs.control[l] {
             control.budget()?;
         }
-        self.order[l] = self.rule.order(max_norm(lane_of(&runs.y, l).into_iter()));
+        self.order[l] = (self.rule).order(self.scales[l].max_norm(lane_of(&runs.y, l).into_iter()));
         Ok(())
     }
 
@@ -156,9 +165,11 @@ impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLane
         // The norms of the series' orders 0, p - 1 and p, of all lanes at once when the busy
         // lanes share their order (`max_norm` lane by lane: the same maxima in the same order).
         let same = (0..L).all(|l| runs.control[l].is_none() || order[l] == top);
+        let scales: [Lanes<L>; N] =
+            std::array::from_fn(|i| Lanes(std::array::from_fn(|l| self.scales[l].of(i))));
         let norms = |k: usize| {
             (0..N).fold(Lanes::splat(0.0), |m, i| {
-                m.max(self.tape.state_coefficient(i, k).abs())
+                m.max(self.tape.state_coefficient(i, k).abs() * scales[i])
             })
         };
         // The step sizes of the series: of all lanes side by side in one loop without a
@@ -168,14 +179,18 @@ impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLane
         if same {
             let [n0, n1, n2] = [norms(0), norms(top - 1), norms(top)];
             for (l, h) in series.iter_mut().enumerate() {
-                *h = self.rule.step(top, n0.0[l], n1.0[l], n2.0[l]);
+                *h = self
+                    .rule
+                    .step(top, n0.0[l], n1.0[l], n2.0[l], &self.scales[l]);
             }
         } else {
             for l in (0..L).filter(|&l| runs.control[l].is_some()) {
                 let p = order[l];
-                let [n0, n1, n2] = [0, p - 1, p]
-                    .map(|k| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k).0[l])));
-                series[l] = self.rule.step(p, n0, n1, n2);
+                let [n0, n1, n2] = [0, p - 1, p].map(|k| {
+                    let c = (0..N).map(|i| self.tape.state_coefficient(i, k).0[l]);
+                    self.scales[l].max_norm(c)
+                });
+                series[l] = self.rule.step(p, n0, n1, n2, &self.scales[l]);
             }
         }
         let mut h = [0.0; L];
@@ -226,7 +241,7 @@ impl<const N: usize, const L: usize, K: Kernels> LaneMethod<N, L> for TaylorLane
     }
 }
 
-impl<const N: usize, const L: usize, K: Kernels> TaylorLanes<N, L, K> {
+impl<S: ?Sized, const N: usize, const L: usize, K: Kernels> TaylorLanes<'_, S, N, L, K> {
     /// The increments `sum_{k=1..p} y^[k] h^k` of all lanes at once, each by Horner's rule
     /// from its own order `p = order[l]` down (the sums of
     /// [`Taylor`](crate::Taylor), lane by lane).

@@ -48,7 +48,7 @@ pub use tape::{Tape, Var};
 
 use super::compensated::compensated_add;
 use super::control::{Clock, Law, StepControl};
-use super::{check_start, IntegrateError, OdeSystem, Options, Stepper};
+use super::{check_start, IntegrateError, OdeSystem, Options, Scales, Stepper};
 
 /// The tolerance of a step from a state of size `size = ||y||_inf`: `(eps, scale)` with
 /// `eps = atol`, `scale = 1` (absolute control) when `rtol size <= atol`, otherwise
@@ -156,15 +156,31 @@ impl SeriesRule {
     /// The step (unsigned, [`taylor_step`]) of a series of order `p` from a state of size
     /// `size`, whose last two coefficients have the norms `norm_p_minus_1` and `norm_p`.
     #[inline(always)]
-    pub(crate) fn step(&self, p: usize, size: f64, norm_p_minus_1: f64, norm_p: f64) -> f64 {
+    ///
+    /// The norms are of the series in the units of `scales` (their components' units), and the
+    /// step is computed in its unit of time `T`: the coefficient of order `k` times `T^k`, the
+    /// step from it times `T`, both exact (`T` a power of two), so that a motion written in
+    /// other units gets the same steps to the bit.
+    pub(crate) fn step<const N: usize>(
+        &self,
+        p: usize,
+        size: f64,
+        norm_p_minus_1: f64,
+        norm_p: f64,
+        scales: &Scales<N>,
+    ) -> f64 {
         let (eps, scale) = step_tolerance(self.rtol, self.atol, size);
-        taylor_step(eps, p, scale, norm_p_minus_1, norm_p)
+        let order = p as i32;
+        let in_t = |norm: f64, k: i32| scales.in_time_unit(norm, k);
+        let h = taylor_step(
+            eps,
+            p,
+            scale,
+            in_t(norm_p_minus_1, order - 1),
+            in_t(norm_p, order),
+        );
+        scales.in_time_unit(h, 1)
     }
-}
-
-/// `||v||_inf`.
-pub(crate) fn max_norm(v: impl Iterator<Item = f64>) -> f64 {
-    v.fold(0.0, |m, x| m.max(x.abs()))
 }
 
 /// How the order and step are chosen.
@@ -188,6 +204,9 @@ pub struct Taylor<const N: usize, K = Interpreted> {
     p_last: usize,
     control: Control,
     compensated: bool,
+    /// The scales of the components ([`OdeSystem::units`] at `y0`), in which the state and
+    /// the series are sized.
+    scales: Scales<N>,
 }
 
 impl<const N: usize, K: Kernels> Taylor<N, K> {
@@ -257,6 +276,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
             p_last: 0,
             control,
             compensated: opts.compensated(),
+            scales: Scales::of_units(&sys.units(&y0)),
         })
     }
 
@@ -267,15 +287,18 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
 
     /// The step size (unsigned, [`taylor_step`]) for the series just expanded to order `p`.
     fn step_size(&self, p: usize, rule: &SeriesRule) -> f64 {
-        let norm = |k: usize| max_norm((0..N).map(|i| self.tape.state_coefficient(i, k)));
-        rule.step(p, norm(0), norm(p - 1), norm(p))
+        let norm = |k: usize| {
+            self.scales
+                .max_norm((0..N).map(|i| self.tape.state_coefficient(i, k)))
+        };
+        rule.step(p, norm(0), norm(p - 1), norm(p), &self.scales)
     }
 
     /// The order for the current state.
     fn order(&self) -> usize {
         match self.control {
             Control::Fixed { order, .. } => order,
-            Control::Adaptive(rule) => rule.order(max_norm(self.y.iter().copied())),
+            Control::Adaptive(rule) => rule.order(self.scales.max_norm(self.y.iter().copied())),
         }
     }
 
@@ -392,7 +415,7 @@ mod tests {
             );
             for p in [order, order + 1, (order - 1).max(2)] {
                 let want = taylor_step(eps, p, scale, norms[0], norms[1]);
-                let got = rule.step(p, size, norms[0], norms[1]);
+                let got = rule.step(p, size, norms[0], norms[1], &Scales::<1>::one());
                 assert_eq!(
                     got.to_bits(),
                     want.to_bits(),
