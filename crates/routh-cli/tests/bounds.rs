@@ -261,7 +261,10 @@ fn one_output_stream_per_destination() {
     let target = dir.join("x.csv");
     let target_arg = target.to_str().unwrap();
     for (command_args, summary) in [
-        (vec!["simulate", "--t-end", "1", "--samples", "3"], "routh simulate: "),
+        (
+            vec!["simulate", "--t-end", "1", "--samples", "3"],
+            "routh simulate: ",
+        ),
         (vec!["exact", "--t", "1", "--samples", "3"], "case: "),
     ] {
         for json in [false, true] {

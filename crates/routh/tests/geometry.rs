@@ -390,7 +390,12 @@ mod audit_claims {
         let wrong = |x: &[f64; 6]| vec![0.5 / p.alpha_beta(&[x[0], x[1], x[2]]).1];
         assert_fails(
             "+1/(2 beta)",
-            field_decomposition(&p, &wrong, &[energy], &sample().points_jellett_zero(&p.body)),
+            field_decomposition(
+                &p,
+                &wrong,
+                &[energy],
+                &sample().points_jellett_zero(&p.body),
+            ),
         );
     }
 
@@ -684,7 +689,8 @@ mod eq_cf {
     /// Eight gammas of the audit's sampler (away from the singular sets of the printed formulas,
     /// which the field does not have, so that the controls with (p-br) can use the same points).
     fn gammas(b: &Body, seed: u64) -> Vec<[f64; 3]> {
-        Sample::new(seed, 8).unwrap()
+        Sample::new(seed, 8)
+            .unwrap()
             .points(b)
             .iter()
             .map(|x| [x[0], x[1], x[2]])
@@ -914,7 +920,9 @@ mod eq_cf {
     #[test]
     fn the_audit_decides_eq_cf_within_the_ansatz() {
         for seed in [1, 2] {
-            let v = find("eq-cf").unwrap().verdict(&Sample::new(seed, 3).unwrap());
+            let v = find("eq-cf")
+                .unwrap()
+                .verdict(&Sample::new(seed, 3).unwrap());
             assert_eq!(v.status, Status::OkWithinAnsatz, "{}", v.note);
             assert!(v.residual.unwrap() > 1e-2, "{:?}", v.residual);
             assert!(v.note.contains("decided within the ansatz"));
@@ -1026,7 +1034,8 @@ mod flows {
     #[test]
     fn quadrature_comparison_can_fail() {
         let b = free_body();
-        let x0 = Sample::new(3, 20).unwrap()
+        let x0 = Sample::new(3, 20)
+            .unwrap()
             .points(&b)
             .into_iter()
             .find(|x| Flow::new(Condition::Cond2.bracket(b, 0.8), Field::X1, x).is_ok())
@@ -1146,8 +1155,7 @@ mod schouten {
     use routh::scalar::{lift, Real};
 
     fn points() -> Vec<[f64; 6]> {
-        Sample::new(11, 10).unwrap()
-        .points(&body())
+        Sample::new(11, 10).unwrap().points(&body())
     }
 
     #[test]

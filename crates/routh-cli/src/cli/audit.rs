@@ -2,10 +2,10 @@
 //! points and print the verdicts (issue 4). Exits 0 whenever the audit ran, whatever the
 //! verdicts.
 
+use super::ReportStream;
 use clap::Args as ClapArgs;
 use routh::audit::claims::{audit, Sample};
 use routh::audit::report::{markdown, table};
-use super::ReportStream;
 use routh::output::write_atomic;
 use routh::AppError;
 use std::path::PathBuf;

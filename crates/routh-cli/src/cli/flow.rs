@@ -2,9 +2,7 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{
-    integrals_text, state_text, tilt_text, write_samples, Args, Sample, Tilt,
-};
+use super::exact::{integrals_text, state_text, tilt_text, write_samples, Args, Sample, Tilt};
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};

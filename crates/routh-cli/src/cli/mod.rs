@@ -125,11 +125,7 @@ impl ReportStream {
         json: bool,
         text: impl FnOnce(&T) -> String,
     ) -> AppResult<()> {
-        let report = if json {
-            self::json(value)
-        } else {
-            text(value)
-        };
+        let report = if json { self::json(value) } else { text(value) };
         if self.on_standard_error {
             eprint!("{report}");
             Ok(())

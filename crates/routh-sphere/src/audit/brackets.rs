@@ -496,9 +496,9 @@ fn eq_cf_outcome(s: &Sample) -> Outcome {
         Sample::new(s.seed(), EQ_CF_GAMMAS)
             .expect("EQ_CF_GAMMAS is within MAX_POINTS (asserted at build time)")
             .points(b)
-        .iter()
-        .map(|x| [x[0], x[1], x[2]])
-        .collect()
+            .iter()
+            .map(|x| [x[0], x[1], x[2]])
+            .collect()
     };
     let momenta = random_momenta(s.seed());
     let mut margin = f64::INFINITY;
