@@ -34,7 +34,8 @@ pub struct Args {
     /// Number of equally spaced samples on [0, t] written as CSV (to `--out`, else stdout).
     #[arg(long)]
     pub samples: Option<usize>,
-    /// CSV file for the samples (written atomically).
+    /// CSV file for the samples (written atomically; `-` for standard output, where the
+    /// summary then goes to standard error).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Print the summary as JSON (with `--samples` and no `--out`, the samples inside it).

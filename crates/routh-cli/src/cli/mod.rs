@@ -3,7 +3,8 @@
 //! JSON, CSV rows) through one writer of standard output, [`write_out`] (the macros `out!` and
 //! `outln!`, used as `print!` and `println!`), whose errors end the command like any other:
 //! a reader that closed the pipe early (`routh exact | head -1`) ends it quietly with exit
-//! code 0, another write error (a full disk) with exit code 2.
+//! code 0, another write error (a full disk) with exit code 2. A command's report goes to
+//! standard error instead when one of its files goes to standard output ([`ReportStream`]).
 
 /// `print!` through [`write_out`]: returns its error.
 macro_rules! out {
