@@ -125,7 +125,7 @@ cmp -s "$DIR/cut.csv" "$DIR/table.csv" || { echo "WRONG: the resumed table diffe
 # Sizes: bounded before any work, refused with the key, the value and the rule.
 for args in "audit --points 1000000000000" "audit --points 100001" "audit --points 0" \
             "sweep --case cases/sweep.toml --threads 10000" "diagram --grid 5001" "diagram --tilts 5001" \
-            "diagram --loop-points 5001" "plot --samples 1000001" "animate --samples 1000001"; do
+            "diagram --loop-points 5001" "diagram --grid 388" "plot --samples 1000001" "animate --samples 1000001"; do
   # shellcheck disable=SC2086
   try sizes refused $args
 done
@@ -157,7 +157,7 @@ signal_try sweep --case "$DIR/long.toml" --threads 1 --out "$DIR/long.csv"
 signal_try simulate --case "$DIR/long.toml" --samples 100 --out "$DIR/long.csv"
 signal_try exact --case "$DIR/long.toml" --t 1e8 --samples 10000000 --out "$DIR/long.csv"
 signal_try audit --points 100000
-signal_try diagram --grid 5000 --tilts 5000 --out "$DIR/figures"
+signal_try diagram --grid 387 --tilts 5000 --loop-points 5000 --out "$DIR/figures"
 # CSV files for plot and animate: empty, header only, one row, NaN, inf, ragged, text, no t,
 # decreasing t, repeated column.
 "$BIN" simulate --t-end 1 --samples 4 --full --out "$DIR/good.csv" >/dev/null

@@ -43,6 +43,32 @@ fn audit_points_are_bounded_before_the_points_are_drawn() {
 }
 
 #[test]
+fn diagram_work_is_bounded_before_any_file() {
+    // Before: `--grid 5000 --tilts 5000` was accepted and ran for hours (16.7 million cells).
+    let dir = scratch("diagram-grid");
+    let figures = dir.join("figures");
+    for (grid, cells) in [("388", "388 x 258 = 100104 cells"), ("5000", "5000 x 3333")] {
+        assert_exit_2(
+            &[
+                "diagram",
+                "--grid",
+                grid,
+                "--tilts",
+                "5000",
+                "--out",
+                figures.to_str().unwrap(),
+            ],
+            &format!("grid = {grid} ({cells}"),
+        );
+    }
+    assert_exit_2(
+        &["diagram", "--grid", "388"],
+        "at most 100000 cells: grid <= 387",
+    );
+    assert!(!figures.exists(), "refused before any file");
+}
+
+#[test]
 fn sweep_threads_are_bounded_by_the_cores() {
     // Before: accepted, and a minute to obey SIGTERM.
     let cores = std::thread::available_parallelism().unwrap().get();
@@ -228,6 +254,50 @@ fn one_output_stream_per_destination() {
         serde_json::from_str::<serde_json::Value>(&err).is_ok(),
         "{err}"
     );
+    // simulate and exact: the CSV of `--out -` on standard output, the summary or JSON on
+    // standard error; so too when `--out` names the file standard output is redirected to
+    // (before, simulate and exact printed the report into it, over the CSV's old inode).
+    let dir = scratch("streams");
+    let target = dir.join("x.csv");
+    let target_arg = target.to_str().unwrap();
+    for (command_args, summary) in [
+        (
+            vec!["simulate", "--t-end", "1", "--samples", "3"],
+            "routh simulate: ",
+        ),
+        (vec!["exact", "--t", "1", "--samples", "3"], "case: "),
+    ] {
+        for json in [false, true] {
+            let mut args = command_args.clone();
+            args.extend(["--out", "-"]);
+            if json {
+                args.push("--json");
+            }
+            let out = routh(&args);
+            let err = succeeded(&out);
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            assert!(stdout.starts_with("t,"), "{args:?}: CSV alone: {stdout}");
+            assert_eq!(stdout.lines().count(), 4, "{args:?}: {stdout}");
+            match json {
+                true => assert!(
+                    serde_json::from_str::<serde_json::Value>(&err).is_ok(),
+                    "{args:?}: {err}"
+                ),
+                false => assert!(err.starts_with(summary), "{args:?}: {err}"),
+            }
+            let mut args = command_args.clone();
+            args.extend(["--out", target_arg, "--json"]);
+            let redirected = std::fs::File::create(&target).unwrap();
+            let out = command().args(&args).stdout(redirected).output().unwrap();
+            let err = succeeded(&out);
+            assert!(
+                serde_json::from_str::<serde_json::Value>(&err).is_ok(),
+                "{args:?}: the JSON on stderr: {err}"
+            );
+            let csv = std::fs::read_to_string(&target).unwrap();
+            assert!(csv.starts_with("t,") && csv.lines().count() == 4, "{csv}");
+        }
+    }
     // `-` as the directory of figures is refused, not a directory named `-`.
     for args in [
         vec!["plot", "--out", "-", "--samples", "10", "--t-end", "1"],
@@ -273,7 +343,8 @@ fn sigterm_latency(dir: &Path, args: &[&str], complete: impl Fn(&Path)) -> Durat
     latency
 }
 
-/// SIGTERM is obeyed within a second by every long-running command. On an idle machine each
+/// SIGTERM is obeyed within a second by every long-running command (the diagram: the largest
+/// accepted, about a minute of work). On an idle machine each
 /// ends within about 0.1 s of the signal (a sweep polls its stop flag every 50 ms, then writes
 /// the rows done; the others end at once from the signal handler); the bound checked, 3 s,
 /// leaves room for a machine loaded by parallel builds (5 on 2 cores when this was written).
@@ -323,8 +394,10 @@ fn sigterm_is_obeyed_within_a_second_by_every_long_command() {
         vec![
             "diagram",
             "--grid",
-            "5000",
+            "387",
             "--tilts",
+            "5000",
+            "--loop-points",
             "5000",
             "--out",
             figures.to_str().unwrap(),

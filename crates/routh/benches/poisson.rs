@@ -9,7 +9,7 @@ use routh::poisson::second::{SecondAlphas, SecondBracket};
 use std::hint::black_box;
 
 fn jacobi(c: &mut Criterion) {
-    let x = Sample { seed: 1, count: 1 }.points(&body())[0];
+    let x = Sample::new(1, 1).unwrap().points(&body())[0];
     let first = generic_first(body());
     c.bench_function("jacobi [P, P] of (p-br) at a point", |b| {
         b.iter(|| jacobi_defect(black_box(&first), black_box(&x)))
@@ -24,7 +24,7 @@ fn jacobi(c: &mut Criterion) {
 }
 
 fn full_audit(c: &mut Criterion) {
-    let sample = Sample { seed: 1, count: 20 };
+    let sample = Sample::new(1, 20).unwrap();
     c.bench_function("full audit, 20 points per claim", |b| {
         b.iter(|| audit(black_box(&sample)))
     });

@@ -33,16 +33,19 @@ mod audit_claims {
     use routh::scalar::{dot, split, Real};
     use routh::Body;
 
-    const SAMPLE: Sample = Sample { seed: 7, count: 5 };
+    /// The fixed sample of these tests.
+    fn sample() -> Sample {
+        Sample::new(7, 5).unwrap()
+    }
 
     fn points() -> Vec<[f64; 6]> {
-        SAMPLE.points(&body())
+        sample().points(&body())
     }
 
     /// Run the registry's check of `id` and compare the verdict with `expected`.
     fn assert_verdict(id: &str, expected: Status) {
         let claim = find(id).unwrap_or_else(|| panic!("no claim {id}"));
-        let v = claim.verdict(&SAMPLE);
+        let v = claim.verdict(&sample());
         assert_eq!(
             v.status, expected,
             "{id}: residual {:?}, note {}",
@@ -387,7 +390,12 @@ mod audit_claims {
         let wrong = |x: &[f64; 6]| vec![0.5 / p.alpha_beta(&[x[0], x[1], x[2]]).1];
         assert_fails(
             "+1/(2 beta)",
-            field_decomposition(&p, &wrong, &[energy], &SAMPLE.points_jellett_zero(&p.body)),
+            field_decomposition(
+                &p,
+                &wrong,
+                &[energy],
+                &sample().points_jellett_zero(&p.body),
+            ),
         );
     }
 
@@ -503,7 +511,7 @@ mod audit_claims {
         }
         for id in ids.iter().filter(|id| id.ends_with(".corrected")) {
             assert_eq!(
-                find(id).unwrap().verdict(&SAMPLE).status,
+                find(id).unwrap().verdict(&sample()).status,
                 Status::Ok,
                 "{id}"
             );
@@ -531,10 +539,13 @@ mod audit_constructions {
     use routh::poisson::second_reduction::SecondMap;
     use routh::scalar::Real;
 
-    const SAMPLE: Sample = Sample { seed: 11, count: 6 };
+    /// The fixed sample of these tests.
+    fn sample() -> Sample {
+        Sample::new(11, 6).unwrap()
+    }
 
     fn points() -> Vec<[f64; 6]> {
-        SAMPLE.points(&body())
+        sample().points(&body())
     }
 
     fn assert_fails(what: &str, residual: f64) {
@@ -548,7 +559,7 @@ mod audit_constructions {
     /// quadratures leave 1e-16 to 2e-14).
     fn assert_holds_to_round_off(id: &str) {
         for seed in [1, 2, 3] {
-            let v = find(id).unwrap().verdict(&Sample { seed, count: 10 });
+            let v = find(id).unwrap().verdict(&Sample::new(seed, 10).unwrap());
             assert_eq!(v.status, Status::Ok, "{id}: {:?} {}", v.residual, v.note);
             assert!(v.residual.unwrap() < 1e-13, "{id}: {:?}", v.residual);
         }
@@ -678,7 +689,8 @@ mod eq_cf {
     /// Eight gammas of the audit's sampler (away from the singular sets of the printed formulas,
     /// which the field does not have, so that the controls with (p-br) can use the same points).
     fn gammas(b: &Body, seed: u64) -> Vec<[f64; 3]> {
-        Sample { seed, count: 8 }
+        Sample::new(seed, 8)
+            .unwrap()
             .points(b)
             .iter()
             .map(|x| [x[0], x[1], x[2]])
@@ -908,7 +920,9 @@ mod eq_cf {
     #[test]
     fn the_audit_decides_eq_cf_within_the_ansatz() {
         for seed in [1, 2] {
-            let v = find("eq-cf").unwrap().verdict(&Sample { seed, count: 3 });
+            let v = find("eq-cf")
+                .unwrap()
+                .verdict(&Sample::new(seed, 3).unwrap());
             assert_eq!(v.status, Status::OkWithinAnsatz, "{}", v.note);
             assert!(v.residual.unwrap() > 1e-2, "{:?}", v.residual);
             assert!(v.note.contains("decided within the ansatz"));
@@ -971,7 +985,7 @@ mod flows {
         for (b, condition, field) in cases() {
             let bracket = condition.bracket(b, 0.8);
             let mut solved = 0;
-            for x0 in (Sample { seed: 3, count: 20 }).points(&b) {
+            for x0 in Sample::new(3, 20).unwrap().points(&b) {
                 let flow = match Flow::new(bracket, field, &x0) {
                     Ok(flow) => flow,
                     Err(RouthError::Singular { .. }) => continue,
@@ -1020,7 +1034,8 @@ mod flows {
     #[test]
     fn quadrature_comparison_can_fail() {
         let b = free_body();
-        let x0 = (Sample { seed: 3, count: 20 })
+        let x0 = Sample::new(3, 20)
+            .unwrap()
             .points(&b)
             .into_iter()
             .find(|x| Flow::new(Condition::Cond2.bracket(b, 0.8), Field::X1, x).is_ok())
@@ -1082,7 +1097,7 @@ mod flows {
         let rule = routh::quadrature::gauss::GaussLegendre::new(20);
         for b in [free_body(), body()] {
             let pf = Condition::Conformal.bracket(b, 0.0);
-            for x0 in (Sample { seed: 9, count: 6 }).points_jellett_zero(&b) {
+            for x0 in Sample::new(9, 6).unwrap().points_jellett_zero(&b) {
                 let Ok(flow) = Flow::new(pf, Field::X1, &x0) else {
                     continue;
                 };
@@ -1107,7 +1122,7 @@ mod flows {
         let pf = FirstBracket::conformal(*b);
         let h1 = |y: &[routh::differential::Dual6; 6]| energy(b, y);
         let mut worst = 0.0f64;
-        for x0 in (Sample { seed: 5, count: 4 }).points_jellett_zero(b) {
+        for x0 in Sample::new(5, 4).unwrap().points_jellett_zero(b) {
             assert!(jellett(b, &x0).abs() < 1e-14);
             let augmented = |z: &[f64; 7]| {
                 let x = [z[0], z[1], z[2], z[3], z[4], z[5]];
@@ -1140,11 +1155,7 @@ mod schouten {
     use routh::scalar::{lift, Real};
 
     fn points() -> Vec<[f64; 6]> {
-        Sample {
-            seed: 11,
-            count: 10,
-        }
-        .points(&body())
+        Sample::new(11, 10).unwrap().points(&body())
     }
 
     #[test]

@@ -2,10 +2,11 @@
 //! points and print the verdicts (issue 4). Exits 0 whenever the audit ran, whatever the
 //! verdicts.
 
+use super::ReportStream;
 use clap::Args as ClapArgs;
 use routh::audit::claims::{audit, Sample};
 use routh::audit::report::{markdown, table};
-use routh::output::{is_standard_output, write_atomic};
+use routh::output::write_atomic;
 use routh::AppError;
 use std::path::PathBuf;
 
@@ -31,9 +32,7 @@ pub struct Args {
 /// Run the audit and print or write its report.
 pub fn run(args: Args) -> routh::AppResult<()> {
     let sample = Sample::new(args.seed, args.points)?;
-    // Asked before the markdown is written: a file that standard output is redirected to is
-    // replaced by the new one.
-    let markdown_on_stdout = args.markdown.as_deref().is_some_and(is_standard_output);
+    let stream = ReportStream::beside([args.markdown.as_deref()]);
     let verdicts = audit(&sample);
     if let Some(path) = &args.markdown {
         let text = markdown(&verdicts, &sample);
@@ -41,10 +40,5 @@ pub fn run(args: Args) -> routh::AppResult<()> {
             w.write_all(text.as_bytes()).map_err(AppError::io(path))
         })?;
     }
-    let report = if args.json {
-        super::json(&verdicts)
-    } else {
-        table(&verdicts)
-    };
-    super::report(&report, markdown_on_stdout)
+    stream.print(&verdicts, args.json, |v| table(v))
 }

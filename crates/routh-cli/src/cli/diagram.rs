@@ -33,7 +33,8 @@ pub struct Args {
     /// Tilts at which the steady precessions are computed (2 to 5000).
     #[arg(long, default_value_t = Resolution::default().tilts)]
     pub tilts: usize,
-    /// Columns of the grid of torus counts (2 to 5000; rows: two thirds as many).
+    /// Columns of the grid of torus counts (2 to 387; rows: two thirds as many): the grid's
+    /// cells are the work of the diagram, at most 100000 (about 40 s; MAX_GRID_CELLS).
     #[arg(long, default_value_t = Resolution::default().grid)]
     pub grid: usize,
     /// Points of the monodromy loop (8 to 5000).

@@ -2,6 +2,7 @@
 //! points, nutation period, precession advance, and the state at a time or at samples. Its
 //! options, checks, CSV samples and text lines also serve `routh exact --flow` ([`super::flow`]).
 
+use super::ReportStream;
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::integrals::{energy, jellett, routh_integral};
@@ -33,7 +34,8 @@ pub struct Args {
     /// Number of equally spaced samples on [0, t] written as CSV (to `--out`, else stdout).
     #[arg(long)]
     pub samples: Option<usize>,
-    /// CSV file for the samples (written atomically).
+    /// CSV file for the samples (written atomically; `-` for standard output, where the
+    /// summary then goes to standard error).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Print the summary as JSON (with `--samples` and no `--out`, the samples inside it).
@@ -376,27 +378,6 @@ pub(super) fn state_text(text: &mut String, t: std::fmt::Arguments, s: &Sample) 
     );
 }
 
-/// Print the summary of `routh exact` (or `--flow`): as JSON with `--json`, else as `text`;
-/// on standard error when the samples go to standard output (`--out -`), as `routh simulate`
-/// does, so that standard output holds the CSV alone.
-pub(super) fn print_summary<T: Serialize>(
-    args: &Args,
-    summary: &T,
-    text: impl FnOnce(&T) -> String,
-) -> Result<()> {
-    let report = if args.json {
-        super::json(summary)
-    } else {
-        text(summary)
-    };
-    if args.out.as_deref() == Some(Path::new("-")) {
-        eprint!("{report}");
-        Ok(())
-    } else {
-        out!("{report}")
-    }
-}
-
 impl Args {
     /// The time of the reported state (`--t`, else the case's t_end), checked with
     /// `--samples` (bounded before any work, by the bound of `routh simulate`).
@@ -412,6 +393,13 @@ impl Args {
             )?;
         }
         Ok(t)
+    }
+
+    /// The stream of the summary of `routh exact` (or `--flow`): standard error when the
+    /// samples go to standard output by `--out` ([`ReportStream`]), as in `routh simulate`, so
+    /// that standard output holds the CSV alone. Asked before the samples are written.
+    pub(super) fn report_stream(&self) -> ReportStream {
+        ReportStream::beside([self.out.as_deref()])
     }
 
     /// The number of CSV samples: `--samples`, else [`DEFAULT_CSV_SAMPLES`] with `--out`.
@@ -437,6 +425,7 @@ pub fn run(args: Args) -> Result<()> {
         );
     }
     let mut s = summary(&case, &body, &exact, t);
+    let stream = args.report_stream();
     let state_at = |ti: f64| exact.state_at(ti);
     match (args.csv_samples(), &args.out) {
         (Some(n), Some(path)) => write_samples(Some(path), &body, t, n, state_at)?,
@@ -450,7 +439,7 @@ pub fn run(args: Args) -> Result<()> {
         (Some(n), None) => return write_samples(None, &body, t, n, state_at),
         (None, _) => {}
     }
-    print_summary(&args, &s, summary_text)
+    stream.print(&s, args.json, summary_text)
 }
 
 /// `n` equally spaced times on [0, t].

@@ -2,9 +2,7 @@
 //! (p-br) at (cond) or (cond2) by the theta quadrature of section 3.2 ([`routh::poisson::flows`]),
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
-use super::exact::{
-    integrals_text, print_summary, state_text, tilt_text, write_samples, Args, Sample, Tilt,
-};
+use super::exact::{integrals_text, state_text, tilt_text, write_samples, Args, Sample, Tilt};
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
@@ -45,6 +43,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
     let x0 = case.initial.to_array();
     let flow = Flow::new(bracket, field, &x0)?;
     let state_at = |ti: f64| State::from_array(&flow.state_at(ti));
+    let stream = args.report_stream();
     if let Some(n) = args.csv_samples() {
         write_samples(args.out.as_deref(), &body, t, n, state_at)?;
         if args.out.is_none() {
@@ -75,7 +74,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         state: Sample::new(&body, t, &state_at(t)),
         integrals: Value::of_state(&body, &case.initial),
     };
-    print_summary(args, &summary, summary_text)
+    stream.print(&summary, args.json, summary_text)
 }
 
 fn summary_text(s: &Summary) -> String {

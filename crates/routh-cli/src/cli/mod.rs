@@ -3,7 +3,8 @@
 //! JSON, CSV rows) through one writer of standard output, [`write_out`] (the macros `out!` and
 //! `outln!`, used as `print!` and `println!`), whose errors end the command like any other:
 //! a reader that closed the pipe early (`routh exact | head -1`) ends it quietly with exit
-//! code 0, another write error (a full disk) with exit code 2.
+//! code 0, another write error (a full disk) with exit code 2. A command's report goes to
+//! standard error instead when one of its files goes to standard output ([`ReportStream`]).
 
 /// `print!` through [`write_out`]: returns its error.
 macro_rules! out {
@@ -30,6 +31,7 @@ mod steady;
 mod sweep;
 
 use clap::{Parser, Subcommand};
+use routh::output::is_standard_output;
 use routh::{AppError, AppResult, FileError};
 use std::io::Write;
 use std::path::Path;
@@ -97,15 +99,40 @@ pub fn print_json<T: serde::Serialize>(value: &T) -> AppResult<()> {
     out!("{}", json(value))
 }
 
-/// Print a command's report (its text summary or JSON) on standard output, or on standard
-/// error when a file of the command already goes to standard output (`--out -`,
-/// `--markdown -`): one stream per destination.
-pub fn report(text: &str, file_on_stdout: bool) -> AppResult<()> {
-    if file_on_stdout {
-        eprint!("{text}");
-        Ok(())
-    } else {
-        out!("{text}")
+/// The stream of a command's report (its text summary or table, or its JSON): standard
+/// output, or standard error when one of the command's files goes to standard output (`-`, or
+/// a file that standard output is open on: `/dev/stdout`, the target of `> FILE`; see
+/// [`is_standard_output`]): one stream per destination. The one place where `simulate`,
+/// `exact` (and `--flow`) and `audit` decide it.
+pub struct ReportStream {
+    /// Whether the report goes to standard error.
+    on_standard_error: bool,
+}
+
+impl ReportStream {
+    /// The stream of the report of a command writing `files` (`None`: a file not asked for).
+    /// Asked before any file is written: a file that standard output is redirected to is
+    /// replaced by the new one, which standard output is not open on.
+    pub fn beside<'a>(files: impl IntoIterator<Item = Option<&'a Path>>) -> Self {
+        ReportStream {
+            on_standard_error: files.into_iter().flatten().any(is_standard_output),
+        }
+    }
+
+    /// Print the report of `value`: as JSON with `json`, else as `text(value)`.
+    pub fn print<T: serde::Serialize>(
+        &self,
+        value: &T,
+        json: bool,
+        text: impl FnOnce(&T) -> String,
+    ) -> AppResult<()> {
+        let report = if json { self::json(value) } else { text(value) };
+        if self.on_standard_error {
+            eprint!("{report}");
+            Ok(())
+        } else {
+            out!("{report}")
+        }
     }
 }
 

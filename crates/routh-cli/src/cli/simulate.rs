@@ -1,7 +1,7 @@
 //! `routh simulate`: integrate a case and report the integrals' drift; optionally write
 //! dense-output samples to CSV.
 
-use super::Readable;
+use super::{Readable, ReportStream};
 use routh::case::Case;
 use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
@@ -111,18 +111,11 @@ pub fn run_command(args: Args) -> Result<()> {
         (None, None) => 0,
     };
     let settings = settings(&case, &args, samples)?;
+    let stream = ReportStream::beside([out.as_deref()]);
     let summary = execute(&case, out.as_deref(), &settings, args.full)?;
-    let report = if args.json {
-        super::json(&summary)
-    } else {
-        summary_text(&case, &summary, out.as_deref())
-    };
-    if out.as_deref() == Some(Path::new("-")) {
-        eprint!("{report}");
-    } else {
-        out!("{report}")?;
-    }
-    Ok(())
+    stream.print(&summary, args.json, |s| {
+        summary_text(&case, s, out.as_deref())
+    })
 }
 
 /// Run the simulation (of the full motion when `full`), writing the CSV of its samples

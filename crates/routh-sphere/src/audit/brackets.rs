@@ -5,7 +5,7 @@
 use super::checks::{self, Function};
 use super::claim::{
     body, field_of, free_body, generic_first, generic_firsts, h4, of, Claim, Outcome, Potential,
-    Sample, CONSTANT_ALPHA, GENERIC_ALPHA, GENERIC_BETA,
+    Sample, CONSTANT_ALPHA, GENERIC_ALPHA, GENERIC_BETA, MAX_POINTS,
 };
 use crate::body::Body;
 use crate::differential::{jacobian, Dual6};
@@ -479,6 +479,9 @@ pub fn claims() -> Vec<Claim> {
 /// admits a ratio; eight spread over the sphere exclude a common one by orders).
 pub const EQ_CF_GAMMAS: usize = 8;
 
+// A count that [`Sample::new`] accepts, checked when the crate is built.
+const _: () = assert!(EQ_CF_GAMMAS >= 1 && EQ_CF_GAMMAS <= MAX_POINTS);
+
 /// The bodies of the (eq-cf) search: the audit's body and the default case's, both with
 /// gravity (mg-eq).
 pub fn eq_cf_bodies() -> [Body; 2] {
@@ -490,16 +493,14 @@ pub fn eq_cf_bodies() -> [Body; 2] {
 /// [`Decision::margin`], the note gives each decision and the rank gaps.
 fn eq_cf_outcome(s: &Sample) -> Outcome {
     let gammas_of = |b: &Body| -> Vec<[f64; 3]> {
-        Sample {
-            seed: s.seed,
-            count: EQ_CF_GAMMAS,
-        }
-        .points(b)
-        .iter()
-        .map(|x| [x[0], x[1], x[2]])
-        .collect()
+        Sample::new(s.seed(), EQ_CF_GAMMAS)
+            .expect("EQ_CF_GAMMAS is within MAX_POINTS (asserted at build time)")
+            .points(b)
+            .iter()
+            .map(|x| [x[0], x[1], x[2]])
+            .collect()
     };
-    let momenta = random_momenta(s.seed);
+    let momenta = random_momenta(s.seed());
     let mut margin = f64::INFINITY;
     let mut gap = 0.0f64;
     let mut found = Vec::new();

@@ -64,13 +64,11 @@ impl Status {
 pub const MAX_POINTS: usize = 100_000;
 
 /// The random points of an audit run: `count` points from the SplitMix64 stream of `seed`.
-/// [`Sample::new`] checks the count; the fields are public for the fixed samples of tests.
+/// Built only by [`Sample::new`], which checks the count: a sample holds a valid one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Sample {
-    /// The seed of the generator.
-    pub seed: u64,
-    /// The number of points per claim.
-    pub count: usize,
+    seed: u64,
+    count: usize,
 }
 
 impl Sample {
@@ -87,6 +85,16 @@ impl Sample {
                        100000 take hours)",
             })
         }
+    }
+
+    /// The seed of the generator.
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// The number of points per claim.
+    pub fn count(&self) -> usize {
+        self.count
     }
 
     /// Points on `|gamma| = 1` away from the singular sets (see the module documentation).
@@ -327,7 +335,9 @@ mod tests {
 
     #[test]
     fn a_sample_is_bounded_before_any_point_is_drawn() {
-        assert_eq!(Sample::new(3, 7).unwrap(), Sample { seed: 3, count: 7 });
+        let sample = Sample::new(3, 7).unwrap();
+        assert_eq!((sample.seed(), sample.count()), (3, 7));
+        assert_eq!(sample.points(&body()).len(), 7);
         assert!(Sample::new(3, MAX_POINTS).is_ok());
         for count in [0, MAX_POINTS + 1, 1_000_000_000_000] {
             let e = Sample::new(3, count).unwrap_err().to_string();

@@ -63,9 +63,9 @@ pub fn markdown(verdicts: &[Verdict], sample: &Sample) -> String {
          is the largest relative residual over the points; status OK iff it is at most \
          {THRESHOLD:e} (round-off leaves 1e-16 to 1e-13, a wrong formula 1e-3 or more). \
          Derivatives are exact (forward-mode automatic differentiation of the same code).\n",
-        sample.count,
-        sample.seed,
-        sample.count,
+        sample.count(),
+        sample.seed(),
+        sample.count(),
         b.m(),
         b.radius(),
         b.a(),

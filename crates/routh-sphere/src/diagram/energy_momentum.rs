@@ -36,9 +36,25 @@ impl Default for Resolution {
     }
 }
 
-/// The largest tilts and grid columns accepted (the work grows like their product with the
-/// 4096 samples of Q' per count).
+/// The largest tilts, grid columns and loop points accepted, each alone (a bound of memory:
+/// the work of the grid is bounded by [`MAX_GRID_CELLS`]).
 pub const MAX_RESOLUTION: usize = 5000;
+
+/// The most cells of the grid of torus counts, `grid` columns times [`grid_rows`] rows,
+/// refused before any work beyond it. The grid is the work of a diagram: each cell is one
+/// [`torus_count`], which samples Q' at the same 4192 tilts whatever the body and the value
+/// ([`super::tori::CRITICAL_POINT_SAMPLES`] and the halvings toward the poles), so its time is
+/// proportional to the cells. Measured (release build, `docs/diagram.md`): 0.41 ms of CPU a
+/// cell, so 100,000 cells are about 40 s; the other parts are bounded by [`MAX_RESOLUTION`]
+/// alone and add to it, not multiply (5000 tilts 0.2 s, a loop of 5000 points 6 s). The
+/// largest request accepted, `--grid 387 --tilts 5000 --loop-points 5000`, takes about a
+/// minute; `--grid 5000` (16.7 million cells) would take about two hours.
+pub const MAX_GRID_CELLS: usize = 100_000;
+
+/// The rows (H1) of a grid of `columns` columns (K): two thirds as many, at least 2.
+pub fn grid_rows(columns: usize) -> usize {
+    (2 * columns / 3).max(2)
+}
 
 /// A rectangle of the plane (K, H1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -123,6 +139,30 @@ fn check_resolution(name: &'static str, value: usize, least: usize) -> Result<()
     }
 }
 
+/// `columns` of the grid within [`MAX_GRID_CELLS`], refused with the cells and the largest
+/// grid accepted otherwise.
+fn check_grid_cells(columns: usize) -> Result<()> {
+    let cells = columns.saturating_mul(grid_rows(columns));
+    if cells <= MAX_GRID_CELLS {
+        return Ok(());
+    }
+    let largest = (2..columns)
+        .rev()
+        .find(|&c| c * grid_rows(c) <= MAX_GRID_CELLS)
+        .unwrap_or(2);
+    Err(RouthError::Option {
+        name: "grid",
+        value: format!(
+            "{columns} ({columns} x {} = {cells} cells, each a count of tori; at most \
+             {MAX_GRID_CELLS} cells: grid <= {largest})",
+            grid_rows(columns)
+        ),
+        rule: "the grid's cells are the work of the diagram (about 0.4 ms each on one core, \
+               whatever the body): at most about 40 s of it, so that the diagram ends within \
+               about a minute (MAX_GRID_CELLS; tilts and loop points add little)",
+    })
+}
+
 /// The largest ratio of the spin of a vertical spin to Routh's threshold for which the
 /// diagram is computed. Far above the threshold gravity is a small part of the motion: the
 /// slow steady precessions (the slow branch of the critical curves) have omega_t of relative
@@ -199,6 +239,7 @@ impl Diagram {
         check_resolution("tilts", resolution.tilts, 2)?;
         check_resolution("grid", resolution.grid, 2)?;
         check_resolution("loop_points", resolution.loop_points, 8)?;
+        check_grid_cells(resolution.grid)?;
         let units = checked_plane(body, h3, "h3")?;
         let marked: Vec<Value> = marked.iter().map(|v| v.in_units(&units)).collect();
         let scaled = Self::in_units(
@@ -327,7 +368,7 @@ fn segment_distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// The torus counts at the centres of a grid of `columns` x `2 columns / 3` cells.
 fn torus_grid(body: &Body, h3: f64, window: &Window, columns: usize) -> Result<TorusGrid> {
-    let rows = (2 * columns / 3).max(2);
+    let rows = grid_rows(columns);
     let centres = |(lo, hi): (f64, f64), n: usize| -> Vec<f64> {
         (0..n)
             .map(|i| lo + (hi - lo) * (i as f64 + 0.5) / n as f64)
@@ -420,4 +461,39 @@ pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<Sle
             Ok(line.back(&units))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bound on the grid's work is checked before any work: the largest grid within
+    /// [`MAX_GRID_CELLS`] passes the check, the next is refused naming the option, its cells
+    /// and the largest grid accepted (exact integer arithmetic: no tolerance). Its time is
+    /// measured, not tested here (docs/diagram.md).
+    #[test]
+    fn the_grid_is_bounded_by_its_cells_before_any_work() {
+        let largest = (2..=MAX_RESOLUTION)
+            .take_while(|&c| c * grid_rows(c) <= MAX_GRID_CELLS)
+            .last()
+            .unwrap();
+        assert_eq!(largest, 387, "387 x 258 = 99846 cells");
+        assert!(check_grid_cells(largest).is_ok());
+        let e = check_grid_cells(largest + 1).unwrap_err().to_string();
+        assert!(
+            e.contains("grid = 388 (388 x 258 = 100104 cells")
+                && e.contains("at most 100000 cells: grid <= 387"),
+            "{e}"
+        );
+        // The diagram itself refuses it before computing anything (its checks come first),
+        // as it does the largest grid of MAX_RESOLUTION: hours of work before the bound.
+        for grid in [largest + 1, MAX_RESOLUTION] {
+            let resolution = Resolution {
+                grid,
+                ..Resolution::default()
+            };
+            let e = Diagram::new(&Body::default(), 1.0, &[], resolution).unwrap_err();
+            assert!(e.to_string().contains(&format!("grid = {grid} (")), "{e}");
+        }
+    }
 }
