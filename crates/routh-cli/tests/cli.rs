@@ -1132,7 +1132,8 @@ mod cli_sweep {
 
     /// Every column of the table before `--columns` (issue 34), written out here as the
     /// README listed them: `--columns all` gives exactly this table.
-    const ALL_COLUMNS: &str = "run,spin,tilt,t_end,rtol,atol,method,status,message,steps,rejected,rhs_evals,\
+    const ALL_COLUMNS: &str =
+        "run,spin,tilt,t_end,rtol,atol,method,status,message,steps,rejected,rhs_evals,\
         final_gamma1,final_gamma2,final_gamma3,final_M1,final_M2,final_M3,\
         H1_initial,H1_final,H1_drift,H2_initial,H2_final,H2_drift,H3_initial,H3_final,H3_drift,\
         H4_initial,H4_final,H4_drift,K_initial,K_final,K_drift,theta_min,theta_max,\
@@ -1144,7 +1145,11 @@ mod cli_sweep {
         let mut all = vec!["sweep", "--case", case.to_str().unwrap()];
         all.extend_from_slice(args);
         let out = routh(&all);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let text = String::from_utf8(out.stdout).unwrap();
         let mut lines = text.lines().map(str::to_string);
         let header = lines.next().unwrap();
@@ -1164,16 +1169,35 @@ mod cli_sweep {
         assert_eq!(all, ALL_COLUMNS);
         let names: Vec<&str> = ALL_COLUMNS.split(',').collect();
         let keep = |pred: &dyn Fn(&str) -> bool| -> String {
-            names.iter().copied().filter(|n| pred(n)).collect::<Vec<_>>().join(",")
+            names
+                .iter()
+                .copied()
+                .filter(|n| pred(n))
+                .collect::<Vec<_>>()
+                .join(",")
         };
         let always = |n: &str| names[..12].contains(&n);
-        let integral = |n: &str| ["_initial", "_final", "_drift"].iter().any(|e| n.ends_with(e)) && !n.starts_with("final_");
+        let integral = |n: &str| {
+            ["_initial", "_final", "_drift"]
+                .iter()
+                .any(|e| n.ends_with(e))
+                && !n.starts_with("final_")
+        };
         let (default, default_rows) = sweep_csv(&case, &[]);
-        assert_eq!(default, keep(&|n| always(n) || n.starts_with("final_") || integral(n)));
+        assert_eq!(
+            default,
+            keep(&|n| always(n) || n.starts_with("final_") || integral(n))
+        );
         let (quad, _) = sweep_csv(&case, &["--columns", "period_events,quadrature"]);
         assert_eq!(
             quad,
-            keep(&|n| always(n) || ["period_events", "period_quadrature", "precession_quadrature"].contains(&n))
+            keep(&|n| always(n)
+                || [
+                    "period_events",
+                    "period_quadrature",
+                    "precession_quadrature"
+                ]
+                .contains(&n))
         );
         // Each column of the default table has the values of the same column of `all`.
         for (a, d) in all_rows.iter().zip(&default_rows) {
@@ -1197,7 +1221,10 @@ mod cli_sweep {
         let (header, _) = sweep_csv(&listed, &[]);
         assert_eq!(
             header,
-            keep(&|n| always(n) || n == "final_M3" || n.starts_with("theta_") || n.ends_with("_events"))
+            keep(&|n| always(n)
+                || n == "final_M3"
+                || n.starts_with("theta_")
+                || n.ends_with("_events"))
         );
         assert_eq!(sweep_csv(&listed, &["--columns", "all"]).0, ALL_COLUMNS);
     }
@@ -1241,13 +1268,31 @@ mod cli_sweep {
     #[test]
     fn unknown_columns_are_refused_listing_the_valid_ones() {
         let sweep = "[sweep]\ntilt = { values = [0.4] }\n";
-        let case = case_file("bad-columns.toml", [0.0, 0.0, 1.0], [0.5, 0.2, 8.0], 1.0, sweep);
+        let case = case_file(
+            "bad-columns.toml",
+            [0.0, 0.0, 1.0],
+            [0.5, 0.2, 8.0],
+            1.0,
+            sweep,
+        );
         let case = case.to_str().unwrap();
-        for expected in ["--columns", "`theta`", "nutation", "final_gamma1", "precession_difference"] {
-            assert_exit_2(&["sweep", "--case", case, "--columns", "final,theta"], expected);
+        for expected in [
+            "--columns",
+            "`theta`",
+            "nutation",
+            "final_gamma1",
+            "precession_difference",
+        ] {
+            assert_exit_2(
+                &["sweep", "--case", case, "--columns", "final,theta"],
+                expected,
+            );
         }
         for (listed, expected) in [
-            ("[\"final\", \"bogus\"]", "`columns` = \"bogus\": unknown column `bogus`"),
+            (
+                "[\"final\", \"bogus\"]",
+                "`columns` = \"bogus\": unknown column `bogus`",
+            ),
             ("\"all\"", "`columns` = \"all\": must be a list"),
         ] {
             let bad = case_file(
@@ -1260,7 +1305,11 @@ mod cli_sweep {
             assert_exit_2(&["sweep", "--case", bad.to_str().unwrap()], expected);
         }
         // Control: valid names run.
-        assert!(routh(&["sweep", "--case", case, "--columns", "events,final_M1"]).status.success());
+        assert!(
+            routh(&["sweep", "--case", case, "--columns", "events,final_M1"])
+                .status
+                .success()
+        );
     }
 
     /// `--resume` continues a table with the columns it was written with, and refuses other
@@ -1279,17 +1328,43 @@ mod cli_sweep {
             let table = scratch(&format!("resume-columns.{ext}"));
             let target = table.to_str().unwrap();
             let written = routh(&["sweep", "--case", case, "--out", target]);
-            assert!(written.status.success(), "{}", String::from_utf8_lossy(&written.stderr));
+            assert!(
+                written.status.success(),
+                "{}",
+                String::from_utf8_lossy(&written.stderr)
+            );
             assert_exit_2(
-                &["sweep", "--case", case, "--out", target, "--resume", "--columns", "all"],
+                &[
+                    "sweep",
+                    "--case",
+                    case,
+                    "--out",
+                    target,
+                    "--resume",
+                    "--columns",
+                    "all",
+                ],
                 "asked for only: theta_min",
             );
             assert_exit_2(
-                &["sweep", "--case", case, "--out", target, "--resume", "--columns", "final"],
+                &[
+                    "sweep",
+                    "--case",
+                    case,
+                    "--out",
+                    target,
+                    "--resume",
+                    "--columns",
+                    "final",
+                ],
                 "the file's only: H1_initial",
             );
             let again = sweep_json(&["--case", case, "--out", target, "--resume"]);
-            assert_eq!((again["resumed"].as_u64(), again["ran"].as_u64()), (Some(2), Some(0)), "{ext}");
+            assert_eq!(
+                (again["resumed"].as_u64(), again["ran"].as_u64()),
+                (Some(2), Some(0)),
+                "{ext}"
+            );
         }
     }
 

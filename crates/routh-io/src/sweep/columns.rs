@@ -264,7 +264,10 @@ mod tests {
         assert!(e.locates_turning_points() && !e.solves_quadrature());
         let diff = parse(&["period_difference"]);
         assert!(diff.locates_turning_points() && diff.solves_quadrature());
-        assert_eq!(Columns::all().select(catalogue()).count(), catalogue().len());
+        assert_eq!(
+            Columns::all().select(catalogue()).count(),
+            catalogue().len()
+        );
         assert_eq!(parse(&["final", "integrals"]), d);
         assert_eq!(parse(&["nutation", "final", "integrals"]), Columns::all());
         // The always-written columns only, named or not.

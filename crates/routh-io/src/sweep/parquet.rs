@@ -11,7 +11,9 @@
 
 use super::record::{Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{check_resumed_row, not_this_sweep, other_columns, Resumed, Staged, TableWriter};
+use super::table::{
+    check_resumed_row, not_this_sweep, other_columns, Resumed, Staged, TableWriter,
+};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::row::{Cell, Kind};
 use parquet::basic::{Compression, LogicalType, Repetition, Type as PhysicalType};
@@ -103,7 +105,10 @@ fn settings_text(s: &RunSettings) -> String {
 
 /// The values of one column and its definition levels (1 for a value, 0 for a null), or no
 /// levels for a column that is [`required`].
-fn present<T>(cells: impl Iterator<Item = Option<T>>, required: bool) -> (Vec<T>, Option<Vec<i16>>) {
+fn present<T>(
+    cells: impl Iterator<Item = Option<T>>,
+    required: bool,
+) -> (Vec<T>, Option<Vec<i16>>) {
     let mut values = Vec::new();
     let mut levels = Vec::new();
     for cell in cells {
