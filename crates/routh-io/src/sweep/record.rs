@@ -138,3 +138,49 @@ impl Row {
         csv_line(&self.cells(settings))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row has one cell per column of its table, of the column's kind, whatever the columns:
+    /// the cells are chosen by their position in [`catalogue`], so a cell missing there would
+    /// shift every later one.
+    #[test]
+    fn a_row_has_a_cell_for_every_column() {
+        let row = Row {
+            run: 3,
+            values: vec![0.5, 4.0],
+            status: Status::Failed,
+            message: "no run".into(),
+            summary: None,
+            events: None,
+            quadrature: None,
+        };
+        let settings = |columns| RunSettings {
+            t_end: 1.0,
+            rtol: 1e-10,
+            atol: 1e-10,
+            method: "dop853".into(),
+            columns,
+        };
+        let all = settings(Columns::all());
+        assert_eq!(row.catalogue_cells(&all).len(), catalogue().len());
+        let swept = ["tilt".to_string(), "spin".to_string()];
+        for names in [&["all"][..], &[], &["quadrature", "final_M3"]] {
+            let chosen = Columns::parse(names.iter().copied()).unwrap();
+            let cells = row.cells(&settings(chosen));
+            let cols = columns(&swept, &chosen);
+            assert_eq!(cells.len(), cols.len(), "{names:?}");
+            for ((name, kind), cell) in cols.iter().zip(&cells) {
+                let same = matches!(
+                    (kind, cell),
+                    (Kind::Int, Cell::Int(_))
+                        | (Kind::Float, Cell::Float(_))
+                        | (Kind::Text, Cell::Text(_))
+                );
+                assert!(same, "{name}: {cell:?}");
+            }
+        }
+    }
+}
