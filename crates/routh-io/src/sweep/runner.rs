@@ -248,7 +248,9 @@ impl Sweep {
     /// every run's case built and validated before any run starts: a bad table or a value
     /// that makes a body or a state invalid is refused, naming the key and the value. The
     /// settings of every run are the case's (no projection, no samples) with `overrides`
-    /// applied, validated as they are built, as `routh simulate` builds its own.
+    /// applied, validated as they are built, as `routh simulate` builds its own. The columns
+    /// of the table are `overrides.columns`, else the `[sweep]` key `columns`, else
+    /// [`Columns::default`].
     pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
         let case = Case::parse(text, source)?;
         let base = case.integration;
