@@ -4,14 +4,16 @@
 # memory (GNU time's maximum resident set size), with `uptime` before and after (the machine
 # is shared). Run it for two sizes to see that the peak memory does not grow with the number
 # of runs: `bash bench/sweep_runs.sh 10000` and `bash bench/sweep_runs.sh 100000`. Further
-# arguments go to `routh sweep` (e.g. `--no-batch` for the one-at-a-time integrator).
+# arguments go to `routh sweep` (e.g. `--no-batch` for the one-at-a-time integrator, or
+# `--columns all` for every column, the table of the runs recorded before issue 34: the
+# default columns are the final state and the integrals).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-100000}"
 shift || true
 spins=20
 tilts=$((runs / spins))
-cargo build --release --features routh-cli/parquet --quiet
+cargo build --release --quiet
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 sed '/^\[sweep\]/,$d' cases/sweep.toml > "$dir/case.toml"

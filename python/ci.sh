@@ -49,8 +49,8 @@ PY
 (cd "$root/target" && "$venv/bin/python" -m mypy.stubtest routh --allowlist "$root/python/stubtest-allowlist.txt")
 "$venv/bin/python" -m mypy --ignore-missing-imports "$root/python/examples/nutation.py"
 # The audit test compares with the command-line tool's JSON; the sweep test reads its Parquet
-# output back, so the binary keeps the `parquet` feature that .ci/run built it with.
-(cd "$root" && cargo build --release --bin routh --features routh-cli/parquet)
+# output back (the binary's default feature `parquet`).
+(cd "$root" && cargo build --release --bin routh)
 status=0
 (cd "$root" && "$venv/bin/python" -m pytest -p no:cacheprovider -q python/tests) || status=$?
 if [ "$status" -eq 5 ]; then

@@ -7,19 +7,21 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use routh_core::integrate::Method;
 use routh_core::row::{Cell, Kind};
-use routh_core::sweep::record::columns;
-use routh_core::sweep::{Overrides, Sweep};
+use routh_core::sweep::{Columns, Overrides, Sweep};
 use std::path::PathBuf;
 
 /// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853",
-/// threads=None, start=0, stop=None)`: run the runs `start <= run < stop` of the sweep in the
-/// case file `path` (or the case text `text`), in parallel on `threads` threads (default: one
-/// per core), and return a `pyarrow.Table`, one row per run in the order of `run` (call
-/// `.to_pandas()` for a DataFrame). The schema's metadata holds the case text
+/// threads=None, start=0, stop=None, columns=None)`: run the runs `start <= run < stop` of the
+/// sweep in the case file `path` (or the case text `text`), in parallel on `threads` threads
+/// (default: one per core), and return a `pyarrow.Table`, one row per run in the order of
+/// `run` (call `.to_pandas()` for a DataFrame). `columns` (a list of names and groups, as
+/// `routh sweep --columns`: `"final"`, `"integrals"`, `"events"`, `"quadrature"`,
+/// `"nutation"`, `"all"`, or single columns) chooses the columns, and only what they need is
+/// computed; default: the `[sweep]` table's `columns`, else `["final", "integrals"]`. The schema's metadata holds the case text
 /// (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
 /// `routh simulate` on its case, whatever the thread count or the slicing.
 #[pyfunction]
-#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853", threads=None, start=0, stop=None))]
+#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853", threads=None, start=0, stop=None, columns=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -32,6 +34,7 @@ pub fn sweep<'py>(
     threads: Option<usize>,
     start: u64,
     stop: Option<u64>,
+    columns: Option<Vec<String>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let (text, source) = match (path, text) {
         (Some(p), None) => (
@@ -52,12 +55,17 @@ pub fn sweep<'py>(
         .map_err(|e: routh_core::integrate::ParseMethodError| {
             PyValueError::new_err(e.to_string())
         })?;
+    let columns = columns
+        .map(|names| Columns::parse(names.iter().map(String::as_str)))
+        .transpose()
+        .map_err(|e| PyValueError::new_err(format!("columns: {e}")))?;
     let overrides = Overrides {
         method,
         t_end,
         rtol,
         atol,
         max_steps: None,
+        columns,
     };
     if threads == Some(0) {
         return Err(PyValueError::new_err("threads must be >= 1"));
@@ -70,7 +78,7 @@ pub fn sweep<'py>(
                 .rows(start, stop, threads.unwrap_or(0))
                 .map_err(|e| e.to_string())?;
             Ok((
-                columns(&sweep.names()),
+                sweep.table_columns(),
                 rows,
                 sweep.run_settings(),
                 sweep.case_text.clone(),

@@ -3,9 +3,9 @@
 
 use routh::integrate::Method;
 use routh::sweep::open;
-use routh::sweep::record::{columns, Row};
+use routh::sweep::record::Row;
 use routh::sweep::table::{Resumed, TableWriter};
-use routh::sweep::{pool, Completion, Overrides, Sweep};
+use routh::sweep::{pool, Columns, Completion, Overrides, Sweep};
 use routh::{AppResult as Result, FileError, RouthError};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -49,10 +49,17 @@ pub struct Args {
     /// Worker threads (default, or 0: one per core; at most 4 per available core).
     #[arg(long)]
     pub threads: Option<usize>,
-    /// The table: FILE.parquet (build with `--features parquet`) or FILE.csv; without it the
-    /// rows go to stdout as CSV (or in the JSON).
+    /// The table: FILE.parquet or FILE.csv; without it the rows go to stdout as CSV (or in the
+    /// JSON).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// The columns of the table, comma-separated: groups `final`, `integrals`, `events`,
+    /// `quadrature`, `nutation` (events, quadrature and their differences), `all`, or single
+    /// columns (`period_quadrature`, ...); only what they need is computed. Default: the
+    /// `[sweep]` table's `columns`, else `final,integrals` (before, every column: `all`).
+    /// `run`, the swept quantities, the settings, status, message and work are always in.
+    #[arg(long, value_parser = parse_columns)]
+    pub columns: Option<Columns>,
     /// Continue a stopped sweep: keep the rows of `--out` and run only the missing runs (a
     /// last row cut short is dropped, and said, and its run done again).
     #[arg(long)]
@@ -64,6 +71,11 @@ pub struct Args {
     /// the rows are the same bit for bit, only the speed differs).
     #[arg(long)]
     pub no_batch: bool,
+}
+
+/// The columns of `--columns`: names and groups separated by commas.
+fn parse_columns(list: &str) -> std::result::Result<Columns, String> {
+    Columns::parse(list.split(',')).map_err(|e| e.to_string())
 }
 
 /// Writes the rows to stdout as CSV.
@@ -106,15 +118,16 @@ pub fn run(args: Args) -> Result<()> {
         rtol: args.rtol,
         atol: args.atol,
         max_steps: args.max_steps,
+        columns: args.columns,
     };
     let mut sweep = Sweep::new(&text, &source, overrides)?;
     sweep.batch = !args.no_batch;
     let sweep = Arc::new(sweep);
+    let names: Vec<String> = sweep.table_columns().into_iter().map(|c| c.0).collect();
     let (mut writer, resumed): (Box<dyn TableWriter>, Resumed) = match &args.out {
         Some(path) => open(path, &sweep, args.resume)?,
         None => {
             if !args.json {
-                let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
                 outln!("{}", names.join(","))?;
             }
             (
@@ -152,7 +165,6 @@ pub fn run(args: Args) -> Result<()> {
     let mut json_rows = Vec::new();
     let (mut ran, mut failed) = (0u64, 0u64);
     let settings_row = sweep.run_settings();
-    let names: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
     let completion = sweep.execute(todo, &pool, chunk(sweep.runs()), &stop, &mut |rows| {
         if args.out.is_some() || !args.json {
             writer.write(rows)?;

@@ -2,9 +2,11 @@
 //! ([`super::record::Row::csv_line`]); with `--resume`, the lines of an existing file checked
 //! and copied.
 
-use super::record::{columns, Row, RunSettings};
+use super::record::{Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{check_resumed_row, not_this_sweep, PartialRow, Resumed, Staged, TableWriter};
+use super::table::{
+    check_resumed_row, not_this_sweep, other_columns, PartialRow, Resumed, Staged, TableWriter,
+};
 use crate::error::{AppResult as Result, FileError};
 use std::io::{BufRead, BufWriter, Write};
 use std::path::Path;
@@ -41,9 +43,9 @@ impl CsvTable {
     /// a process ended while writing it) is dropped and said in [`Resumed::dropped`]; any
     /// other row that is not a row of this sweep is refused.
     pub fn create(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Self, Resumed)> {
-        let header: Vec<String> = columns(&sweep.names()).into_iter().map(|c| c.0).collect();
-        let width = header.len();
-        let header = header.join(",");
+        let names: Vec<String> = sweep.table_columns().into_iter().map(|c| c.0).collect();
+        let width = names.len();
+        let header = names.join(",");
         let staged = Staged::beside(target)?;
         let file = std::fs::File::create(&staged.tmp).map_err(|e| staged.io(e))?;
         let mut file = BufWriter::new(file);
@@ -61,11 +63,10 @@ impl CsvTable {
                 Ok((read > 0).then_some(line))
             };
             let first = next_line()?.unwrap_or_default();
-            if first.trim_end_matches(['\n', '\r']) != header {
-                return Err(not_this_sweep(
-                    target,
-                    "its columns differ from this sweep's",
-                ));
+            let first = first.trim_end_matches(['\n', '\r']);
+            if first != header {
+                let found: Vec<String> = cells(first).into_iter().map(str::to_string).collect();
+                return Err(other_columns(target, &found, &names));
             }
             let fixed = sweep.names().len() + 4;
             let mut next = next_line()?;

@@ -1,16 +1,19 @@
 //! Sweeps: many runs of one case with some quantities varied (the body's parameters, the
 //! initial tilt, spin, omega or gamma), on a grid or a random design, run in parallel, each
-//! run reduced to one row (final state, integrals and drift, work, status, the nutation from
-//! events and from the quadrature), written as CSV or Parquet as the runs finish.
+//! run reduced to one row (work, status, and the columns asked for: final state, integrals
+//! and drift, the nutation from events and from the quadrature; only those are computed),
+//! written as CSV or Parquet as the runs finish.
 //!
 //! * [`spec`]: the `[sweep]` table and its checks;
 //! * [`design`]: the grid, Sobol, Latin hypercube and uniform designs;
 //! * [`turning`]: theta min and max, the nutation period and the precession from events;
-//! * [`record`]: the row of a run and the columns;
+//! * [`columns`]: the columns of a table, their groups, and what each needs computed;
+//! * [`record`]: the row of a run and its cells;
 //! * [`runner`]: the case of each run and the parallel execution;
 //! * [`table`]: what every writer shares, stop and resume; [`csv`] and `parquet` (feature
 //!   `parquet`): the writers; [`open`] chooses one by the file's extension.
 
+pub mod columns;
 pub mod csv;
 pub mod design;
 #[cfg(feature = "parquet")]
@@ -21,6 +24,7 @@ pub mod spec;
 pub mod table;
 pub mod turning;
 
+pub use columns::Columns;
 pub use runner::{pool, Completion, Overrides, Sweep};
 
 use crate::error::{AppResult as Result, RouthError};
@@ -44,7 +48,7 @@ pub fn open(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Box<dyn Table
         Some("parquet") => Err(RouthError::Option {
             name: "out",
             value: target.display().to_string(),
-            rule: "this build has no Parquet output: build with `cargo build --release --features parquet`, or write .csv",
+            rule: "this build has no Parquet output (built without the feature `parquet`, on by default): write .csv",
         }.into()),
         _ => Err(RouthError::Option {
             name: "out",

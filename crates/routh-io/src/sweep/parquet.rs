@@ -1,21 +1,32 @@
-//! The sweep's table as Parquet (feature `parquet`): typed columns (run and counts as
-//! UInt64, numbers as Float64 with nulls where they do not apply, text as Utf8), one row
-//! group per chunk of finished runs, and in the file's key-value metadata the case file's
-//! text (`routh.case`), the tool's version (`routh.version`) and the settings
-//! (`routh.settings`).
+//! The sweep's table as Parquet (feature `parquet`, on in the `routh` binary): typed columns
+//! (run and counts as unsigned 64-bit integers, numbers as doubles with nulls where they do not
+//! apply, text as UTF-8 strings), Snappy-compressed, one row group per chunk of finished runs,
+//! and in the file's key-value metadata the case file's text (`routh.case`), the tool's
+//! version (`routh.version`) and the settings (`routh.settings`).
+//!
+//! Written with the `parquet` crate's own column writers, without Apache Arrow: the `arrow`
+//! feature of that crate builds arrow-cast, arrow-ord and arrow-select, ten times the
+//! build time of the writer alone (BENCHMARKS.md, "Parquet in the default build"), for a
+//! table of three column types. pyarrow, pandas, polars and Dask read the file as before.
 
-use super::record::{columns, Row, RunSettings};
+use super::record::{Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{check_resumed_row, not_this_sweep, Resumed, Staged, TableWriter};
+use super::table::{
+    check_resumed_row, not_this_sweep, other_columns, Resumed, Staged, TableWriter,
+};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::row::{Cell, Kind};
-use arrow_array::{Array, ArrayRef, Float64Array, RecordBatch, StringArray, UInt64Array};
-use arrow_schema::{DataType, Field, Schema, SchemaRef};
-use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
-use parquet::arrow::ArrowWriter;
-use parquet::basic::Compression;
+use parquet::basic::{Compression, LogicalType, Repetition, Type as PhysicalType};
+use parquet::column::writer::ColumnWriter;
+use parquet::data_type::ByteArray;
+use parquet::errors::ParquetError;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
+use parquet::file::reader::FileReader;
+use parquet::file::serialized_reader::SerializedFileReader;
+use parquet::file::writer::SerializedFileWriter;
+use parquet::record::Field;
+use parquet::schema::types::{Type, TypePtr};
 use std::collections::HashSet;
 use std::path::Path;
 use std::sync::Arc;
@@ -27,27 +38,54 @@ pub const VERSION_KEY: &str = "routh.version";
 /// Metadata key of the settings (`t_end`, `rtol`, `atol`, `method`).
 pub const SETTINGS_KEY: &str = "routh.settings";
 
+/// Rows of an existing table copied per row group by `--resume`.
+const RESUMED_GROUP: usize = 4096;
+
 /// A Parquet table being written.
 pub struct ParquetTable {
     staged: Staged,
-    writer: Option<ArrowWriter<std::fs::File>>,
-    schema: SchemaRef,
+    writer: Option<SerializedFileWriter<std::fs::File>>,
+    columns: Vec<(String, Kind)>,
     settings: RunSettings,
 }
 
-fn schema(sweep: &Sweep) -> SchemaRef {
-    let fields: Vec<Field> = columns(&sweep.names())
-        .into_iter()
+/// Whether a column never holds a null: `run` and the text columns.
+fn required(name: &str, kind: Kind) -> bool {
+    name == "run" || kind == Kind::Text
+}
+
+/// The Parquet schema of the columns `columns`.
+fn schema(columns: &[(String, Kind)]) -> std::result::Result<TypePtr, ParquetError> {
+    let fields = columns
+        .iter()
         .map(|(name, kind)| {
-            let (t, nullable) = match kind {
-                Kind::Int => (DataType::UInt64, name != "run"),
-                Kind::Float => (DataType::Float64, true),
-                Kind::Text => (DataType::Utf8, false),
+            let (physical, logical) = match kind {
+                Kind::Int => (
+                    PhysicalType::INT64,
+                    Some(LogicalType::Integer {
+                        bit_width: 64,
+                        is_signed: false,
+                    }),
+                ),
+                Kind::Float => (PhysicalType::DOUBLE, None),
+                Kind::Text => (PhysicalType::BYTE_ARRAY, Some(LogicalType::String)),
             };
-            Field::new(name, t, nullable)
+            let repetition = if required(name, *kind) {
+                Repetition::REQUIRED
+            } else {
+                Repetition::OPTIONAL
+            };
+            Type::primitive_type_builder(name, physical)
+                .with_repetition(repetition)
+                .with_logical_type(logical)
+                .build()
+                .map(Arc::new)
         })
-        .collect();
-    Arc::new(Schema::new(fields))
+        .collect::<std::result::Result<Vec<_>, _>>()?;
+    Type::group_type_builder("schema")
+        .with_fields(fields)
+        .build()
+        .map(Arc::new)
 }
 
 fn parquet_error(path: &Path, e: impl std::fmt::Display) -> AppError {
@@ -65,58 +103,96 @@ fn settings_text(s: &RunSettings) -> String {
     )
 }
 
-/// The rows as one record batch of `schema`.
-fn batch(schema: &SchemaRef, rows: &[Row], settings: &RunSettings) -> Result<RecordBatch> {
-    let cells: Vec<Vec<Cell>> = rows.iter().map(|r| r.cells(settings)).collect();
-    let arrays: Vec<ArrayRef> = schema
-        .fields()
-        .iter()
-        .enumerate()
-        .map(|(i, field)| -> ArrayRef {
-            let column = cells.iter().map(|row| &row[i]);
-            match field.data_type() {
-                DataType::UInt64 => Arc::new(
-                    column
-                        .map(|c| match c {
-                            Cell::Int(v) => *v,
-                            _ => None,
-                        })
-                        .collect::<UInt64Array>(),
-                ),
-                DataType::Float64 => Arc::new(
-                    column
-                        .map(|c| match c {
-                            Cell::Float(v) => *v,
-                            _ => None,
-                        })
-                        .collect::<Float64Array>(),
-                ),
-                _ => Arc::new(
-                    column
-                        .map(|c| match c {
-                            Cell::Text(s) => Some(s.as_str()),
-                            _ => None,
-                        })
-                        .collect::<StringArray>(),
-                ),
+/// The values of one column and its definition levels (1 for a value, 0 for a null), or no
+/// levels for a column that is [`required`].
+fn present<T>(
+    cells: impl Iterator<Item = Option<T>>,
+    required: bool,
+) -> (Vec<T>, Option<Vec<i16>>) {
+    let mut values = Vec::new();
+    let mut levels = Vec::new();
+    for cell in cells {
+        levels.push(i16::from(cell.is_some()));
+        values.extend(cell);
+    }
+    (values, (!required).then_some(levels))
+}
+
+/// Write `rows` (the cells of rows of `columns`) as one row group.
+fn write_group(
+    writer: &mut SerializedFileWriter<std::fs::File>,
+    columns: &[(String, Kind)],
+    rows: &[Vec<Cell>],
+) -> std::result::Result<(), ParquetError> {
+    let mut group = writer.next_row_group()?;
+    for (i, (name, kind)) in columns.iter().enumerate() {
+        let mut column = group
+            .next_column()?
+            .ok_or_else(|| ParquetError::General(format!("no column `{name}` in the schema")))?;
+        let required = required(name, *kind);
+        let cells = rows.iter().map(|row| &row[i]);
+        match column.untyped() {
+            ColumnWriter::Int64ColumnWriter(w) => {
+                // An unsigned 64-bit integer is stored in INT64's bits (Parquet's UINT_64).
+                let (values, levels) = present(
+                    cells.map(|c| match c {
+                        Cell::Int(v) => v.map(|v| v as i64),
+                        _ => None,
+                    }),
+                    required,
+                );
+                w.write_batch(&values, levels.as_deref(), None)?;
             }
-        })
-        .collect();
-    RecordBatch::try_new(schema.clone(), arrays).map_err(|e| {
-        FileError::Table {
-            origin: "sweep".into(),
-            message: format!("cannot build a record batch: {e}"),
+            ColumnWriter::DoubleColumnWriter(w) => {
+                let (values, levels) = present(
+                    cells.map(|c| match c {
+                        Cell::Float(v) => *v,
+                        _ => None,
+                    }),
+                    required,
+                );
+                w.write_batch(&values, levels.as_deref(), None)?;
+            }
+            ColumnWriter::ByteArrayColumnWriter(w) => {
+                let (values, levels) = present(
+                    cells.map(|c| match c {
+                        Cell::Text(s) => Some(ByteArray::from(s.as_str())),
+                        _ => None,
+                    }),
+                    required,
+                );
+                w.write_batch(&values, levels.as_deref(), None)?;
+            }
+            _ => {
+                return Err(ParquetError::General(format!(
+                    "column `{name}` has an unexpected type"
+                )))
+            }
         }
-        .into()
-    })
+        column.close()?;
+    }
+    group.close()?;
+    Ok(())
+}
+
+/// The cell of `field`, a value of a column of kind `kind`; None for another type.
+fn cell(field: &Field, kind: Kind) -> Option<Cell> {
+    match (field, kind) {
+        (Field::ULong(v), Kind::Int) => Some(Cell::Int(Some(*v))),
+        (Field::Null, Kind::Int) => Some(Cell::Int(None)),
+        (Field::Double(v), Kind::Float) => Some(Cell::Float(Some(*v))),
+        (Field::Null, Kind::Float) => Some(Cell::Float(None)),
+        (Field::Str(s), Kind::Text) => Some(Cell::Text(s.clone())),
+        _ => None,
+    }
 }
 
 impl ParquetTable {
     /// Start writing `target`; with `resume`, copy the rows of an existing `target` (checked
-    /// to be rows of this sweep: same case text, settings, and design values) and return the
-    /// runs they hold.
+    /// to be rows of this sweep: same case text, settings, columns and design values) and
+    /// return the runs they hold.
     pub fn create(target: &Path, sweep: &Sweep, resume: bool) -> Result<(Self, Resumed)> {
-        let schema = schema(sweep);
+        let columns = sweep.table_columns();
         let settings = sweep.run_settings();
         let staged = Staged::beside(target)?;
         let props = WriterProperties::builder()
@@ -128,7 +204,8 @@ impl ParquetTable {
             ]))
             .build();
         let file = std::fs::File::create(&staged.tmp).map_err(|e| staged.io(e))?;
-        let mut writer = ArrowWriter::try_new(file, schema.clone(), Some(props))
+        let mut writer = schema(&columns)
+            .and_then(|schema| SerializedFileWriter::new(file, schema, Arc::new(props)))
             .map_err(|e| parquet_error(&staged.target, e))?;
         let mut done = HashSet::new();
         if resume && target.exists() {
@@ -136,11 +213,11 @@ impl ParquetTable {
                 path: target.to_path_buf(),
                 source,
             })?;
-            let builder = ParquetRecordBatchReaderBuilder::try_new(file)
-                .map_err(|e| parquet_error(target, e))?;
-            let meta = builder.metadata().file_metadata().key_value_metadata();
+            let reader = SerializedFileReader::new(file).map_err(|e| parquet_error(target, e))?;
+            let meta = reader.metadata().file_metadata();
             let value = |key: &str| {
-                meta.and_then(|m| m.iter().find(|kv| kv.key == key))
+                meta.key_value_metadata()
+                    .and_then(|m| m.iter().find(|kv| kv.key == key))
                     .and_then(|kv| kv.value.clone())
             };
             if value(CASE_KEY).as_deref() != Some(sweep.case_text.as_str()) {
@@ -156,48 +233,61 @@ impl ParquetTable {
                     ),
                 ));
             }
-            let shape = |s: &Schema| -> Vec<(String, DataType)> {
-                s.fields()
-                    .iter()
-                    .map(|f| (f.name().clone(), f.data_type().clone()))
-                    .collect()
-            };
-            if shape(builder.schema()) != shape(&schema) {
-                return Err(not_this_sweep(
-                    target,
-                    "its columns differ from this sweep's",
-                ));
+            let found: Vec<String> = meta
+                .schema_descr()
+                .columns()
+                .iter()
+                .map(|c| c.name().to_string())
+                .collect();
+            let asked: Vec<String> = columns.iter().map(|c| c.0.clone()).collect();
+            if found != asked {
+                return Err(other_columns(target, &found, &asked));
             }
-            let reader = builder.build().map_err(|e| parquet_error(target, e))?;
             let d = sweep.names().len();
-            for b in reader {
-                let b = b.map_err(|e| parquet_error(target, e))?;
-                let float = |i: usize| b.column(i).as_any().downcast_ref::<Float64Array>().cloned();
-                let runs = b.column(0).as_any().downcast_ref::<UInt64Array>().cloned();
-                let cols: Option<Vec<Float64Array>> = (1..=d + 3).map(float).collect();
-                let (Some(runs), Some(cols)) = (runs, cols) else {
+            let mut kept: Vec<Vec<Cell>> = Vec::new();
+            for row in reader
+                .get_row_iter(None)
+                .map_err(|e| parquet_error(target, e))?
+            {
+                let row = row.map_err(|e| parquet_error(target, e))?;
+                let cells: Option<Vec<Cell>> = row
+                    .get_column_iter()
+                    .zip(&columns)
+                    .map(|((_, field), (_, kind))| cell(field, *kind))
+                    .collect();
+                let Some(cells) = cells else {
                     return Err(not_this_sweep(target, "its columns have other types"));
                 };
-                for r in 0..b.num_rows() {
-                    let run = runs.value(r);
-                    let values: Vec<f64> = cols.iter().map(|c| c.value(r)).collect();
-                    check_resumed_row(sweep, target, run, &values)?;
-                    if !done.insert(run) {
-                        return Err(not_this_sweep(target, format!("run {run} appears twice")));
-                    }
+                let number = |i: usize| match cells[i] {
+                    Cell::Float(Some(v)) => Some(v),
+                    _ => None,
+                };
+                let (Cell::Int(Some(run)), Some(values)) = (
+                    &cells[0],
+                    (1..=d + 3).map(number).collect::<Option<Vec<f64>>>(),
+                ) else {
+                    return Err(not_this_sweep(target, "a row without its run or settings"));
+                };
+                check_resumed_row(sweep, target, *run, &values)?;
+                if !done.insert(*run) {
+                    return Err(not_this_sweep(target, format!("run {run} appears twice")));
                 }
-                writer
-                    .write(&b)
+                kept.push(cells);
+                if kept.len() == RESUMED_GROUP {
+                    write_group(&mut writer, &columns, &kept)
+                        .map_err(|e| parquet_error(&staged.target, e))?;
+                    kept.clear();
+                }
+            }
+            if !kept.is_empty() {
+                write_group(&mut writer, &columns, &kept)
                     .map_err(|e| parquet_error(&staged.target, e))?;
             }
-            writer
-                .flush()
-                .map_err(|e| parquet_error(&staged.target, e))?;
         }
         let table = ParquetTable {
             staged,
             writer: Some(writer),
-            schema,
+            columns,
             settings,
         };
         Ok((
@@ -212,14 +302,11 @@ impl ParquetTable {
 
 impl TableWriter for ParquetTable {
     fn write(&mut self, rows: &[Row]) -> Result<()> {
-        let b = batch(&self.schema, rows, &self.settings)?;
+        let cells: Vec<Vec<Cell>> = rows.iter().map(|r| r.cells(&self.settings)).collect();
         let writer = self.writer.as_mut().expect("open until finish");
-        writer
-            .write(&b)
+        write_group(writer, &self.columns, &cells)
             .map_err(|e| parquet_error(&self.staged.target, e))?;
-        writer
-            .flush()
-            .map_err(|e| parquet_error(&self.staged.target, e))
+        writer.flush().map_err(|e| self.staged.io(e))
     }
 
     fn finish(mut self: Box<Self>) -> Result<()> {

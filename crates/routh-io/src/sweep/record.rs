@@ -4,6 +4,7 @@
 use crate::integrals::INTEGRAL_NAMES;
 use crate::row::{csv_line, Cell, Kind};
 use crate::simulate::Summary;
+use crate::sweep::columns::{catalogue, Columns};
 use crate::sweep::turning::NutationEvents;
 
 /// How a run ended: a sweep's run reaches t_end ([`Status::Reached`], written `ok`) or fails.
@@ -18,7 +19,8 @@ pub struct NutationQuadrature {
     pub precession: Option<f64>,
 }
 
-/// The settings shared by every run of a sweep, repeated in each row.
+/// What every row of a sweep shares: the settings of its runs, repeated in each row, and the
+/// columns of its table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunSettings {
     /// Final time.
@@ -29,6 +31,8 @@ pub struct RunSettings {
     pub atol: f64,
     /// The method, as `routh simulate` prints it.
     pub method: String,
+    /// The columns of the table.
+    pub columns: Columns,
 }
 
 /// The result of one run.
@@ -44,61 +48,20 @@ pub struct Row {
     pub message: String,
     /// The integration's summary (None if it failed).
     pub summary: Option<Summary>,
-    /// The turning points found along the run (None if it failed).
+    /// The turning points found along the run (None if it failed, or not asked for).
     pub events: Option<NutationEvents>,
-    /// The quadrature's nutation (None when the body or the motion does not allow it).
+    /// The quadrature's nutation (None when the body or the motion does not allow it, or not
+    /// asked for).
     pub quadrature: Option<NutationQuadrature>,
 }
 
-/// The fixed columns after `run` and the swept quantities, with their kinds.
-fn fixed_columns() -> Vec<(String, Kind)> {
-    let mut cols: Vec<(String, Kind)> = [
-        ("t_end", Kind::Float),
-        ("rtol", Kind::Float),
-        ("atol", Kind::Float),
-        ("method", Kind::Text),
-        ("status", Kind::Text),
-        ("message", Kind::Text),
-        ("steps", Kind::Int),
-        ("rejected", Kind::Int),
-        ("rhs_evals", Kind::Int),
-    ]
-    .into_iter()
-    .map(|(n, k)| (n.to_string(), k))
-    .collect();
-    for name in STATE_NAMES {
-        cols.push((format!("final_{name}"), Kind::Float));
-    }
-    for name in INTEGRAL_NAMES {
-        for part in ["initial", "final", "drift"] {
-            cols.push((format!("{name}_{part}"), Kind::Float));
-        }
-    }
-    for name in [
-        "theta_min",
-        "theta_max",
-        "period_events",
-        "period_quadrature",
-        "period_difference",
-        "precession_events",
-        "precession_quadrature",
-        "precession_difference",
-    ] {
-        cols.push((name.to_string(), Kind::Float));
-    }
-    cols
-}
-
-const STATE_NAMES: [&str; 6] = ["gamma1", "gamma2", "gamma3", "M1", "M2", "M3"];
-
-/// The columns of a sweep whose swept quantities are `swept`: `run`, the swept quantities
-/// (named as in `[sweep]`), the settings, status and message, the work, the final state,
-/// each integral's initial and final value and maximal relative drift (null where not an
-/// integral), and the nutation from events and from the quadrature.
-pub fn columns(swept: &[String]) -> Vec<(String, Kind)> {
+/// The columns of a sweep whose swept quantities are `swept` and whose table holds `chosen`:
+/// `run`, the swept quantities (named as in `[sweep]`), then the chosen columns of
+/// [`catalogue`] in its order.
+pub fn columns(swept: &[String], chosen: &Columns) -> Vec<(String, Kind)> {
     let mut cols = vec![("run".to_string(), Kind::Int)];
     cols.extend(swept.iter().map(|n| (n.clone(), Kind::Float)));
-    cols.extend(fixed_columns());
+    cols.extend(chosen.select(catalogue()).map(|c| (c.name, c.kind)));
     cols
 }
 
@@ -108,18 +71,24 @@ fn difference(a: Option<f64>, b: Option<f64>) -> Option<f64> {
 }
 
 impl Row {
-    /// The row's cells, in the order of [`columns`].
+    /// The row's cells, in the order of [`columns`] for `settings.columns`.
     pub fn cells(&self, settings: &RunSettings) -> Vec<Cell> {
         let mut cells = vec![Cell::Int(Some(self.run))];
         cells.extend(self.values.iter().map(|v| Cell::Float(Some(*v))));
-        cells.extend([
+        cells.extend(settings.columns.select(self.catalogue_cells(settings)));
+        cells
+    }
+
+    /// The cells of every column of [`catalogue`], in its order (null where not computed).
+    fn catalogue_cells(&self, settings: &RunSettings) -> Vec<Cell> {
+        let mut cells = vec![
             Cell::Float(Some(settings.t_end)),
             Cell::Float(Some(settings.rtol)),
             Cell::Float(Some(settings.atol)),
             Cell::Text(settings.method.clone()),
             Cell::Text(self.status.as_str().to_string()),
             Cell::Text(self.message.clone()),
-        ]);
+        ];
         let s = self.summary.as_ref();
         for count in [
             s.map(|s| s.steps),
@@ -167,5 +136,51 @@ impl Row {
     /// The row as one line of CSV (without the line break).
     pub fn csv_line(&self, settings: &RunSettings) -> String {
         csv_line(&self.cells(settings))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row has one cell per column of its table, of the column's kind, whatever the columns:
+    /// the cells are chosen by their position in [`catalogue`], so a cell missing there would
+    /// shift every later one.
+    #[test]
+    fn a_row_has_a_cell_for_every_column() {
+        let row = Row {
+            run: 3,
+            values: vec![0.5, 4.0],
+            status: Status::Failed,
+            message: "no run".into(),
+            summary: None,
+            events: None,
+            quadrature: None,
+        };
+        let settings = |columns| RunSettings {
+            t_end: 1.0,
+            rtol: 1e-10,
+            atol: 1e-10,
+            method: "dop853".into(),
+            columns,
+        };
+        let all = settings(Columns::all());
+        assert_eq!(row.catalogue_cells(&all).len(), catalogue().len());
+        let swept = ["tilt".to_string(), "spin".to_string()];
+        for names in [&["all"][..], &[], &["quadrature", "final_M3"]] {
+            let chosen = Columns::parse(names.iter().copied()).unwrap();
+            let cells = row.cells(&settings(chosen));
+            let cols = columns(&swept, &chosen);
+            assert_eq!(cells.len(), cols.len(), "{names:?}");
+            for ((name, kind), cell) in cols.iter().zip(&cells) {
+                let same = matches!(
+                    (kind, cell),
+                    (Kind::Int, Cell::Int(_))
+                        | (Kind::Float, Cell::Float(_))
+                        | (Kind::Text, Cell::Text(_))
+                );
+                assert!(same, "{name}: {cell:?}");
+            }
+        }
     }
 }

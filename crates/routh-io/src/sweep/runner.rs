@@ -4,8 +4,9 @@
 //! are integrated together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the
 //! one-at-a-time integrator: the rows are the same, bit for bit, only faster.
 
+use super::columns::Columns;
 use super::design::Design;
-use super::record::{NutationQuadrature, Row, RunSettings, Status};
+use super::record::{columns, NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
 use super::turning::{NutationEvents, TurningPoints};
 use crate::batch::{self, Job, Queue, LANES};
@@ -14,6 +15,7 @@ use crate::case::Case;
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::{ExactSolution, Motion};
+use crate::row::Kind;
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
 use crate::state::State;
 use rayon::prelude::*;
@@ -70,6 +72,8 @@ pub struct Sweep {
     design: Design,
     /// The settings of every run.
     pub settings: Settings,
+    /// The columns of the table: only what they need is computed ([`Columns`]).
+    pub columns: Columns,
     /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
     /// method is DOP853 or Taylor (the default, `true`); `false` runs them one at a time. The rows are
     /// the same, bit for bit: only the speed differs.
@@ -86,11 +90,11 @@ struct Pending {
 }
 
 /// A run in a lane: what [`integrate_observed`] tracks along a run (the drift of the
-/// integrals, the turning points, the wall time).
+/// integrals, the turning points, each when its columns are asked for; the wall time).
 struct InLane<'b> {
     run: &'b Pending,
-    drift: DriftTracker,
-    turning: TurningPoints<'b>,
+    drift: Option<DriftTracker>,
+    turning: Option<TurningPoints<'b>>,
     start: Instant,
 }
 
@@ -111,10 +115,13 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
             return None;
         }
         let run = self.pending.next()?;
+        let columns = &self.sweep.columns;
         self.lanes[lane] = Some(InLane {
             run,
-            drift: DriftTracker::new(self.body, &run.x0),
-            turning: TurningPoints::new(self.body, &run.x0),
+            drift: columns
+                .tracks_integrals()
+                .then(|| DriftTracker::new(self.body, &run.x0)),
+            turning: self.sweep.turning_points(self.body, &run.x0),
             start: Instant::now(),
         });
         Some(Job {
@@ -127,8 +134,12 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
     /// As the observer of [`Sweep::run`]: the drift at the step end, then the turning points.
     fn step(&mut self, lane: usize, step: &dyn Stepper<6>) {
         if let Some(run) = self.lanes[lane].as_mut() {
-            run.drift.observe(self.body, step.y());
-            run.turning.observe(step);
+            if let Some(drift) = run.drift.as_mut() {
+                drift.observe(self.body, step.y());
+            }
+            if let Some(turning) = run.turning.as_mut() {
+                turning.observe(step);
+            }
         }
     }
 
@@ -150,10 +161,11 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                     project_every: 1,
                     initial_state: State::from_array(&run.x0),
                     final_state: State::from_array(&end.y),
-                    integrals: done.drift.report(),
+                    integrals: done.drift.map(|d| d.report()).unwrap_or_default(),
                     elapsed_s: done.start.elapsed().as_secs_f64(),
                 };
-                sweep.finished(run.k, self.body, &run.case, summary, done.turning.summary())
+                let events = done.turning.map(|t| t.summary());
+                sweep.finished(run.k, self.body, &run.case, summary, events)
             }
         };
         (self.sink)(run.position, row);
@@ -174,6 +186,9 @@ pub struct Overrides {
     pub atol: Option<f64>,
     /// The most steps of one run (`--max-steps`).
     pub max_steps: Option<usize>,
+    /// The columns of the table (`--columns`; default: the `[sweep]` table's `columns`, else
+    /// [`Columns::default`]).
+    pub columns: Option<Columns>,
 }
 
 /// How [`Sweep::execute`] ended.
@@ -233,7 +248,9 @@ impl Sweep {
     /// every run's case built and validated before any run starts: a bad table or a value
     /// that makes a body or a state invalid is refused, naming the key and the value. The
     /// settings of every run are the case's (no projection, no samples) with `overrides`
-    /// applied, validated as they are built, as `routh simulate` builds its own.
+    /// applied, validated as they are built, as `routh simulate` builds its own. The columns
+    /// of the table are `overrides.columns`, else the `[sweep]` key `columns`, else
+    /// [`Columns::default`].
     pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
         let case = Case::parse(text, source)?;
         let base = case.integration;
@@ -246,13 +263,19 @@ impl Sweep {
             .tolerances(rtol, atol)
             .max_steps(overrides.max_steps.unwrap_or(base.max_steps()))
             .build()?;
-        let table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
+        let mut table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
             message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
         })?;
         let refused = |e: Refusal| FileError::Case {
             file: source.to_string(),
             message: e.to_string(),
+        };
+        let listed = table.remove("columns");
+        let columns = match (overrides.columns, listed) {
+            (Some(columns), _) => columns,
+            (None, Some(listed)) => Columns::from_toml(&listed).map_err(refused)?,
+            (None, None) => Columns::default(),
         };
         let design = Spec::parse(&table).and_then(Design::new).map_err(refused)?;
         let mut base = case.document;
@@ -263,6 +286,7 @@ impl Sweep {
             base,
             design,
             settings,
+            columns,
             batch: true,
         };
         (0..sweep.runs())
@@ -294,7 +318,20 @@ impl Sweep {
             rtol: self.settings.rtol(),
             atol: self.settings.atol(),
             method: self.settings.method().to_string(),
+            columns: self.columns,
         }
+    }
+
+    /// The columns of the table ([`columns`] of the swept quantities and [`Sweep::columns`]).
+    pub fn table_columns(&self) -> Vec<(String, Kind)> {
+        columns(&self.names(), &self.columns)
+    }
+
+    /// The turning points of a run from `x0`, when their columns are asked for.
+    fn turning_points<'b>(&self, body: &'b Body, x0: &[f64; 6]) -> Option<TurningPoints<'b>> {
+        self.columns
+            .locates_turning_points()
+            .then(|| TurningPoints::new(body, x0))
     }
 
     /// The case document of run `k`: the base case with the swept values put in.
@@ -359,16 +396,18 @@ impl Sweep {
     }
 
     /// The row of run `k` whose integration gave `summary` and `events`: with the quadrature's
-    /// nutation when the body is a Routh sphere.
+    /// nutation when its columns are asked for and the body is a Routh sphere.
     fn finished(
         &self,
         k: u64,
         body: &Body,
         case: &Case,
         summary: Summary,
-        events: NutationEvents,
+        events: Option<NutationEvents>,
     ) -> Row {
-        let (quadrature, message) = if body.is_symmetric() {
+        let (quadrature, message) = if !self.columns.solves_quadrature() {
+            (None, String::new())
+        } else if body.is_symmetric() {
             match ExactSolution::new(body, &case.initial) {
                 Ok(exact) => {
                     let precession = match &exact.motion {
@@ -397,18 +436,19 @@ impl Sweep {
             status: Status::Reached,
             message,
             summary: Some(summary),
-            events: Some(events),
+            events,
             quadrature,
         }
     }
 
     /// Run number `k`: the integration of `routh simulate` on the run's case (the same
-    /// numbers, bit for bit), the turning points along it, and the quadrature when the body
-    /// is a Routh sphere. A failure (or a panic) becomes a row with status `failed`.
+    /// numbers, bit for bit), the turning points along it and the quadrature when the body
+    /// is a Routh sphere, each when its columns are asked for. A failure (or a panic) becomes
+    /// a row with status `failed`.
     pub fn run(&self, k: u64) -> Row {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let (case, body, x0) = self.start(k)?;
-            let mut turning = TurningPoints::new(&body, &x0);
+            let mut turning = self.turning_points(&body, &x0);
             let observed = integrate_observed(
                 &body,
                 &ReducedSystem(&body),
@@ -416,10 +456,15 @@ impl Sweep {
                 &self.settings,
                 None,
                 &mut |_, _| Ok::<_, AppError>(()),
-                &mut |step| turning.observe(step),
+                &mut |step| {
+                    if let Some(turning) = turning.as_mut() {
+                        turning.observe(step);
+                    }
+                },
             )?;
             let summary = observed.summary()?;
-            Ok::<_, AppError>(self.finished(k, &body, &case, summary, turning.summary()))
+            let events = turning.map(|t| t.summary());
+            Ok::<_, AppError>(self.finished(k, &body, &case, summary, events))
         }));
         match attempt {
             Ok(Ok(row)) => row,

@@ -25,7 +25,8 @@
 //! initial gamma becomes (sin tilt, 0, cos tilt)); `spin` (omega3); `omega1`, `omega2`,
 //! `omega3`; `gamma1`, `gamma2`, `gamma3`. The initial omega components need a case whose
 //! `[initial]` gives `omega` (not `M`). Axes are taken in the order of their keys sorted as
-//! text, which is also the order of their columns.
+//! text, which is also the order of their columns. The key `columns = [...]`, the columns of
+//! the table, is [`super::columns`]'s.
 
 use serde::Deserialize;
 
@@ -341,7 +342,7 @@ impl Spec {
                 key,
                 value,
                 "unknown key: expected body.m, body.R, body.a, body.I1, body.I2, body.I3, \
-                 body.G, tilt, spin, omega1..3, gamma1..3, samples, design or seed",
+                 body.G, tilt, spin, omega1..3, gamma1..3, samples, design, seed or columns",
             )
         })?;
         let t: AxisTable = value.clone().try_into().map_err(|e: toml::de::Error| {

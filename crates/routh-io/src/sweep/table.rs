@@ -118,6 +118,33 @@ pub fn not_this_sweep(path: &Path, why: impl std::fmt::Display) -> AppError {
     .into()
 }
 
+/// The error for a file whose columns `found` are not the columns `asked` of this sweep,
+/// naming those in one and not in the other (the columns are chosen by `--columns` or the
+/// `[sweep]` key `columns`, so a file is resumed with the columns it was written with).
+pub fn other_columns(path: &Path, found: &[String], asked: &[String]) -> AppError {
+    let missing = |from: &[String], of: &[String]| -> String {
+        let names: Vec<&str> = from
+            .iter()
+            .filter(|n| !of.contains(n))
+            .map(String::as_str)
+            .collect();
+        if names.is_empty() {
+            "none".into()
+        } else {
+            names.join(", ")
+        }
+    };
+    not_this_sweep(
+        path,
+        format!(
+            "its columns are not those asked for (the file's only: {}; asked for only: {}): \
+             resume with the columns it was written with (--columns, or `columns` in [sweep])",
+            missing(found, asked),
+            missing(asked, found)
+        ),
+    )
+}
+
 /// Check that `values` (the swept values and settings read from row `run` of an existing
 /// file) are those of run `run` of `sweep`, bit for bit.
 pub fn check_resumed_row(sweep: &Sweep, path: &Path, run: u64, values: &[f64]) -> Result<()> {
