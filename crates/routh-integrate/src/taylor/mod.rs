@@ -426,8 +426,8 @@ mod tests {
         let rule = SeriesRule::new(1e-12, 1e-6, 40);
         assert_ne!(rule.order(1.0), rule.order(1e9));
         assert_ne!(
-            rule.step(14, 1.0, 1.0, 1.0).to_bits(),
-            rule.step(14, 1e9, 1.0, 1.0).to_bits()
+            rule.step(14, 1.0, 1.0, 1.0, &Scales::<1>::one()).to_bits(),
+            rule.step(14, 1e9, 1.0, 1.0, &Scales::<1>::one()).to_bits()
         );
     }
 }
