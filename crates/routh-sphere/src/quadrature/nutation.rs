@@ -172,6 +172,10 @@ pub struct Nutation {
     work: Work,
     /// Phase sigma of the initial state.
     sigma0: f64,
+    /// The size of M (dimensionless) against which the relative error of M is measured: that
+    /// of the initial state, or the largest along the nutation for a start at rest in f64
+    /// (see `Nutation::new`).
+    momentum_scale: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
     /// `c_p = p N(p) f(p) / (2 A R)` of the part of `dpsi/dsigma` singular there (that of
     /// `dphi/dsigma` is `-p c_p`; see `pole_angles`).
@@ -330,6 +334,11 @@ fn axis_rate(body: &Body, state: &State) -> Option<f64> {
     (horizontal > 0.0).then(|| -(omega[0] * gamma[0] + omega[1] * gamma[1]) / horizontal)
 }
 
+/// The Euclidean norm, without underflow or overflow of the squares of its components.
+fn norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |n, &c| n.hypot(c))
+}
+
 /// A turning point u of Q and its distance `gap = 1 - |u|` from the pole on its side, found
 /// in that variable near the pole: there u itself carries an absolute rounding of `eps`,
 /// a relative error `eps / gap` of `1 - |u|`, which the poles of `dpsi/dt` at `u = +-1`
@@ -357,6 +366,19 @@ struct Turnings {
 
 /// Below this distance from a pole a turning point is refined in the distance itself.
 const NEAR_POLE: f64 = 1.0 / 8.0;
+/// Below this distance `x = 1 - |u|` from its pole a turning point is the pole: the motion
+/// passes the axis at the angle `theta_min = sqrt(2 x)`, here `eps^2`, and its Jellett remainder
+/// `n_p`, of order `A R theta_min` times the rate of the tilt, adds to `omega_t` a part
+/// `n_p / (A R sin theta)` that is below `eps` of that rate (times the bounded ratio
+/// `sqrt((A + m h_p^2) / A)`, at most 1e5 where `omega_round_off` accepts the body) wherever
+/// `sin theta > eps`, i.e. except within the time `eps T` of the passage, the resolution of the
+/// phase itself: the motion through the axis is then the same state in f64. Above it the gap
+/// and `1 / gap` stay far inside the normal range. Below it they did not: a state nearly at
+/// rest (M of 1e-160 in the problem's units, gamma horizontal) fell past the bottom pole at a
+/// gap of 3.2e-315, a subnormal number with 29 significant bits, and the closed form of the
+/// pole's part of psi (`Nutation::pole_angles`) divided by it: `1 / gap` overflowed, and
+/// `inf * 0` made the advance and every state NaN. A distance in x, a cosine: dimensionless.
+const AXIS_GAP: f64 = 0.5 * (f64::EPSILON * f64::EPSILON) * (f64::EPSILON * f64::EPSILON);
 
 /// The distance `x0 = 1 - p gamma3` of gamma from the pole p, from the horizontal part of
 /// gamma in p's own hemisphere (where `1 - p gamma3` would round x0 to `eps` absolute).
@@ -703,27 +725,13 @@ impl ExactSolution {
         // `velocity dt`; an error of psi rotates its horizontal part. Both vary along the
         // nutation: their largest values at the turning points, the quarter phases and the
         // widest tilt are taken.
-        let size = |v: &[f64]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
-        let widest = (0.5 * (u1 + u2) / (0.5 * width)).clamp(-1.0, 1.0).acos();
-        let states = [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0].map(|sigma| {
-            let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
-            State {
-                gamma,
-                m: body.angular_momentum(&gamma, &omega),
-            }
-            .to_array()
-        });
-        // A start at rest (M = 0) has no size of M of its own: then the largest along the
-        // nutation, the scale of M in this motion.
-        let m_size = match size(&initial.m) {
-            start if start > 0.0 => start,
-            _ => states.iter().map(|x| size(&x[3..])).fold(0.0, f64::max),
-        };
+        let states = nutation.probes();
+        let m_size = nutation.momentum_scale;
         let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
         for x in &states {
             let field = vector_field(body, x);
-            velocity = velocity.max(size(&field[..3]) + size(&field[3..]) / m_size);
-            horizontal = horizontal.max(size(&x[..2]) + size(&x[3..5]) / m_size);
+            velocity = velocity.max(norm(&field[..3]) + norm(&field[3..]) / m_size);
+            horizontal = horizontal.max(norm(&x[..2]) + norm(&x[3..5]) / m_size);
         }
         let period = nutation.cycle();
         let per_period =
@@ -894,13 +902,14 @@ struct Phase {
 
 impl Turning {
     /// The pole itself when the turning point is the pole (a motion through the axis,
-    /// `N(p) = 0`). The gap of a turning point near the pole is found in the frame of the pole,
-    /// to its relative round-off however small: a motion that passes at 1e-6 rad from the axis
-    /// near the unstable vertical spin (a gap of 5e-13) is not one through the axis, and
-    /// taking it for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an
-    /// error that the instability amplifies to O(1) at t = 20.
+    /// `N(p) = 0`), or passes it closer than f64 can tell from one through it (`AXIS_GAP`).
+    /// The gap of a turning point near the pole is found in the frame of the pole, to its
+    /// relative round-off however small: a motion that passes at 1e-6 rad from the axis near
+    /// the unstable vertical spin (a gap of 5e-13) is not one through the axis, and taking it
+    /// for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an error that
+    /// the instability amplifies to O(1) at t = 20.
     fn snapped(self, pole: f64) -> Self {
-        if self.gap == 0.0 {
+        if self.gap < AXIS_GAP {
             Turning { u: pole, gap: 0.0 }
         } else {
             self
@@ -990,6 +999,7 @@ impl Nutation {
                 .map(|(pole, gap)| red.q_scales_in_frame(pole, gap).1),
             work: Work::default(),
             sigma0: 0.0,
+            momentum_scale: 0.0,
             psi_ref: 0.0,
             poles: vec![],
         };
@@ -1083,24 +1093,57 @@ impl Nutation {
             sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
         }
         nut.sigma0 = sigma0;
+        // A start whose M is within the round-off of the largest M along the nutation (a
+        // state nearly at rest: M of 1e-160 beside the 1 it reaches as it falls) is at rest
+        // in f64: no state of the motion resolves the digits of its M, which the phase's
+        // round-off alone moves by `eps` of that largest M. Its relative errors are measured
+        // against the scale of M in the motion, as for a start at rest (M = 0), not against
+        // its own M, against which the state at t = 0 was 1e141 off.
+        let largest = nut
+            .probes()
+            .iter()
+            .map(|x| norm(&x[3..]))
+            .fold(0.0, f64::max);
+        let start = norm(&initial.m);
+        let at_rest = !(start > f64::EPSILON * largest);
+        nut.momentum_scale = if at_rest { largest } else { start };
         // psi_ref: the rotation about e3 that takes the state of phase sigma0 at psi = 0 to
         // the initial state, fitted on the horizontal parts of gamma and of omega / |omega|
         // (so it is defined on the axis too, where gamma has no horizontal part; a start at
-        // rest fits gamma alone).
+        // rest fits gamma alone). Each omega is divided by |omega| before the products: its
+        // square underflowed for that start, and `1 / |omega|^2` overflowed.
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
-        let omega = initial.omega(red.body());
-        let w2: f64 = omega.iter().map(|w| w * w).sum();
-        let weight = if w2 > 0.0 { w2.recip() } else { 0.0 };
-        let cross_dot = |a: [f64; 3], b: [f64; 3], w: f64| {
-            (
-                w * (a[0] * b[1] - a[1] * b[0]),
-                w * (a[0] * b[0] + a[1] * b[1]),
-            )
+        let cross_dot =
+            |a: [f64; 3], b: [f64; 3]| (a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
+        let (y1, x1) = cross_dot(model_gamma, initial.gamma);
+        let (y2, x2) = if at_rest {
+            (0.0, 0.0)
+        } else {
+            let omega = initial.omega(red.body());
+            let unit = |v: [f64; 3]| v.map(|c| c / norm(&omega));
+            cross_dot(unit(model_omega), unit(omega))
         };
-        let (y1, x1) = cross_dot(model_gamma, initial.gamma, 1.0);
-        let (y2, x2) = cross_dot(model_omega, omega, weight);
         nut.psi_ref = (y1 + y2).atan2(x1 + x2);
         Ok(nut)
+    }
+
+    /// The states (as `[gamma, M]`) of the nutation at its turning points, its quarter phases,
+    /// its widest tilt (gamma3 = 0, or the turning point nearest to it) and the initial phase,
+    /// at psi = 0: where the speed of the state and the sizes of M and of its horizontal parts
+    /// are largest, and the start.
+    fn probes(&self) -> [[f64; 6]; 6] {
+        let (u1, u2) = (self.u1, self.u2);
+        let widest = (0.5 * (u1 + u2) / (0.5 * self.width))
+            .clamp(-1.0, 1.0)
+            .acos();
+        [0.0, 0.5 * PI, PI, 1.5 * PI, widest, self.sigma0].map(|sigma| {
+            let (gamma, omega) = self.gamma_omega(sigma, 0.0);
+            State {
+                gamma,
+                m: self.reduction.body().angular_momentum(&gamma, &omega),
+            }
+            .to_array()
+        })
     }
 
     /// `P(u) = Q(u) / ((u - u1)(u2 - u))` as minus the second divided difference
