@@ -27,7 +27,7 @@ use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::gauss::{bernstein_rho, GaussLegendre};
 use crate::quadrature::panels::{Piecewise, Sample};
-use crate::quadrature::reduction::{frame_index, Reduction};
+use crate::quadrature::reduction::{frame_index, omega_round_off, Reduction};
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use crate::units::Units;
@@ -370,7 +370,7 @@ const NEAR_POLE: f64 = 1.0 / 8.0;
 /// passes the axis at the angle `theta_min = sqrt(2 x)`, here `eps^2`, and its Jellett remainder
 /// `n_p`, of order `A R theta_min` times the rate of the tilt, adds to `omega_t` a part
 /// `n_p / (A R sin theta)` that is below `eps` of that rate (times the bounded ratio
-/// `sqrt((A + m h_p^2) / A)`, at most 1e5 where `omega_round_off` accepts the body) wherever
+/// `sqrt((A + m h_p^2) / A)`, at most 1e5 where [`omega_round_off`] accepts the body) wherever
 /// `sin theta > eps`, i.e. except within the time `eps T` of the passage, the resolution of the
 /// phase itself: the motion through the axis is then the same state in f64. Above it the gap
 /// and `1 / gap` stay far inside the normal range. Below it they did not: a state nearly at
@@ -516,20 +516,6 @@ fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64) {
     (residual / (jac.norm() * size), omega)
 }
 
-/// The relative error with which a state fixes its angular velocity, `omega = I_Q^-1 M`
-/// (om-m): `eps` times the condition number of `I_Q = I + m (|r|^2 - r r^T)`, whose
-/// eigenvalues lie between `min(I1, I3)` and `max(I1, I3) + m |r|^2` (a ratio of moments:
-/// the same in any units). About 5 eps for the default body; 2.8e-9 with m = 3e6 (the state
-/// fixes the spin about r, `(I omega, r) / |r|`, only to the rounding of the much larger
-/// `m |r|^2 |omega|`), and more than 1 with m = 1e30, where omega computed from M came out
-/// [-1.62, 0.2, -1.01] for the case's (0.5, 0.2, 8).
-fn omega_round_off(body: &Body, state: &State) -> f64 {
-    let r = body.contact_vector(&state.gamma);
-    let r2: f64 = r.iter().map(|c| c * c).sum();
-    let (smallest, largest) = (body.i1().min(body.i3()), body.i1().max(body.i3()));
-    f64::EPSILON * (largest + body.m() * r2) / smallest
-}
-
 impl ExactSolution {
     /// Solve the motion through `initial` by quadrature (body with I1 = I2).
     ///
@@ -590,7 +576,8 @@ impl ExactSolution {
             });
         }
         let red = Reduction::of_state(body, initial)?;
-        let (_, errors) = red.frames_of_state(initial);
+        // Its error of omega (`conditioning`) is counted in the drift of the estimate.
+        let (_, errors) = red.frames_of_state(initial, 0.0);
         let u0 = initial.gamma[2];
         let steady = |u: f64, precession: f64, accuracy: Accuracy| {
             let initial = *initial;
