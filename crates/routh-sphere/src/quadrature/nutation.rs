@@ -38,15 +38,20 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// set that needs more lies within
 /// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
 /// Bisection toward a near-singularity at distance epsilon costs about
-/// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
-const SAMPLE_BUDGET: usize = 6400;
+/// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30. In the fuzz
+/// build (`cfg(fuzzing)`) a tenth (see `WORK_BUDGET`).
+const SAMPLE_BUDGET: usize = if cfg!(fuzzing) { 640 } else { 6400 };
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
 /// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
 /// to R and a large m) every sample bisects toward it, and with the sample budget that took
-/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample.
-const WORK_BUDGET: usize = 100_000;
+/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample. In the fuzz build
+/// (`cfg(fuzzing)`, set by `cargo fuzz`) 2,000 pieces, about 5 ms, and a tenth of the samples:
+/// the inputs that exhaust the budgets are refused sooner, by the same code, and the fuzz
+/// target `numerics_exact` runs at the speed of ordinary motions instead of spending most of
+/// its time on them (docs/reliability.md, Fuzzing).
+const WORK_BUDGET: usize = if cfg!(fuzzing) { 2_000 } else { 100_000 };
 /// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
 /// (accurate over long intervals), below it from the second derivative (no cancellation). A
 /// width in `u = gamma3`, a cosine: dimensionless.
