@@ -1615,6 +1615,51 @@ mod exact_near_rest {
         assert!(distance(&turned, &later) > 0.1);
     }
 
+    /// The timeout the `numerics_exact` fuzz target found next (`timeout-25e242b7...`, run alone
+    /// it did not end): gamma = (-1.03e16, 9.81, -5.26e173) rescaled to (-2e-158, 2e-173, -1),
+    /// a start 1.9e-316 from the bottom pole in `x = 1 + gamma3`, whose search for the turning
+    /// points stepped by `1e-8 x` = 0 (underflow) and never moved. Now a start within `AXIS_GAP`
+    /// (1.2e-63) of the pole is searched from the pole: the motion (omega = (-0.048, 1, 2.5e-304):
+    /// the ball rolls over) passes through both poles, in 2.5 ms. Tolerances as above.
+    #[test]
+    fn fuzz_timeout_start_a_subnormal_distance_from_the_pole_is_solved() {
+        let body = Body::new(
+            0.09999999999999998,
+            0.09999694824236938,
+            0.028627450980457048,
+            1.0,
+            1.0,
+            1.0,
+            1.0,
+        )
+        .unwrap();
+        let x0 = State::from_omega(
+            &body,
+            [-1.0278803855410308e16, 9.81, -5.255279918644342e173],
+            [-0.04823529411764707, 1.0, 2.5067199836690693e-304],
+            Normalise::Rescale,
+        )
+        .unwrap();
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let Motion::Nutation(nutation) = &exact.motion else {
+            panic!("a nutation expected, got {:?}", exact.motion);
+        };
+        assert!(
+            nutation.through_top && nutation.through_bottom,
+            "{nutation:?}"
+        );
+        let at_zero = exact.state_at(0.0);
+        for i in 0..3 {
+            assert!(
+                (at_zero.gamma[i] - x0.gamma[i]).abs() <= 16.0 * f64::EPSILON,
+                "{at_zero:?}"
+            );
+        }
+        for t in [1.0, 5.0] {
+            agrees_with_dop853("start 1.9e-316 from the pole", &body, &x0, &exact, t);
+        }
+    }
+
     /// Neighbours of the fuzzer's input: gamma exactly horizontal or with subnormal
     /// components, M exactly 0, subnormal, or of 1e-300, in either direction of gamma: each is
     /// solved and agrees with DOP853 within the estimate (as above), and the same state at rest

@@ -413,7 +413,10 @@ fn pole_of_hemisphere(gamma: &[f64; 3]) -> f64 {
 /// in the distance from that pole.
 fn turning_points(red: &Reduction, pole: f64, x0: f64) -> Result<Turnings> {
     let q = |x: f64| red.q_from_pole(pole, x);
-    let first_step = if x0 > 0.0 {
+    // A start closer to the pole than `AXIS_GAP` is on the axis in f64, and searched from
+    // there: the step relative to x0 underflowed to 0 for a start at x0 = 1.9e-316 (a fuzz
+    // input), and the search never moved.
+    let first_step = if x0 > AXIS_GAP {
         FIRST_SEARCH_STEP * x0.min(1.0)
     } else {
         FIRST_SEARCH_STEP * FIRST_SEARCH_STEP
