@@ -1660,6 +1660,42 @@ mod exact_near_rest {
         }
     }
 
+    /// The crash the `numerics_exact` fuzz target found next (`crash-6d7bf1b5...`: "period inf"):
+    /// m = 1.3e-321, R = 8.6e9, I = 1, no gravity, gamma horizontal, omega = (2.2e-308, 0, 0)
+    /// across it: the ball rolls over at the rate 2.2e-308, and its period 2 pi / |omega| =
+    /// 2.8e308 is beyond f64 (the dimensionless period, 2 pi, times the unit of time, 4.5e307).
+    /// Now refused with that cause. Negative control: the same motion spinning 1e8 times faster
+    /// is solved, with the period `2 pi / |omega|` of the free isotropic ball (the mass is
+    /// 1e-301 of I / R^2) to 1e-12.
+    #[test]
+    fn fuzz_crash_period_beyond_f64_is_refused_with_its_cause() {
+        let body = Body::new(1.265e-321, 8589934592.0, 1.0, 1.0, 1.0, 1.0, 0.0).unwrap();
+        let start = |spin: f64| {
+            State::from_omega(
+                &body,
+                [-1.7074873093401245e-286, 7.418415965917065e-68, 0.0],
+                [spin, 0.0, 0.0],
+                Normalise::Rescale,
+            )
+            .unwrap()
+        };
+        let refusal = ExactSolution::new(&body, &start(f64::MIN_POSITIVE)).unwrap_err();
+        assert!(
+            matches!(refusal, routh::RouthError::Overflow { quantity, .. } if quantity == "the nutation period"),
+            "{refusal}"
+        );
+        let spin = 1e8 * f64::MIN_POSITIVE;
+        let period = ExactSolution::new(&body, &start(spin))
+            .unwrap()
+            .period()
+            .unwrap();
+        let expected = std::f64::consts::TAU / spin;
+        assert!(
+            (period / expected - 1.0).abs() < 1e-12,
+            "{period:e} {expected:e}"
+        );
+    }
+
     /// Neighbours of the fuzzer's input: gamma exactly horizontal or with subnormal
     /// components, M exactly 0, subnormal, or of 1e-300, in either direction of gamma: each is
     /// solved and agrees with DOP853 within the estimate (as above), and the same state at rest

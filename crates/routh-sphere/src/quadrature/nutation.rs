@@ -1048,6 +1048,22 @@ impl Nutation {
         nut.nodes = series.nodes;
         let period = series.full_integral(0);
         nut.period = period * units.time();
+        if !nut.period.is_finite() {
+            // The period in the problem's units is beyond f64 (a fuzz input: no gravity, a
+            // spin of 2.2e-308 rad/s, whose period 6.3 T is 2.8e308 s), and so is every time
+            // of the motion: refused with its cause, not answered with an infinite period.
+            return Err(RouthError::Overflow {
+                cause: format!(
+                    "the slowness of the motion (its unit of time T = {:e}, the faster of the \
+                     fall sqrt(R / G) and the spin 1 / |omega|, times the period {period:e} in \
+                     units of T)",
+                    units.time()
+                ),
+                quantity: "the nutation period",
+                direction: "overflow",
+                value: nut.period,
+            });
+        }
         let [psi_poles, phi_poles] = nut.pole_angles(TAU);
         nut.advance = series.full_integral(1) + psi_poles;
         // The series follow the continuation with a signed sin theta through a pole, where the
