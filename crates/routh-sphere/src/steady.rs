@@ -43,6 +43,7 @@ use crate::body::Body;
 use crate::differential::jacobian;
 use crate::error::{Result, RouthError};
 use crate::field::vector_field;
+use crate::quadrature::reduction::omega_round_off;
 use crate::quadrature::Reduction;
 use crate::state::{Normalise, State};
 use crate::units::Units;
@@ -108,8 +109,8 @@ impl Decision {
 pub struct Verdict {
     /// Stable, unstable or undecided.
     pub decision: Decision,
-    /// `|Q''|` at most this is within its round-off: its sign decides nothing
-    /// ([`CURVATURE_EPSILONS`]).
+    /// `|Q''|` at most this is within its accuracy: its sign decides nothing
+    /// ([`curvature_accuracy`]).
     pub q_accuracy: f64,
     /// Real parts at most this count as zero ([`EIGENVALUE_TOLERANCE`] times the norm of the
     /// linearisation): a growth rate below it is not seen by the eigenvalues.
@@ -394,10 +395,17 @@ fn motion_units(body: &Body, spin: f64) -> Result<Units> {
     }
 }
 
-/// The round-off of `Q''(u)` of `red`: [`CURVATURE_EPSILONS`] machine epsilons of the sum of
-/// the magnitudes of the second derivatives of its terms.
-pub fn curvature_accuracy(red: &Reduction, u: f64) -> f64 {
-    CURVATURE_EPSILONS * f64::EPSILON * red.q_curvature_scale(u)
+/// The accuracy of `Q''(u)` of `red` at `state` of `body` (`u = gamma3`): [`CURVATURE_EPSILONS`]
+/// machine epsilons of the sum of the magnitudes of the second derivatives of its terms, plus
+/// its change under the errors of the integrals that the state fixes
+/// ([`Reduction::q_curvature_moved`]), their round-off and that of omega, which the state fixes
+/// only to the conditioning of I_Q ([`omega_round_off`]): with I3 = 6.6e-5 (I1 = 0.03,
+/// m = R = 1) to 7.5e-12, which moved Q'' = 1.75e-3 of a steady precession 0.01 from a pole by
+/// 2.6e-12 between copies in other units, 30 times the round-off of its terms.
+pub fn curvature_accuracy(red: &Reduction, body: &Body, state: &State) -> f64 {
+    let u = state.gamma[2];
+    let (_, errors) = red.frames_of_state(state, omega_round_off(body, state));
+    CURVATURE_EPSILONS * f64::EPSILON * red.q_curvature_scale(u) + red.q_curvature_moved(u, errors)
 }
 
 /// The stability of the stationary motion `state` of the dimensionless `body` rotating at
@@ -416,7 +424,7 @@ fn stability(body: &Body, state: &State, precession: f64) -> Result<(Stability, 
             q2,
         )?;
     }
-    let q_accuracy = curvature_accuracy(&red, u);
+    let q_accuracy = curvature_accuracy(&red, body, state);
     let jacobian_norm = jacobian(|x| vector_field(body, x), &state.to_array())
         .1
         .norm();

@@ -95,7 +95,7 @@ impl RelativeEquilibrium {
         let red = value.reduction(body)?;
         let u = state.gamma[2];
         let q_second_derivative = red.q_derivatives(u).2;
-        let q_accuracy = curvature_accuracy(&red, u);
+        let q_accuracy = curvature_accuracy(&red, body, &state);
         Ok(RelativeEquilibrium {
             theta,
             value,

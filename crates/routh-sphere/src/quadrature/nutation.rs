@@ -27,7 +27,7 @@ use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::gauss::{bernstein_rho, GaussLegendre};
 use crate::quadrature::panels::{Piecewise, Sample};
-use crate::quadrature::reduction::{frame_index, Reduction};
+use crate::quadrature::reduction::{frame_index, omega_round_off, Reduction};
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use crate::units::Units;
@@ -38,15 +38,20 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// set that needs more lies within
 /// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
 /// Bisection toward a near-singularity at distance epsilon costs about
-/// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30.
-const SAMPLE_BUDGET: usize = 6400;
+/// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30. In the fuzz
+/// build (`cfg(fuzzing)`) a tenth (see `WORK_BUDGET`).
+const SAMPLE_BUDGET: usize = if cfg!(fuzzing) { 640 } else { 6400 };
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
 /// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
 /// to R and a large m) every sample bisects toward it, and with the sample budget that took
-/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample.
-const WORK_BUDGET: usize = 100_000;
+/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample. In the fuzz build
+/// (`cfg(fuzzing)`, set by `cargo fuzz`) 2,000 pieces, about 5 ms, and a tenth of the samples:
+/// the inputs that exhaust the budgets are refused sooner, by the same code, and the fuzz
+/// target `numerics_exact` runs at the speed of ordinary motions instead of spending most of
+/// its time on them (docs/reliability.md, Fuzzing).
+const WORK_BUDGET: usize = if cfg!(fuzzing) { 2_000 } else { 100_000 };
 /// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
 /// (accurate over long intervals), below it from the second derivative (no cancellation). A
 /// width in `u = gamma3`, a cosine: dimensionless.
@@ -172,6 +177,10 @@ pub struct Nutation {
     work: Work,
     /// Phase sigma of the initial state.
     sigma0: f64,
+    /// The size of M (dimensionless) against which the relative error of M is measured: that
+    /// of the initial state, or the largest along the nutation for a start at rest in f64
+    /// (see `Nutation::new`).
+    momentum_scale: f64,
     /// The poles `p = +-1` the motion does not pass through, each with the strength
     /// `c_p = p N(p) f(p) / (2 A R)` of the part of `dpsi/dsigma` singular there (that of
     /// `dphi/dsigma` is `-p c_p`; see `pole_angles`).
@@ -330,6 +339,11 @@ fn axis_rate(body: &Body, state: &State) -> Option<f64> {
     (horizontal > 0.0).then(|| -(omega[0] * gamma[0] + omega[1] * gamma[1]) / horizontal)
 }
 
+/// The Euclidean norm, without underflow or overflow of the squares of its components.
+fn norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |n, &c| n.hypot(c))
+}
+
 /// A turning point u of Q and its distance `gap = 1 - |u|` from the pole on its side, found
 /// in that variable near the pole: there u itself carries an absolute rounding of `eps`,
 /// a relative error `eps / gap` of `1 - |u|`, which the poles of `dpsi/dt` at `u = +-1`
@@ -357,6 +371,19 @@ struct Turnings {
 
 /// Below this distance from a pole a turning point is refined in the distance itself.
 const NEAR_POLE: f64 = 1.0 / 8.0;
+/// Below this distance `x = 1 - |u|` from its pole a turning point is the pole: the motion
+/// passes the axis at the angle `theta_min = sqrt(2 x)`, here `eps^2`, and its Jellett remainder
+/// `n_p`, of order `A R theta_min` times the rate of the tilt, adds to `omega_t` a part
+/// `n_p / (A R sin theta)` that is below `eps` of that rate (times the bounded ratio
+/// `sqrt((A + m h_p^2) / A)`, at most 1e5 where [`omega_round_off`] accepts the body) wherever
+/// `sin theta > eps`, i.e. except within the time `eps T` of the passage, the resolution of the
+/// phase itself: the motion through the axis is then the same state in f64. Above it the gap
+/// and `1 / gap` stay far inside the normal range. Below it they did not: a state nearly at
+/// rest (M of 1e-160 in the problem's units, gamma horizontal) fell past the bottom pole at a
+/// gap of 3.2e-315, a subnormal number with 29 significant bits, and the closed form of the
+/// pole's part of psi (`Nutation::pole_angles`) divided by it: `1 / gap` overflowed, and
+/// `inf * 0` made the advance and every state NaN. A distance in x, a cosine: dimensionless.
+const AXIS_GAP: f64 = 0.5 * (f64::EPSILON * f64::EPSILON) * (f64::EPSILON * f64::EPSILON);
 
 /// The distance `x0 = 1 - p gamma3` of gamma from the pole p, from the horizontal part of
 /// gamma in p's own hemisphere (where `1 - p gamma3` would round x0 to `eps` absolute).
@@ -386,7 +413,10 @@ fn pole_of_hemisphere(gamma: &[f64; 3]) -> f64 {
 /// in the distance from that pole.
 fn turning_points(red: &Reduction, pole: f64, x0: f64) -> Result<Turnings> {
     let q = |x: f64| red.q_from_pole(pole, x);
-    let first_step = if x0 > 0.0 {
+    // A start closer to the pole than `AXIS_GAP` is on the axis in f64, and searched from
+    // there: the step relative to x0 underflowed to 0 for a start at x0 = 1.9e-316 (a fuzz
+    // input), and the search never moved.
+    let first_step = if x0 > AXIS_GAP {
         FIRST_SEARCH_STEP * x0.min(1.0)
     } else {
         FIRST_SEARCH_STEP * FIRST_SEARCH_STEP
@@ -494,20 +524,6 @@ fn relative_equilibrium_residual(body: &Body, state: &State) -> (f64, f64) {
     (residual / (jac.norm() * size), omega)
 }
 
-/// The relative error with which a state fixes its angular velocity, `omega = I_Q^-1 M`
-/// (om-m): `eps` times the condition number of `I_Q = I + m (|r|^2 - r r^T)`, whose
-/// eigenvalues lie between `min(I1, I3)` and `max(I1, I3) + m |r|^2` (a ratio of moments:
-/// the same in any units). About 5 eps for the default body; 2.8e-9 with m = 3e6 (the state
-/// fixes the spin about r, `(I omega, r) / |r|`, only to the rounding of the much larger
-/// `m |r|^2 |omega|`), and more than 1 with m = 1e30, where omega computed from M came out
-/// [-1.62, 0.2, -1.01] for the case's (0.5, 0.2, 8).
-fn omega_round_off(body: &Body, state: &State) -> f64 {
-    let r = body.contact_vector(&state.gamma);
-    let r2: f64 = r.iter().map(|c| c * c).sum();
-    let (smallest, largest) = (body.i1().min(body.i3()), body.i1().max(body.i3()));
-    f64::EPSILON * (largest + body.m() * r2) / smallest
-}
-
 impl ExactSolution {
     /// Solve the motion through `initial` by quadrature (body with I1 = I2).
     ///
@@ -568,7 +584,8 @@ impl ExactSolution {
             });
         }
         let red = Reduction::of_state(body, initial)?;
-        let (_, errors) = red.frames_of_state(initial);
+        // Its error of omega (`conditioning`) is counted in the drift of the estimate.
+        let (_, errors) = red.frames_of_state(initial, 0.0);
         let u0 = initial.gamma[2];
         let steady = |u: f64, precession: f64, accuracy: Accuracy| {
             let initial = *initial;
@@ -703,27 +720,13 @@ impl ExactSolution {
         // `velocity dt`; an error of psi rotates its horizontal part. Both vary along the
         // nutation: their largest values at the turning points, the quarter phases and the
         // widest tilt are taken.
-        let size = |v: &[f64]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
-        let widest = (0.5 * (u1 + u2) / (0.5 * width)).clamp(-1.0, 1.0).acos();
-        let states = [0.0, 0.5 * PI, PI, 1.5 * PI, widest, nutation.sigma0].map(|sigma| {
-            let (gamma, omega) = nutation.gamma_omega(sigma, 0.0);
-            State {
-                gamma,
-                m: body.angular_momentum(&gamma, &omega),
-            }
-            .to_array()
-        });
-        // A start at rest (M = 0) has no size of M of its own: then the largest along the
-        // nutation, the scale of M in this motion.
-        let m_size = match size(&initial.m) {
-            start if start > 0.0 => start,
-            _ => states.iter().map(|x| size(&x[3..])).fold(0.0, f64::max),
-        };
+        let states = nutation.probes();
+        let m_size = nutation.momentum_scale;
         let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
         for x in &states {
             let field = vector_field(body, x);
-            velocity = velocity.max(size(&field[..3]) + size(&field[3..]) / m_size);
-            horizontal = horizontal.max(size(&x[..2]) + size(&x[3..5]) / m_size);
+            velocity = velocity.max(norm(&field[..3]) + norm(&field[3..]) / m_size);
+            horizontal = horizontal.max(norm(&x[..2]) + norm(&x[3..5]) / m_size);
         }
         let period = nutation.cycle();
         let per_period =
@@ -894,13 +897,14 @@ struct Phase {
 
 impl Turning {
     /// The pole itself when the turning point is the pole (a motion through the axis,
-    /// `N(p) = 0`). The gap of a turning point near the pole is found in the frame of the pole,
-    /// to its relative round-off however small: a motion that passes at 1e-6 rad from the axis
-    /// near the unstable vertical spin (a gap of 5e-13) is not one through the axis, and
-    /// taking it for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an
-    /// error that the instability amplifies to O(1) at t = 20.
+    /// `N(p) = 0`), or passes it closer than f64 can tell from one through it (`AXIS_GAP`).
+    /// The gap of a turning point near the pole is found in the frame of the pole, to its
+    /// relative round-off however small: a motion that passes at 1e-6 rad from the axis near
+    /// the unstable vertical spin (a gap of 5e-13) is not one through the axis, and taking it
+    /// for one (as when gaps below 1e-12 were snapped) puts its start 1e-6 off, an error that
+    /// the instability amplifies to O(1) at t = 20.
     fn snapped(self, pole: f64) -> Self {
-        if self.gap == 0.0 {
+        if self.gap < AXIS_GAP {
             Turning { u: pole, gap: 0.0 }
         } else {
             self
@@ -990,6 +994,7 @@ impl Nutation {
                 .map(|(pole, gap)| red.q_scales_in_frame(pole, gap).1),
             work: Work::default(),
             sigma0: 0.0,
+            momentum_scale: 0.0,
             psi_ref: 0.0,
             poles: vec![],
         };
@@ -1043,6 +1048,22 @@ impl Nutation {
         nut.nodes = series.nodes;
         let period = series.full_integral(0);
         nut.period = period * units.time();
+        if !nut.period.is_finite() {
+            // The period in the problem's units is beyond f64 (a fuzz input: no gravity, a
+            // spin of 2.2e-308 rad/s, whose period 6.3 T is 2.8e308 s), and so is every time
+            // of the motion: refused with its cause, not answered with an infinite period.
+            return Err(RouthError::Overflow {
+                cause: format!(
+                    "the slowness of the motion (its unit of time T = {:e}, the faster of the \
+                     fall sqrt(R / G) and the spin 1 / |omega|, times the period {period:e} in \
+                     units of T)",
+                    units.time()
+                ),
+                quantity: "the nutation period",
+                direction: "overflow",
+                value: nut.period,
+            });
+        }
         let [psi_poles, phi_poles] = nut.pole_angles(TAU);
         nut.advance = series.full_integral(1) + psi_poles;
         // The series follow the continuation with a signed sin theta through a pole, where the
@@ -1083,24 +1104,57 @@ impl Nutation {
             sigma0 = (udot0 * f / half).atan2(cos0).rem_euclid(TAU);
         }
         nut.sigma0 = sigma0;
+        // A start whose M is within the round-off of the largest M along the nutation (a
+        // state nearly at rest: M of 1e-160 beside the 1 it reaches as it falls) is at rest
+        // in f64: no state of the motion resolves the digits of its M, which the phase's
+        // round-off alone moves by `eps` of that largest M. Its relative errors are measured
+        // against the scale of M in the motion, as for a start at rest (M = 0), not against
+        // its own M, against which the state at t = 0 was 1e141 off.
+        let largest = nut
+            .probes()
+            .iter()
+            .map(|x| norm(&x[3..]))
+            .fold(0.0, f64::max);
+        let start = norm(&initial.m);
+        let at_rest = !(start > f64::EPSILON * largest);
+        nut.momentum_scale = if at_rest { largest } else { start };
         // psi_ref: the rotation about e3 that takes the state of phase sigma0 at psi = 0 to
         // the initial state, fitted on the horizontal parts of gamma and of omega / |omega|
         // (so it is defined on the axis too, where gamma has no horizontal part; a start at
-        // rest fits gamma alone).
+        // rest fits gamma alone). Each omega is divided by |omega| before the products: its
+        // square underflowed for that start, and `1 / |omega|^2` overflowed.
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
-        let omega = initial.omega(red.body());
-        let w2: f64 = omega.iter().map(|w| w * w).sum();
-        let weight = if w2 > 0.0 { w2.recip() } else { 0.0 };
-        let cross_dot = |a: [f64; 3], b: [f64; 3], w: f64| {
-            (
-                w * (a[0] * b[1] - a[1] * b[0]),
-                w * (a[0] * b[0] + a[1] * b[1]),
-            )
+        let cross_dot =
+            |a: [f64; 3], b: [f64; 3]| (a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
+        let (y1, x1) = cross_dot(model_gamma, initial.gamma);
+        let (y2, x2) = if at_rest {
+            (0.0, 0.0)
+        } else {
+            let omega = initial.omega(red.body());
+            let unit = |v: [f64; 3]| v.map(|c| c / norm(&omega));
+            cross_dot(unit(model_omega), unit(omega))
         };
-        let (y1, x1) = cross_dot(model_gamma, initial.gamma, 1.0);
-        let (y2, x2) = cross_dot(model_omega, omega, weight);
         nut.psi_ref = (y1 + y2).atan2(x1 + x2);
         Ok(nut)
+    }
+
+    /// The states (as `[gamma, M]`) of the nutation at its turning points, its quarter phases,
+    /// its widest tilt (gamma3 = 0, or the turning point nearest to it) and the initial phase,
+    /// at psi = 0: where the speed of the state and the sizes of M and of its horizontal parts
+    /// are largest, and the start.
+    fn probes(&self) -> [[f64; 6]; 6] {
+        let (u1, u2) = (self.u1, self.u2);
+        let widest = (0.5 * (u1 + u2) / (0.5 * self.width))
+            .clamp(-1.0, 1.0)
+            .acos();
+        [0.0, 0.5 * PI, PI, 1.5 * PI, widest, self.sigma0].map(|sigma| {
+            let (gamma, omega) = self.gamma_omega(sigma, 0.0);
+            State {
+                gamma,
+                m: self.reduction.body().angular_momentum(&gamma, &omega),
+            }
+            .to_array()
+        })
     }
 
     /// `P(u) = Q(u) / ((u - u1)(u2 - u))` as minus the second divided difference

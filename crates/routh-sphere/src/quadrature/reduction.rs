@@ -47,7 +47,9 @@ use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
-use num_dual::{first_derivative, second_derivative, second_partial_derivative};
+use num_dual::{
+    first_derivative, second_derivative, second_partial_derivative, third_partial_derivative_vec,
+};
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
 /// `g^2 >= A C`, `g''` stays below about `(m R^2)^2 / (A C)^(3/2)`, i.e. 1e180 (m R^2)^-1 at
@@ -58,6 +60,20 @@ const MIN_MOMENT_RATIO: f64 = 1e-60;
 /// estimated, not bounded: a few epsilons per sum of terms, errors of independent samples
 /// adding in quadrature (docs/quadrature.md, section 5).
 pub const INTEGRAL_EPSILONS: f64 = 2.0;
+
+/// The relative error with which a state fixes its angular velocity, `omega = I_Q^-1 M`
+/// (om-m): `eps` times the condition number of `I_Q = I + m (|r|^2 - r r^T)`, whose
+/// eigenvalues lie between `min(I1, I3)` and `max(I1, I3) + m |r|^2` (a ratio of moments:
+/// the same in any units). About 5 eps for the default body; 2.8e-9 with m = 3e6 (the state
+/// fixes the spin about r, `(I omega, r) / |r|`, only to the rounding of the much larger
+/// `m |r|^2 |omega|`), and more than 1 with m = 1e30, where omega computed from M came out
+/// [-1.62, 0.2, -1.01] for the case's (0.5, 0.2, 8).
+pub fn omega_round_off(body: &Body, state: &State) -> f64 {
+    let r = body.contact_vector(&state.gamma);
+    let r2: f64 = r.iter().map(|c| c * c).sum();
+    let (smallest, largest) = (body.i1().min(body.i3()), body.i1().max(body.i3()));
+    f64::EPSILON * (largest + body.m() * r2) / smallest
+}
 
 /// The sum of the terms.
 fn sum<D: Scalar>(terms: [D; 5]) -> D {
@@ -209,7 +225,7 @@ impl Reduction {
             jellett(body, &x),
             routh_integral(body, &x),
         )?;
-        let (frames, _) = red.frames_of_state(state);
+        let (frames, _) = red.frames_of_state(state, 0.0);
         red.frames = frames;
         Ok(red)
     }
@@ -300,8 +316,11 @@ impl Reduction {
     /// ```
     ///
     /// with `x0 = 1 - p gamma3` taken from the horizontal part of gamma near the pole,
-    /// `(gamma1^2 + gamma2^2) / (1 + p gamma3)`.
-    pub fn frames_of_state(&self, state: &State) -> ([PoleFrame; 2], [f64; 5]) {
+    /// `(gamma1^2 + gamma2^2) / (1 + p gamma3)`. With `omega_error` > 0, the relative error of
+    /// omega from the state ([`omega_round_off`]), the errors hold its propagation too: it
+    /// moves the terms linear in omega (K, `n_p`) by that fraction and those quadratic in
+    /// omega (the kinetic and spin terms of `e_p`) by twice it.
+    pub fn frames_of_state(&self, state: &State, omega_error: f64) -> ([PoleFrame; 2], [f64; 5]) {
         let b = &self.body;
         let gamma = state.gamma;
         let omega = state.omega(b);
@@ -325,7 +344,8 @@ impl Reduction {
             excess: 0.0,
         }; 2];
         let mut errors = [
-            e * (self.k.abs() + self.routh_g(gamma[2]) * omega[2].abs()),
+            e * (self.k.abs() + self.routh_g(gamma[2]) * omega[2].abs())
+                + omega_error * self.k.abs(),
             0.0,
             0.0,
             0.0,
@@ -347,9 +367,10 @@ impl Reduction {
                 remainder: tangential - shift,
                 excess: kinetic + rolling - lift - spin_change,
             };
-            errors[1 + 2 * i] = e * (tangential_noise + shift.abs());
-            errors[2 + 2 * i] =
-                e * (kinetic + rolling + lift.abs() + spin_change.abs()) + e * rolling_noise;
+            errors[1 + 2 * i] = (e + omega_error) * (tangential_noise + shift.abs());
+            errors[2 + 2 * i] = e * (kinetic + rolling + lift.abs() + spin_change.abs())
+                + e * rolling_noise
+                + 2.0 * omega_error * (kinetic + rolling + spin_change.abs());
         }
         (frames, errors)
     }
@@ -528,6 +549,28 @@ impl Reduction {
             })
             .sum();
         f64::EPSILON * self.q_slope_scale(u) + moved
+    }
+
+    /// How far the absolute errors `integral_errors` of the parameters
+    /// `[K, n_top, e_top, n_bottom, e_bottom]` ([`Reduction::frames_of_state`], with the error
+    /// of omega from the state or without) move `Q''(u)`: `sum |d3Q/du2 dp_i| err_i` (by
+    /// automatic differentiation, twice in u and once in each parameter), as
+    /// [`Reduction::q_slope_noise`] does for `Q'`.
+    pub fn q_curvature_moved(&self, u: f64, integral_errors: [f64; 5]) -> f64 {
+        let values = self.parameters();
+        let at: Vec<f64> = std::iter::once(u).chain(values).collect();
+        (0..5)
+            .map(|i| {
+                let (.., mixed) = third_partial_derivative_vec(
+                    |x| sum(self.q_terms_at(x[0], std::array::from_fn(|j| x[1 + j]))),
+                    &at,
+                    0,
+                    0,
+                    1 + i,
+                );
+                mixed.abs() * integral_errors[i]
+            })
+            .sum()
     }
 
     /// `Q(u)`, `Q'(u)`, `Q''(u)` by automatic differentiation.
