@@ -27,6 +27,7 @@ pub fn python_error(e: impl Into<AppError>) -> PyErr {
             | RouthError::NotSymmetric { .. }
             | RouthError::OffAxis { .. }
             | RouthError::Horizon { .. }
+            | RouthError::Unresolved { .. }
             | RouthError::Overflow { .. }
             | RouthError::State(_)
             | RouthError::Option { .. }

@@ -99,6 +99,16 @@ pub enum RouthError {
         /// The estimated relative error at t.
         error: f64,
     },
+    /// A state that the quadrature cannot resolve at all: its estimated error is above the
+    /// tolerance already at t = 0 (the turning points, the period or the start are
+    /// conditioned beyond what f64 resolves for this state).
+    #[error("the quadrature cannot resolve this state: its estimated relative error is {error:e} already at t = 0, above {tolerance:e} (its turning points, period or start are conditioned beyond what f64 resolves; integrate it with `routh simulate` instead)")]
+    Unresolved {
+        /// The tolerance.
+        tolerance: f64,
+        /// The estimated relative error at t = 0.
+        error: f64,
+    },
     /// A parameter or a state beyond the range of f64 for a quantity of the model.
     #[error("{cause} makes {quantity} {direction} (value {value:e})")]
     Overflow {

@@ -1753,3 +1753,39 @@ mod exact_near_rest {
         }
     }
 }
+
+mod exact_unresolved {
+    //! A state whose estimated error is above the refusal already at t = 0 is refused with that
+    //! cause (`RouthError::Unresolved`), not as a time beyond a horizon of 0: the fuzzer's body
+    //! nearly at rest with M = 1e-10 (estimated 2.7e-4 at t = 0).
+
+    use routh::body::Body;
+    use routh::quadrature::ExactSolution;
+    use routh::state::{Normalise, State};
+    use routh::RouthError;
+
+    #[test]
+    fn a_state_unresolved_at_the_start_is_refused_with_that_cause() {
+        let body = Body::new(0.1, 0.1, 0.0609375, 607.84, 607.84, 607.84, 607.84).unwrap();
+        let x0 = State::new([-1.0, 0.0, 0.0], [0.0, 1e-10, 1e-10], Normalise::Reject).unwrap();
+        let exact = ExactSolution::new(&body, &x0).unwrap();
+        let initial = exact.accuracy.error_at(0.0);
+        assert!(initial > 1e-6, "estimate {initial:e} at t = 0");
+        match exact.accuracy.checked_error_at(1.0) {
+            Err(RouthError::Unresolved { error, .. }) => {
+                assert_eq!(error, initial);
+                let message = RouthError::Unresolved {
+                    tolerance: 1e-6,
+                    error,
+                }
+                .to_string();
+                assert!(message.contains("already at t = 0"), "{message}");
+            }
+            other => panic!("{other:?} with the estimate {initial:e} at t = 0"),
+        }
+        // The control: the same body at a resolvable state answers.
+        let resolved = State::new([-1.0, 0.0, 0.0], [0.0, 1.0, 1.0], Normalise::Reject).unwrap();
+        let exact = ExactSolution::new(&body, &resolved).unwrap();
+        assert!(exact.accuracy.checked_error_at(1.0).is_ok());
+    }
+}

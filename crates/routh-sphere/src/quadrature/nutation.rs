@@ -265,10 +265,16 @@ impl Accuracy {
     pub const REFUSAL: f64 = 1e-6;
 
     /// The estimated relative error at `t`, or `RouthError::Horizon` if it exceeds
-    /// [`Accuracy::REFUSAL`].
+    /// [`Accuracy::REFUSAL`] (`RouthError::Unresolved` if it does so already at t = 0).
     pub fn checked_error_at(&self, t: f64) -> Result<f64> {
         let error = self.error_at(t);
-        if error <= Self::REFUSAL {
+        let initial = self.error_at(0.0);
+        if initial > Self::REFUSAL {
+            Err(RouthError::Unresolved {
+                tolerance: Self::REFUSAL,
+                error: initial,
+            })
+        } else if error <= Self::REFUSAL {
             Ok(error)
         } else {
             Err(RouthError::Horizon {
