@@ -2043,11 +2043,10 @@ mod units {
                         if method == Method::Taylor {
                             // The same steps; the states within the runs' error (module docs).
                             let p = Units::of(&body, &x.omega(&body)).momentum();
-                            for i in 0..3 {
-                                let (g, g0) =
-                                    (copy.final_state.gamma[i], reference.final_state.gamma[i]);
-                                let (m, m0) = (back[i] / p, reference.final_state.m[i] / p);
-                                let close = (g - g0).abs() <= 1e-9 && (m - m0).abs() <= 1e-9;
+                            let end = &reference.final_state;
+                            let pairs = copy.final_state.gamma.iter().zip(&end.gamma);
+                            for ((g, g0), (m, m0)) in pairs.zip(back.iter().zip(&end.m)) {
+                                let close = (g - g0).abs() <= 1e-9 && (m - m0).abs() / p <= 1e-9;
                                 assert!(close, "{context}: {g} {g0} {m} {m0}");
                             }
                             continue;
