@@ -964,7 +964,7 @@ mod exact_in_any_units {
     #[allow(dead_code)]
     use crate::sweep_cases as exact_sweep;
 
-    use exact_sweep::{distance, dop853_at};
+    use exact_sweep::{against_dop853, distance, dop853_at};
     use proptest::prelude::*;
     use proptest::test_runner::{RngSeed, TestCaseError};
     use routh::body::Body;
@@ -1322,15 +1322,7 @@ mod exact_in_any_units {
                 panic!("{name}: a nutation expected, got {:?}", exact.motion);
             };
             for &t in *times {
-                let reference = dop853_at(body, x0, t, 1e-13);
-                let spread = distance(&reference, &dop853_at(body, x0, t, 1e-12));
-                let estimate = exact.accuracy.checked_error_at(t).expect(name);
-                let d = distance(&exact.state_at(t), &reference);
-                println!("{name}, t = {t}: {d:.2e}, estimate {estimate:.2e}, spread {spread:.1e}");
-                assert!(
-                    d <= estimate + spread,
-                    "{name}, t = {t}: {d:e} > {estimate:e}"
-                );
+                let (d, estimate, spread) = against_dop853(name, body, x0, &exact, t);
                 if d > 2.0 * spread {
                     worst_ratio = worst_ratio.max(d / estimate);
                 }
@@ -1507,7 +1499,7 @@ mod exact_near_rest {
     #[allow(dead_code)]
     use crate::sweep_cases as exact_sweep;
 
-    use exact_sweep::{distance, dop853_at};
+    use exact_sweep::{against_dop853, distance, dop853_at};
     use routh::body::Body;
     use routh::quadrature::{ExactSolution, Motion};
     use routh::state::{Normalise, State};
@@ -1523,20 +1515,10 @@ mod exact_near_rest {
         State::new(gamma, m, Normalise::Reject).unwrap()
     }
 
-    /// The state at `t` against DOP853 at rtol 1e-13: the difference within the estimate plus
-    /// DOP853's own error, measured by its distance from DOP853 at rtol 1e-12 (`spread`). At
-    /// t > 0 the ball has fallen and M has the size it has along the motion, the size
-    /// `distance` measures against.
+    /// The state at `t` against DOP853 ([`against_dop853`]): at t > 0 the ball has fallen and
+    /// M has the size it has along the motion, the size `distance` measures against.
     fn agrees_with_dop853(name: &str, body: &Body, x0: &State, exact: &ExactSolution, t: f64) {
-        let reference = dop853_at(body, x0, t, 1e-13);
-        let spread = distance(&reference, &dop853_at(body, x0, t, 1e-12));
-        let estimate = exact.accuracy.checked_error_at(t).expect(name);
-        let d = distance(&exact.state_at(t), &reference);
-        println!("{name}, t = {t}: {d:.2e}, estimate {estimate:.2e}, spread {spread:.1e}");
-        assert!(
-            d <= estimate + spread,
-            "{name}, t = {t}: {d:e} > {estimate:e}"
-        );
+        against_dop853(name, body, x0, exact, t);
     }
 
     /// The fuzzer's input (the artifact was lost; these are its numbers to the digits kept in

@@ -100,6 +100,30 @@ pub fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
     State::from_array(&y)
 }
 
+/// The state of `exact` at `t` against DOP853 at rtol 1e-13: the difference `d` within the
+/// estimate plus DOP853's own error, measured by its distance from DOP853 at rtol 1e-12
+/// (`spread`); `(d, estimate, spread)` for the caller's own statistics. (The tests of the
+/// exact solution use it; the bench, which times the sweep, does not.)
+#[allow(dead_code)]
+pub fn against_dop853(
+    name: &str,
+    body: &Body,
+    x0: &State,
+    exact: &ExactSolution,
+    t: f64,
+) -> (f64, f64, f64) {
+    let reference = dop853_at(body, x0, t, 1e-13);
+    let spread = distance(&reference, &dop853_at(body, x0, t, 1e-12));
+    let estimate = exact.accuracy.checked_error_at(t).expect(name);
+    let d = distance(&exact.state_at(t), &reference);
+    println!("{name}, t = {t}: {d:.2e}, estimate {estimate:.2e}, spread {spread:.1e}");
+    assert!(
+        d <= estimate + spread,
+        "{name}, t = {t}: {d:e} > {estimate:e}"
+    );
+    (d, estimate, spread)
+}
+
 /// Largest component difference, relative to the size of gamma (1) and of M.
 pub fn distance(a: &State, b: &State) -> f64 {
     let m = a.m.iter().fold(0.0_f64, |s, v| s.max(v.abs())).max(1e-300);
