@@ -283,7 +283,7 @@ def sweep(
     t_end: Optional[float] = None,
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
-    method: str = "dop853",
+    method: str = "auto",
     threads: Optional[int] = None,
     start: int = 0,
     stop: Optional[int] = None,

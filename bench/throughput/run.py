@@ -11,6 +11,11 @@ tilts spread evenly over (0.05, 1.5), to t = 10 (the initial states come from ro
 * routh taylor4, taylor8: the batched Taylor method (crates/routh-integrate/src/batch/taylor.rs) with 4 and 8 lanes,
   the instruction set (AVX-512 or AVX2) chosen at run time; each lane bitwise the one-at-a-time
   Taylor run (Jorba-Zou's order and step with u = 1.5 from tol 1e-12 up: taylor::step_exponent);
+* routh sweep, routh sweep --columns all: the whole `routh sweep` process (one thread, the
+  default method, the runs' tilts given as the `[sweep]` table's values, the CSV table
+  written to a pipe and read back for the final states), with the default columns (final
+  state, integrals and their drift) and with every column (also the turning points by events
+  and the nutation by quadrature): what a user's sweep costs, not the lanes alone;
 * heyoka ensemble: `ensemble_propagate_until` with one worker thread (a copy of the
   integrator per run, as heyoka does it);
 * heyoka batch: `taylor_adaptive_batch` with heyoka's recommended SIMD width (or
@@ -30,11 +35,15 @@ Then, for the comparison at equal error, our lanes8 alone at tighter tolerances
 (--equal-error-tols). Writes results.json beside this file and prints the table of BENCHMARKS.md.
 """
 import argparse
+import csv
+import io
 import json
+import math
 import os
 import pathlib
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -67,6 +76,30 @@ def routh(bench, mode, tol, states, repeat):
     return r["time_s"], r["finals"], {"steps": r["steps"], "rhs_evals": r["rhs_evals"]}
 
 
+def sweep(states, tol, repeat, columns):
+    """The whole `routh sweep` of the runs of `states` (their tilts as the sweep's values), on one
+    thread with the default method: the fastest of `repeat` processes and its final states."""
+    tilts = [math.atan2(x[0], x[2]) for x in states]
+    base = (ROOT / "cases" / "default.toml").read_text()
+    text = base.split("[integration]")[0] + "[sweep]\ntilt = { values = [" + ", ".join(
+        repr(t) for t in tilts) + "] }\n"
+    binary = ROOT / "target" / "release" / "routh"
+    with tempfile.TemporaryDirectory() as tmp:
+        case = pathlib.Path(tmp) / "case.toml"
+        case.write_text(text)
+        cmd = [str(binary), "sweep", "--case", str(case), "--threads", "1", "--t-end", repr(T_END),
+               "--rtol", repr(tol), "--atol", repr(tol), "--columns", columns]
+        best, out = float("inf"), ""
+        for _ in range(repeat):
+            start = time.perf_counter()
+            out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+            best = min(best, time.perf_counter() - start)
+    rows = list(csv.DictReader(io.StringIO(out)))
+    names = ["final_gamma1", "final_gamma2", "final_gamma3", "final_M1", "final_M2", "final_M3"]
+    finals = [[float(r[n]) for n in names] for r in sorted(rows, key=lambda r: int(r["run"]))]
+    return best, finals, {"method": rows[0]["method"], "columns": columns}
+
+
 def error(finals, reference):
     return max(work_precision.rel_error(x, ref) for x, ref in zip(finals, reference))
 
@@ -95,6 +128,7 @@ def main():
                     help="our lanes8 alone at these tolerances, for the comparison at equal error")
     args = ap.parse_args()
     bench = setup()
+    work_precision.sh("cargo", "build", "--release", "--quiet", cwd=ROOT)
     venv = work_precision.VENV
     if pathlib.Path(sys.prefix).resolve() != venv.resolve():
         os.execv(str(venv / "bin" / "python"), [str(venv / "bin" / "python"), __file__] + sys.argv[1:])
@@ -199,6 +233,8 @@ def main():
                 ("routh taylor", "taylor"), ("routh taylor4", "taylor4"), ("routh taylor8", "taylor8")]
         for name, f in [(name, lambda mode=mode: routh(bench, mode, tol, states, args.repeat))
                         for name, mode in ours] + [
+                        ("routh sweep", lambda: sweep(states, tol, args.repeat, "final,integrals")),
+                        ("routh sweep --columns all", lambda: sweep(states, tol, args.repeat, "all")),
                         # The batch mode before the ensemble: after the ensemble (heyoka's
                         # thread pool, even with one worker) the batch mode measured at
                         # 23,000 to 35,000 runs/s at 1e-12 instead of its 45,000 alone.

@@ -10,7 +10,7 @@ use routh_core::row::{Cell, Kind};
 use routh_core::sweep::{Columns, Overrides, Sweep};
 use std::path::PathBuf;
 
-/// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853",
+/// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto",
 /// threads=None, start=0, stop=None, columns=None)`: run the runs `start <= run < stop` of the
 /// sweep in the case file `path` (or the case text `text`), in parallel on `threads` threads
 /// (default: one per core), and return a `pyarrow.Table`, one row per run in the order of
@@ -18,10 +18,11 @@ use std::path::PathBuf;
 /// `routh sweep --columns`: `"final"`, `"integrals"`, `"events"`, `"quadrature"`,
 /// `"nutation"`, `"all"`, or single columns) chooses the columns, and only what they need is
 /// computed; default: the `[sweep]` table's `columns`, else `["final", "integrals"]`. The schema's metadata holds the case text
-/// (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
+/// (`routh.case`) and the version (`routh.version`). `method="auto"` (the default) runs the
+/// sweep's own choice, as `routh sweep` does (the Taylor lanes). Every run gives the numbers of
 /// `routh simulate` on its case, whatever the thread count or the slicing.
 #[pyfunction]
-#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="dop853", threads=None, start=0, stop=None, columns=None))]
+#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto", threads=None, start=0, stop=None, columns=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -72,7 +73,8 @@ pub fn sweep<'py>(
     }
     let (names, rows, settings, case_text) = py
         .detach(|| -> Result<_, String> {
-            let sweep = Sweep::new(&text, &source, overrides).map_err(|e| e.to_string())?;
+            let sweep = Sweep::for_runs(&text, &source, overrides, start, stop)
+                .map_err(|e| e.to_string())?;
             let stop = stop.unwrap_or(sweep.runs());
             let rows = sweep
                 .rows(start, stop, threads.unwrap_or(0))

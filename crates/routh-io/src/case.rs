@@ -98,7 +98,7 @@ pub struct Case {
     pub document: toml::Table,
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct BodyTable {
     m: f64,
@@ -124,7 +124,7 @@ fn standard_gravity() -> f64 {
     DEFAULT_G
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct InitialTable {
     gamma: [f64; 3],
@@ -177,68 +177,18 @@ impl Case {
     /// Validate a parsed case document (as [`Case::parse`] does with text); `source` names
     /// the file in error messages.
     pub fn from_document(document: toml::Table, source: &str) -> Result<Self> {
-        Self::from_document_unlabelled(document, source).map_err(|e| match e {
-            AppError::File(FileError::Case { .. }) => e,
-            other => FileError::Case {
-                file: source.to_string(),
-                message: other.to_string(),
-            }
-            .into(),
-        })
+        Self::from_document_unlabelled(document, source).map_err(|e| labelled(e, source))
     }
 
     fn from_document_unlabelled(document: toml::Table, source: &str) -> Result<Self> {
-        let err = |message: String| FileError::Case {
-            file: source.to_string(),
-            message,
-        };
-        reject_unknown_keys(&document).map_err(&err)?;
-        let body: BodyTable = table(&document, "body").map_err(&err)?;
-        let initial: InitialTable = table(&document, "initial").map_err(&err)?;
-        let integration: Integration = match document.get("integration") {
-            None => Integration::default(),
-            Some(_) => table(&document, "integration").map_err(&err)?,
-        };
-        let inertia = [body.i1, body.i2.unwrap_or(body.i1), body.i3];
-        let ball = match (body.a, body.com) {
-            (Some(a), None) => Body::new(
-                body.m,
-                body.radius,
-                a,
-                inertia[0],
-                inertia[1],
-                inertia[2],
-                body.gravity,
-            )?
-            .ball(),
-            (None, Some(com)) => Ball::new(body.m, body.radius, inertia, com, body.gravity)?,
-            _ => {
-                return Err(
-                    err("[body] needs exactly one of the keys `a` and `com`".into()).into(),
-                );
-            }
-        };
-        let normalise = if initial.normalize {
-            Normalise::Rescale
-        } else {
-            Normalise::Reject
-        };
-        let state = match (initial.omega, initial.m) {
-            (Some(omega), None) => State::from_omega(&ball, initial.gamma, omega, normalise)?,
-            (None, Some(m)) => State::new(initial.gamma, m, normalise)?,
-            _ => {
-                return Err(
-                    err("[initial] needs exactly one of the keys `omega` and `M`".into()).into(),
-                );
-            }
-        };
-        crate::range::check_body(&ball)?;
-        crate::range::check_state(&ball, &state)?;
-        let integration = integration.settings()?;
+        let values = CaseValues::read(&document, source)?;
+        let ball = values.ball(source)?;
+        let initial = values.state(&ball, source)?;
+        let integration = values.integration.settings()?;
         Ok(Case {
             source: source.to_string(),
             ball,
-            initial: state,
+            initial,
             integration,
             document,
         })
@@ -263,6 +213,146 @@ impl Case {
                 .into()
             }),
         }
+    }
+}
+
+/// An error met reading the case `source`, as an error of that case file (one that already
+/// is one is left as it is).
+fn labelled(e: AppError, source: &str) -> AppError {
+    match e {
+        AppError::File(FileError::Case { .. }) => e,
+        other => FileError::Case {
+            file: source.to_string(),
+            message: other.to_string(),
+        }
+        .into(),
+    }
+}
+
+/// A case's own tables as typed values, read but not yet validated: what a sweep changes
+/// from run to run ([`crate::sweep`]) before it builds each run's ball and state with the
+/// same validation as [`Case::from_document`], without a TOML document per run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CaseValues {
+    body: BodyTable,
+    initial: InitialTable,
+    integration: Integration,
+}
+
+impl CaseValues {
+    /// The tables `[body]`, `[initial]` and `[integration]` of `document` (unknown keys and
+    /// tables refused, as by [`Case::parse`]); `source` names the file in error messages.
+    pub fn read(document: &toml::Table, source: &str) -> Result<Self> {
+        let err = |message: String| FileError::Case {
+            file: source.to_string(),
+            message,
+        };
+        reject_unknown_keys(document).map_err(err)?;
+        Ok(CaseValues {
+            body: table(document, "body").map_err(err)?,
+            initial: table(document, "initial").map_err(err)?,
+            integration: match document.get("integration") {
+                None => Integration::default(),
+                Some(_) => table(document, "integration").map_err(err)?,
+            },
+        })
+    }
+
+    /// Set the key `key` of `[body]` (`m`, `R`, `a`, `I1`, `I2`, `I3` or `G`) to `value`.
+    pub fn set_body(&mut self, key: &str, value: f64) -> std::result::Result<(), String> {
+        let body = &mut self.body;
+        match key {
+            "m" => body.m = value,
+            "R" => body.radius = value,
+            "a" => body.a = Some(value),
+            "I1" => body.i1 = value,
+            "I2" => body.i2 = Some(value),
+            "I3" => body.i3 = value,
+            "G" => body.gravity = value,
+            _ => return Err(format!("[body] has no key `{key}`")),
+        }
+        Ok(())
+    }
+
+    /// Set the component `i` of the initial gamma to `value`.
+    pub fn set_gamma(&mut self, i: usize, value: f64) {
+        self.initial.gamma[i] = value;
+    }
+
+    /// Set the component `i` of the initial omega to `value`; refused when the case gives
+    /// M instead of omega.
+    pub fn set_omega(&mut self, i: usize, value: f64) -> std::result::Result<(), String> {
+        let omega = self
+            .initial
+            .omega
+            .as_mut()
+            .ok_or("needs `omega = [x, y, z]` in [initial]")?;
+        omega[i] = value;
+        Ok(())
+    }
+
+    /// The ball of `[body]`, validated (its parameters, and that its inertia can be inverted
+    /// in f64: [`crate::range::check_body`]); `source` names the file in error messages.
+    pub fn ball(&self, source: &str) -> Result<Ball> {
+        self.unlabelled_ball(source)
+            .map_err(|e| labelled(e, source))
+    }
+
+    fn unlabelled_ball(&self, source: &str) -> Result<Ball> {
+        let body = &self.body;
+        let inertia = [body.i1, body.i2.unwrap_or(body.i1), body.i3];
+        let ball = match (body.a, body.com) {
+            (Some(a), None) => Body::new(
+                body.m,
+                body.radius,
+                a,
+                inertia[0],
+                inertia[1],
+                inertia[2],
+                body.gravity,
+            )?
+            .ball(),
+            (None, Some(com)) => Ball::new(body.m, body.radius, inertia, com, body.gravity)?,
+            _ => {
+                return Err(FileError::Case {
+                    file: source.to_string(),
+                    message: "[body] needs exactly one of the keys `a` and `com`".into(),
+                }
+                .into());
+            }
+        };
+        crate::range::check_body(&ball)?;
+        Ok(ball)
+    }
+
+    /// The state of `[initial]` for `ball`, validated (a unit gamma, or rescaled with
+    /// `normalize = true`; its energy and field within f64: [`crate::range::check_state`]);
+    /// `source` names the file in error messages.
+    pub fn state(&self, ball: &Ball, source: &str) -> Result<State> {
+        self.unlabelled_state(ball, source)
+            .map_err(|e| labelled(e, source))
+    }
+
+    fn unlabelled_state(&self, ball: &Ball, source: &str) -> Result<State> {
+        let initial = &self.initial;
+        let normalise = if initial.normalize {
+            Normalise::Rescale
+        } else {
+            Normalise::Reject
+        };
+        let state = match (initial.omega, initial.m) {
+            (Some(omega), None) => State::from_omega(ball, initial.gamma, omega, normalise)?,
+            (None, Some(m)) => State::new(initial.gamma, m, normalise)?,
+            _ => {
+                return Err(FileError::Case {
+                    file: source.to_string(),
+                    message: "[initial] needs exactly one of the keys `omega` and `M`".into(),
+                }
+                .into());
+            }
+        };
+        crate::range::check_state(ball, &state)?;
+        Ok(state)
     }
 }
 

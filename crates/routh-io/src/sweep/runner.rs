@@ -9,9 +9,10 @@ use super::design::Design;
 use super::record::{columns, NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
 use super::turning::{NutationEvents, TurningPoints};
+use crate::ball::Ball;
 use crate::batch::{self, Job, Queue, LANES};
 use crate::body::Body;
-use crate::case::Case;
+use crate::case::{Case, CaseValues};
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::{ExactSolution, Motion};
@@ -33,8 +34,14 @@ pub const MAX_THREADS_PER_CORE: usize = 4;
 /// obeyed within this time plus the writing of the rows done.
 const POLL: Duration = Duration::from_millis(50);
 
-/// Where the rows go as their runs end: `(position in the list of runs, row)`, from any thread.
-type Sink<'s> = &'s (dyn Fn(usize, Row) + Sync);
+/// Where the rows go as their runs end, a few at a time: `(position in the list of runs, row)`,
+/// from any thread.
+type Sink<'s> = &'s (dyn Fn(Vec<(usize, Row)>) + Sync);
+
+/// How many rows of runs done in lanes are handed to the [`Sink`] together: one handover per
+/// row woke the waiting writer thread once per run (a tenth of a one-thread sweep's time in
+/// the kernel's futex calls), while a stop still hands over every row done at once.
+const ROWS_PER_HANDOVER: usize = 64;
 
 /// A pool of `threads` worker threads (0: one per core), at most [`MAX_THREADS_PER_CORE`]
 /// per available core (`std::thread::available_parallelism`), refused above with the rule.
@@ -68,7 +75,12 @@ pub struct Sweep {
     /// The case file's text (stored in the output's metadata).
     pub case_text: String,
     source: String,
-    base: toml::Table,
+    base: CaseValues,
+    /// The runs whose cases were validated when the sweep was built: only they can run.
+    checked: std::ops::Range<u64>,
+    /// The ball of every run when no key of `[body]` is swept (built and validated once), and
+    /// its [`Body`] when it is a Routh sphere.
+    fixed: Option<(Ball, Option<Body>)>,
     design: Design,
     /// The settings of every run.
     pub settings: Settings,
@@ -80,12 +92,11 @@ pub struct Sweep {
     pub batch: bool,
 }
 
-/// A run waiting for a lane: its position in the list of runs, its number, case and initial
-/// state.
+/// A run waiting for a lane: its position in the list of runs, its number and initial state.
 struct Pending {
     position: usize,
     k: u64,
-    case: Case,
+    initial: State,
     x0: [f64; 6],
 }
 
@@ -105,8 +116,19 @@ struct LaneQueue<'b, I> {
     body: &'b Body,
     pending: I,
     lanes: [Option<InLane<'b>>; LANES],
+    /// The rows done and not yet handed to `sink`.
+    done: Vec<(usize, Row)>,
     sink: Sink<'b>,
     stop: &'b AtomicBool,
+}
+
+impl<I> LaneQueue<'_, I> {
+    /// Hand the rows done to the sink.
+    fn hand_over(&mut self) {
+        if !self.done.is_empty() {
+            (self.sink)(std::mem::take(&mut self.done));
+        }
+    }
 }
 
 impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
@@ -165,10 +187,13 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                     elapsed_s: done.start.elapsed().as_secs_f64(),
                 };
                 let events = done.turning.map(|t| t.summary());
-                sweep.finished(run.k, self.body, &run.case, summary, events)
+                sweep.finished(run.k, self.body, &run.initial, summary, events)
             }
         };
-        (self.sink)(run.position, row);
+        self.done.push((run.position, row));
+        if self.done.len() >= ROWS_PER_HANDOVER || self.stop.load(Ordering::Relaxed) {
+            self.hand_over();
+        }
     }
 }
 
@@ -200,12 +225,13 @@ pub enum Completion {
     Stopped,
 }
 
-/// What `routh sweep --method auto` runs: `(tol_min, method)` rows, the first with
-/// `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not `routh_ball::auto::AUTO_TABLE`,
-/// which is for one run), from the throughput benchmark of the lanes (BENCHMARKS.md, "Sweeps"):
-/// at equal error the Taylor lanes are about 5x faster than the DOP853 lanes at 2e-12 and at
-/// par at 1.5e-8 (looser tolerances were not measured), and at a given tolerance their error
-/// is hundreds of times smaller.
+/// What `routh sweep --method auto` (the default) runs: `(tol_min, method)` rows, the first
+/// with `min(rtol, atol) >= tol_min` wins. A sweep's own choice (not
+/// `routh_ball::auto::AUTO_TABLE`, which is for one run), measured on whole sweeps by
+/// `python3 bench/sweep_methods.py` (BENCHMARKS.md, "The sweep's default method"): from 1e-6
+/// to 1e-13 the Taylor lanes' error is 1 to 3 times the tolerance where DOP853's is 800 to
+/// 7,500 times, and they do as many runs per second (0.94x at 1e-6) to 3.8x as many (1e-13):
+/// at equal error they are faster everywhere.
 pub const SWEEP_AUTO_TABLE: [(f64, Method); 1] = [(0.0, Method::Taylor)];
 
 /// The method a sweep runs for `method` at the tolerance `tol`: [`SWEEP_AUTO_TABLE`] for
@@ -213,34 +239,6 @@ pub const SWEEP_AUTO_TABLE: [(f64, Method); 1] = [(0.0, Method::Taylor)];
 /// method gives the same numbers), the method itself otherwise.
 pub fn resolve(method: Method, tol: f64) -> Method {
     method.resolve_in(tol, &SWEEP_AUTO_TABLE)
-}
-
-/// Set `path` (`table.key` or `table.key[i]`) of a case document to `value`.
-fn set(
-    doc: &mut toml::Table,
-    table: &str,
-    key: &str,
-    index: Option<usize>,
-    value: f64,
-) -> std::result::Result<(), String> {
-    let t = doc
-        .get_mut(table)
-        .and_then(|t| t.as_table_mut())
-        .ok_or_else(|| format!("the case has no [{table}] table"))?;
-    match index {
-        None => {
-            t.insert(key.to_string(), value.into());
-        }
-        Some(i) => {
-            let v = t
-                .get_mut(key)
-                .and_then(|v| v.as_array_mut())
-                .filter(|a| a.len() == 3)
-                .ok_or_else(|| format!("needs `{key} = [x, y, z]` in [{table}]"))?;
-            v[i] = value.into();
-        }
-    }
-    Ok(())
 }
 
 impl Sweep {
@@ -252,6 +250,19 @@ impl Sweep {
     /// of the table are `overrides.columns`, else the `[sweep]` key `columns`, else
     /// [`Columns::default`].
     pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
+        Self::for_runs(text, source, overrides, 0, None)
+    }
+
+    /// The sweep of [`Sweep::new`] whose runs `start <= run < stop` (`stop` by default the
+    /// number of runs) alone are validated and may run ([`Sweep::rows`]): one chunk of a sweep
+    /// split between processes (Dask) checks its own runs, not every run of the sweep.
+    pub fn for_runs(
+        text: &str,
+        source: &str,
+        overrides: Overrides,
+        start: u64,
+        stop: Option<u64>,
+    ) -> Result<Self> {
         let case = Case::parse(text, source)?;
         let base = case.integration;
         let rtol = overrides.rtol.unwrap_or(base.rtol());
@@ -278,18 +289,36 @@ impl Sweep {
             (None, None) => Columns::default(),
         };
         let design = Spec::parse(&table).and_then(Design::new).map_err(refused)?;
-        let mut base = case.document;
-        base.remove("sweep");
+        let base = CaseValues::read(&case.document, source)?;
+        let sweeps_body = design
+            .spec()
+            .axes
+            .iter()
+            .any(|axis| matches!(axis.quantity, Quantity::Body(_)));
+        let fixed = (!sweeps_body).then(|| (case.ball, case.body("routh sweep").ok()));
+        let stop = stop.unwrap_or(design.runs());
+        if start > stop || stop > design.runs() {
+            return Err(RouthError::Option {
+                name: "start, stop",
+                value: format!("{start}, {stop}"),
+                rule: "need 0 <= start <= stop <= the number of runs",
+            }
+            .into());
+        }
         let sweep = Sweep {
             case_text: text.to_string(),
             source: source.to_string(),
             base,
+            checked: start..stop,
+            fixed,
             design,
             settings,
             columns,
             batch: true,
         };
-        (0..sweep.runs())
+        sweep
+            .checked
+            .clone()
             .into_par_iter()
             .try_for_each(|k| sweep.case_of(k).map(|_| ()))
             .map_err(refused)?;
@@ -334,29 +363,36 @@ impl Sweep {
             .then(|| TurningPoints::new(body, x0))
     }
 
-    /// The case document of run `k`: the base case with the swept values put in.
-    pub fn document_of(&self, k: u64) -> std::result::Result<toml::Table, Refusal> {
+    /// The case's values of run `k`: the base case with the swept values put in.
+    fn values_of(&self, k: u64) -> std::result::Result<CaseValues, Refusal> {
         let values = self.design.point(k);
-        let mut doc = self.base.clone();
+        let mut case = self.base;
         for (axis, &v) in self.design.spec().axes.iter().zip(&values) {
             let done = match axis.quantity {
-                Quantity::Body(key) => set(&mut doc, "body", key, None, v),
-                Quantity::Tilt => set(&mut doc, "initial", "gamma", Some(0), v.sin())
-                    .and_then(|_| set(&mut doc, "initial", "gamma", Some(1), 0.0))
-                    .and_then(|_| set(&mut doc, "initial", "gamma", Some(2), v.cos())),
-                Quantity::Spin => set(&mut doc, "initial", "omega", Some(2), v),
-                Quantity::Omega(i) => set(&mut doc, "initial", "omega", Some(i), v),
-                Quantity::Gamma(i) => set(&mut doc, "initial", "gamma", Some(i), v),
+                Quantity::Body(key) => case.set_body(key, v),
+                Quantity::Tilt => {
+                    case.set_gamma(0, v.sin());
+                    case.set_gamma(1, 0.0);
+                    case.set_gamma(2, v.cos());
+                    Ok(())
+                }
+                Quantity::Spin => case.set_omega(2, v),
+                Quantity::Omega(i) => case.set_omega(i, v),
+                Quantity::Gamma(i) => {
+                    case.set_gamma(i, v);
+                    Ok(())
+                }
             };
             done.map_err(|rule| refuse(&axis.name, v, &rule))?;
         }
-        Ok(doc)
+        Ok(case)
     }
 
-    /// The validated case of run `k`; an invalid one is refused naming the swept values.
-    pub fn case_of(&self, k: u64) -> std::result::Result<Case, Refusal> {
-        let doc = self.document_of(k)?;
-        Case::from_document(doc, &self.source).map_err(|e| {
+    /// The validated ball and initial state of run `k`, as the case file with the run's
+    /// values put in would give them; an invalid one is refused naming the swept values.
+    pub fn case_of(&self, k: u64) -> std::result::Result<(Ball, State), Refusal> {
+        let values = self.values_of(k)?;
+        let invalid = |e: AppError| {
             let named: Vec<String> = self
                 .names()
                 .iter()
@@ -368,7 +404,13 @@ impl Sweep {
                 format!("(run {k})"),
                 &format!("makes the case invalid: {e}"),
             )
-        })
+        };
+        let ball = match &self.fixed {
+            Some((ball, _)) => *ball,
+            None => values.ball(&self.source).map_err(invalid)?,
+        };
+        let state = values.state(&ball, &self.source).map_err(invalid)?;
+        Ok((ball, state))
     }
 
     /// A row of run `k` that could not be done, with the reason.
@@ -384,15 +426,17 @@ impl Sweep {
         }
     }
 
-    /// The case of run `k`, its body and its initial state `(gamma, M)`.
-    fn start(&self, k: u64) -> Result<(Case, Body, [f64; 6])> {
-        let case = self.case_of(k).map_err(|e| FileError::Case {
+    /// The body of run `k` and its initial state.
+    fn start(&self, k: u64) -> Result<(Body, State)> {
+        let (ball, initial) = self.case_of(k).map_err(|e| FileError::Case {
             file: self.source.clone(),
             message: e.to_string(),
         })?;
-        let body = case.body("routh sweep")?;
-        let x0 = case.initial.to_array();
-        Ok((case, body, x0))
+        let body = match &self.fixed {
+            Some((_, Some(body))) => *body,
+            _ => ball.axial_body("routh sweep")?,
+        };
+        Ok((body, initial))
     }
 
     /// The row of run `k` whose integration gave `summary` and `events`: with the quadrature's
@@ -401,14 +445,14 @@ impl Sweep {
         &self,
         k: u64,
         body: &Body,
-        case: &Case,
+        initial: &State,
         summary: Summary,
         events: Option<NutationEvents>,
     ) -> Row {
         let (quadrature, message) = if !self.columns.solves_quadrature() {
             (None, String::new())
         } else if body.is_symmetric() {
-            match ExactSolution::new(body, &case.initial) {
+            match ExactSolution::new(body, initial) {
                 Ok(exact) => {
                     let precession = match &exact.motion {
                         Motion::Nutation(n) => Some(n.advance),
@@ -447,7 +491,8 @@ impl Sweep {
     /// a row with status `failed`.
     pub fn run(&self, k: u64) -> Row {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let (case, body, x0) = self.start(k)?;
+            let (body, initial) = self.start(k)?;
+            let x0 = initial.to_array();
             let mut turning = self.turning_points(&body, &x0);
             let observed = integrate_observed(
                 &body,
@@ -464,7 +509,7 @@ impl Sweep {
             )?;
             let summary = observed.summary()?;
             let events = turning.map(|t| t.summary());
-            Ok::<_, AppError>(self.finished(k, &body, &case, summary, events))
+            Ok::<_, AppError>(self.finished(k, &body, &initial, summary, events))
         }));
         match attempt {
             Ok(Ok(row)) => row,
@@ -500,15 +545,16 @@ impl Sweep {
     fn run_in_lanes(&self, runs: &[u64], first: usize, stop: &AtomicBool, sink: Sink<'_>) {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let mut bodies: Vec<(Body, Vec<Pending>)> = Vec::new();
+            let mut refused = Vec::new();
             for (position, &k) in (first..).zip(runs) {
                 match self.start(k) {
-                    Err(e) => sink(position, self.failed(k, e.to_string())),
-                    Ok((case, body, x0)) => {
+                    Err(e) => refused.push((position, self.failed(k, e.to_string()))),
+                    Ok((body, initial)) => {
                         let run = Pending {
                             position,
                             k,
-                            case,
-                            x0,
+                            initial,
+                            x0: initial.to_array(),
                         };
                         match bodies.iter_mut().find(|(b, _)| *b == body) {
                             Some((_, group)) => group.push(run),
@@ -516,6 +562,9 @@ impl Sweep {
                         }
                     }
                 }
+            }
+            if !refused.is_empty() {
+                sink(refused);
             }
             let opts = Options::new(self.settings.rtol(), self.settings.atol())
                 .and_then(|opts| opts.with_max_steps(self.settings.max_steps()))?;
@@ -525,6 +574,7 @@ impl Sweep {
                     body,
                     pending: group.iter(),
                     lanes: std::array::from_fn(|_| None),
+                    done: Vec::with_capacity(ROWS_PER_HANDOVER),
                     sink,
                     stop,
                 };
@@ -533,6 +583,7 @@ impl Sweep {
                     Method::Taylor => batch::taylor::integrate(&sys, &opts, &mut queue)?,
                     _ => batch::integrate_in_lanes(&sys, &opts, &mut queue),
                 }
+                queue.hand_over();
             }
             Ok::<_, AppError>(())
         }));
@@ -541,7 +592,7 @@ impl Sweep {
                 if stop.load(Ordering::Relaxed) {
                     return;
                 }
-                sink(position, self.run(k));
+                sink(vec![(position, self.run(k))]);
             }
         }
     }
@@ -559,7 +610,7 @@ impl Sweep {
         } else {
             runs.par_iter().enumerate().for_each(|(i, &k)| {
                 if !stop.load(Ordering::Relaxed) {
-                    sink(first + i, self.run(k));
+                    sink(vec![(first + i, self.run(k))]);
                 }
             });
         }
@@ -582,13 +633,21 @@ impl Sweep {
         stop: &Arc<AtomicBool>,
         write: &mut dyn FnMut(&[Row]) -> Result<()>,
     ) -> Result<Completion> {
+        if let Some(k) = todo.iter().find(|k| !self.checked.contains(k)) {
+            return Err(RouthError::Option {
+                name: "run",
+                value: k.to_string(),
+                rule: "must lie within the runs the sweep was built for",
+            }
+            .into());
+        }
         let chunk = chunk.max(1);
-        let (sender, rows) = channel::<(usize, Row)>();
+        let (sender, rows) = channel::<Vec<(usize, Row)>>();
         let (sweep, flag) = (Arc::clone(self), Arc::clone(stop));
         pool.spawn(move || {
-            let sink = move |position: usize, row: Row| {
-                // The receiver is gone only after a stop: the row is dropped.
-                let _ = sender.send((position, row));
+            let sink = move |done: Vec<(usize, Row)>| {
+                // The receiver is gone only after a stop: the rows are dropped.
+                let _ = sender.send(done);
             };
             for (i, part) in todo.chunks(chunk).enumerate() {
                 if flag.load(Ordering::Relaxed) {
@@ -602,9 +661,11 @@ impl Sweep {
         let mut next = 0;
         loop {
             let ended = match rows.recv_timeout(POLL) {
-                Ok((position, row)) => {
-                    if position >= next {
-                        waiting.entry(position).or_insert(row);
+                Ok(done) => {
+                    for (position, row) in done {
+                        if position >= next {
+                            waiting.entry(position).or_insert(row);
+                        }
                     }
                     false
                 }
@@ -620,7 +681,7 @@ impl Sweep {
                 }
             }
             if stop.load(Ordering::Relaxed) {
-                for (position, row) in rows.try_iter() {
+                for (position, row) in rows.try_iter().flatten() {
                     if position >= next {
                         waiting.entry(position).or_insert(row);
                     }
@@ -641,21 +702,29 @@ impl Sweep {
     }
 
     /// The rows of the runs `start <= run < stop`, in order, computed on a [`pool`] of
-    /// `threads` threads (0: one per core).
+    /// `threads` threads (0: one per core); they must lie within the runs validated when the
+    /// sweep was built ([`Sweep::for_runs`]).
     pub fn rows(&self, start: u64, stop: u64, threads: usize) -> Result<Vec<Row>> {
-        if start > stop || stop > self.runs() {
+        if start > stop || start < self.checked.start || stop > self.checked.end {
             return Err(RouthError::Option {
                 name: "start, stop",
                 value: format!("{start}, {stop}"),
-                rule: "need 0 <= start <= stop <= the number of runs",
+                rule: if self.checked == (0..self.runs()) {
+                    "need 0 <= start <= stop <= the number of runs"
+                } else {
+                    "need start <= stop within the runs the sweep was built for"
+                },
             }
             .into());
         }
         let pool = pool(threads)?;
         let todo: Vec<u64> = (start..stop).collect();
         let rows = Mutex::new(vec![None; todo.len()]);
-        let sink = |position: usize, row: Row| {
-            rows.lock().unwrap_or_else(|e| e.into_inner())[position] = Some(row);
+        let sink = |done: Vec<(usize, Row)>| {
+            let mut rows = rows.lock().unwrap_or_else(|e| e.into_inner());
+            for (position, row) in done {
+                rows[position] = Some(row);
+            }
         };
         pool.install(|| self.run_many(&todo, 0, &AtomicBool::new(false), &sink));
         Ok(rows
