@@ -4,7 +4,7 @@
 
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 use routh_core::integrate::Method;
 use routh_core::row::{Cell, Kind};
 use routh_core::sweep::{Columns, Overrides, Sweep};
@@ -96,22 +96,66 @@ pub fn sweep<'py>(
     let arrays = PyList::empty(py);
     let mut labels = Vec::with_capacity(names.len());
     for (i, (name, kind)) in names.into_iter().enumerate() {
-        let values = PyList::empty(py);
-        for row in &cells {
-            match &row[i] {
-                Cell::Int(v) => values.append(*v)?,
-                Cell::Float(v) => values.append(*v)?,
-                Cell::Text(s) => values.append(s)?,
+        let array = match kind {
+            // Numbers go to Arrow as one buffer of little-endian values per column (a Python
+            // object per cell cost more than the sweep itself at 10^5 runs).
+            Kind::Int | Kind::Float => {
+                let mut bytes = Vec::with_capacity(8 * cells.len());
+                let mut valid = vec![0u8; cells.len().div_ceil(8)];
+                let mut nulls = 0;
+                for (j, row) in cells.iter().enumerate() {
+                    let value = match &row[i] {
+                        Cell::Int(v) => v.map(u64::to_le_bytes),
+                        Cell::Float(v) => v.map(f64::to_le_bytes),
+                        Cell::Text(_) => {
+                            return Err(PyRuntimeError::new_err(format!(
+                                "internal error: text in the numeric column {name}"
+                            )))
+                        }
+                    };
+                    match value {
+                        Some(v) => {
+                            bytes.extend_from_slice(&v);
+                            valid[j / 8] |= 1 << (j % 8);
+                        }
+                        None => {
+                            bytes.extend_from_slice(&[0; 8]);
+                            nulls += 1;
+                        }
+                    }
+                }
+                let arrow_type = if kind == Kind::Int {
+                    pa.call_method0("uint64")?
+                } else {
+                    pa.call_method0("float64")?
+                };
+                let buffer = |b: &[u8]| pa.call_method1("py_buffer", (PyBytes::new(py, b),));
+                let validity = if nulls == 0 {
+                    py.None().into_bound(py)
+                } else {
+                    buffer(&valid)?
+                };
+                let buffers = PyList::new(py, [validity, buffer(&bytes)?])?;
+                pa.getattr("Array")?.call_method1(
+                    "from_buffers",
+                    (arrow_type, cells.len(), buffers, nulls),
+                )?
             }
-        }
-        let arrow_type = match kind {
-            Kind::Int => pa.call_method0("uint64")?,
-            Kind::Float => pa.call_method0("float64")?,
-            Kind::Text => pa.call_method0("string")?,
+            Kind::Text => {
+                let values = PyList::empty(py);
+                for row in &cells {
+                    match &row[i] {
+                        Cell::Text(s) => values.append(s)?,
+                        Cell::Int(v) => values.append(*v)?,
+                        Cell::Float(v) => values.append(*v)?,
+                    }
+                }
+                let kwargs = PyDict::new(py);
+                kwargs.set_item("type", pa.call_method0("string")?)?;
+                pa.call_method("array", (values,), Some(&kwargs))?
+            }
         };
-        let kwargs = PyDict::new(py);
-        kwargs.set_item("type", arrow_type)?;
-        arrays.append(pa.call_method("array", (values,), Some(&kwargs))?)?;
+        arrays.append(array)?;
         labels.push(name);
     }
     let metadata = PyDict::new(py);

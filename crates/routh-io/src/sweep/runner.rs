@@ -21,7 +21,7 @@ use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings,
 use crate::state::State;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{channel, RecvTimeoutError};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -599,26 +599,43 @@ impl Sweep {
 
     /// The runs `runs`, whose positions in the list of runs start at `first`, on the current
     /// rayon pool, each row handed to `sink` with its position as its run ends: in lanes
-    /// ([`Sweep::run_in_lanes`], in pieces of a few hundred runs) or one run at a time. Once
-    /// `stop` is set no run starts.
+    /// ([`Sweep::run_in_lanes`], in pieces of a few hundred runs) or one run at a time. Each
+    /// worker thread takes the next piece in the order of `runs` as soon as it is free (no
+    /// barrier between pieces, no thread idle while another has work), so that the runs end
+    /// nearly in order and the rows that wait for their turn are at most about a piece per
+    /// thread. Once `stop` is set no run starts.
     fn run_many(&self, runs: &[u64], first: usize, stop: &AtomicBool, sink: Sink<'_>) {
-        if self.in_lanes() {
-            let piece = (runs.len() / (4 * rayon::current_num_threads())).clamp(4 * LANES, 512);
-            runs.par_chunks(piece)
-                .enumerate()
-                .for_each(|(i, part)| self.run_in_lanes(part, first + i * piece, stop, sink));
+        let threads = rayon::current_num_threads();
+        let lanes = self.in_lanes();
+        let piece = if lanes {
+            (runs.len() / (4 * threads)).clamp(4 * LANES, 512)
         } else {
-            runs.par_iter().enumerate().for_each(|(i, &k)| {
-                if !stop.load(Ordering::Relaxed) {
-                    sink(vec![(first + i, self.run(k))]);
-                }
-            });
-        }
+            1
+        };
+        let next = AtomicUsize::new(0);
+        let work = || loop {
+            let start = next.fetch_add(1, Ordering::Relaxed) * piece;
+            if start >= runs.len() || stop.load(Ordering::Relaxed) {
+                return;
+            }
+            let part = &runs[start..(start + piece).min(runs.len())];
+            if lanes {
+                self.run_in_lanes(part, first + start, stop, sink);
+            } else {
+                sink(vec![(first + start, self.run(part[0]))]);
+            }
+        };
+        rayon::scope(|s| {
+            for _ in 1..threads {
+                s.spawn(|_| work());
+            }
+            work();
+        });
     }
 
-    /// Run the runs `todo` on `pool` (made by [`pool`]), `chunk` runs at a time (each
-    /// chunk's runs in parallel), handing their rows, in the order of `todo`, to `write`, one
-    /// chunk at a time (so that at most a chunk of rows waits in memory for its turn).
+    /// Run the runs `todo` on `pool` (made by [`pool`]), handing their rows, in the order of
+    /// `todo`, to `write`, `chunk` rows at a time (the runs end nearly in order,
+    /// [`Sweep::run_many`], so that a few pieces of rows wait in memory for their turn).
     /// The runs go on in the pool while this thread waits for their rows and polls `stop`
     /// (every [`POLL`]): once it is set no new run starts, the rows of every run ended so far
     /// are written (in the order of `todo`), and the result is [`Completion::Stopped`] at
@@ -649,12 +666,7 @@ impl Sweep {
                 // The receiver is gone only after a stop: the rows are dropped.
                 let _ = sender.send(done);
             };
-            for (i, part) in todo.chunks(chunk).enumerate() {
-                if flag.load(Ordering::Relaxed) {
-                    return;
-                }
-                sweep.run_many(part, i * chunk, &flag, &sink);
-            }
+            sweep.run_many(&todo, 0, &flag, &sink);
         });
         let mut waiting: BTreeMap<usize, Row> = BTreeMap::new();
         let mut ready: Vec<Row> = Vec::with_capacity(chunk);
