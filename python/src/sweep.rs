@@ -136,10 +136,8 @@ pub fn sweep<'py>(
                     buffer(&valid)?
                 };
                 let buffers = PyList::new(py, [validity, buffer(&bytes)?])?;
-                pa.getattr("Array")?.call_method1(
-                    "from_buffers",
-                    (arrow_type, cells.len(), buffers, nulls),
-                )?
+                pa.getattr("Array")?
+                    .call_method1("from_buffers", (arrow_type, cells.len(), buffers, nulls))?
             }
             Kind::Text => {
                 let values = PyList::empty(py);
