@@ -11,5 +11,5 @@ pub mod nutation;
 pub mod panels;
 pub mod reduction;
 
-pub use nutation::{Accuracy, ExactSolution, Motion, Nutation};
+pub use nutation::{Accuracy, ExactSolution, Motion, Nutation, NutationNumbers};
 pub use reduction::Reduction;
