@@ -1929,7 +1929,7 @@ mod exact_numbers {
         let red = Reduction::of_state(body, &top).ok()?;
         let s = (1.0 - u * u).sqrt();
         let q = red.q(u);
-        if !(q > 0.0) {
+        if q.is_nan() || q <= 0.0 {
             return None;
         }
         let (gamma, omega) = red.omega(u, s, 0.0, q.sqrt() / s, red.jellett_quotient(u));
