@@ -7,6 +7,7 @@
 //! `docs/quadrature.md`.
 
 pub mod gauss;
+pub mod lanes;
 pub mod nutation;
 pub mod panels;
 pub mod reduction;

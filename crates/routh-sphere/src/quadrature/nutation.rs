@@ -1352,10 +1352,12 @@ impl Nutation {
             };
             let far = near + width;
             let rule = &self.narrow_rule;
+            // The inner rule's points at once ([`Reduction::q_curvatures_in_frame`], each
+            // `q_curvature_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
             let p = -rule.integrate(|s| {
-                s * rule.integrate(|t| {
-                    red.q_curvature_in_frame(pole, near + s * (x - near) + s * t * (far - x))
-                })
+                let points: [f64; NARROW_NODES] =
+                    std::array::from_fn(|j| near + s * (x - near) + s * rule.nodes[j] * (far - x));
+                s * rule.integrate_values(&red.q_curvatures_in_frame(pole, points))
             });
             (p, f64::EPSILON * red.q_curvature_scale(phase.u) / p.abs())
         }

@@ -45,10 +45,12 @@
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
+use crate::quadrature::lanes::Lanes;
 use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
 use num_dual::{
     first_derivative, second_derivative, second_partial_derivative, third_partial_derivative_vec,
+    Dual2,
 };
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
@@ -125,7 +127,7 @@ struct PoleGeometry {
 
 impl PoleGeometry {
     /// `h = h_p - p R x`, the height `R u + a` at `x = 1 - p u`.
-    fn height<D: Real>(&self, x: D) -> D {
+    fn height<D: Scalar>(&self, x: D) -> D {
         -x * self.pr + self.hp
     }
 
@@ -457,7 +459,7 @@ impl Reduction {
     }
 
     /// `[K, n_p, e_p]` of the frame of pole `p`.
-    fn frame_parameters<D: Real>(&self, pole: f64) -> [D; 3] {
+    fn frame_parameters<D: Scalar>(&self, pole: f64) -> [D; 3] {
         let f = self.frame(pole);
         [self.k, f.remainder, f.excess].map(lift)
     }
@@ -476,7 +478,7 @@ impl Reduction {
     /// The terms of `Q` at `x = 1 - p u` from the parameters `[K, n_p, e_p]` of the pole `p`
     /// (module docs): each vanishes with x or with the parameters, so near the pole they are
     /// small and Q carries no cancellation of O(1) numbers.
-    fn q_terms_in_frame<D: Real>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
+    fn q_terms_in_frame<D: FrameScalar>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
         let b = &self.body;
         let geo = self.geometry(pole);
         let [k, remainder, excess] = parameters;
@@ -485,7 +487,7 @@ impl Reduction {
         let s2 = x * (-x + 2.0);
         let (g2_change, g) = g_change_at(geo, x, h);
         let w3 = k / g;
-        let n = x * jellett_divided_at(geo, x, h, g) * k * b.i3() + remainder;
+        let n = x * D::jellett_divided_at(geo, x, h, g) * k * b.i3() + remainder;
         let inertia = (s2 * (r * r) + h * h) * b.m() + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
@@ -611,6 +613,16 @@ impl Reduction {
         second_derivative(|v| self.q_in_frame(pole, v), x).2
     }
 
+    /// [`Reduction::q_curvature_in_frame`] at each of the points `xs`, bit for bit, evaluated
+    /// as one number of `W` lanes ([`Lanes`]: the same operations on each point, which the
+    /// processor overlaps).
+    pub fn q_curvatures_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
+        let x = Lanes(xs.map(|x| Dual2::from_re(x).derivative()));
+        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
+            .0
+            .map(|q| q.v2)
+    }
+
     /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
     pub fn q_slope_in_frame(&self, pole: f64, x: f64) -> f64 {
         first_derivative(|v| self.q_in_frame(pole, v), x).1
@@ -721,9 +733,34 @@ impl Reduction {
     }
 }
 
+/// A number the terms of Q in a pole's frame are written over ([`Reduction::q_terms_in_frame`]):
+/// field arithmetic, and `J(x)`, whose form depends on the sign of the real part of `h h_p`
+/// (one number's, or each lane's).
+trait FrameScalar: Scalar {
+    /// [`jellett_divided_at`].
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self;
+}
+
+impl<D: Real> FrameScalar for D {
+    #[inline(always)]
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
+        jellett_divided_at(geo, x, h, g)
+    }
+}
+
+impl<D: Real, const W: usize> FrameScalar for Lanes<D, W> {
+    /// Lane by lane, each in its own form.
+    #[inline(always)]
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
+        Lanes(std::array::from_fn(|i| {
+            jellett_divided_at(geo, x.0[i], h.0[i], g.0[i])
+        }))
+    }
+}
+
 /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`,
 /// `h = h_p - p R x`, with the constants of the pole.
-fn g_change_at<D: Real>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
+fn g_change_at<D: Scalar>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
     let change = x * ((-x + 2.0) * geo.amr2 - (h + geo.hp) * geo.cmpr);
     (change, (change + geo.gp2).sqrt())
 }
