@@ -43,6 +43,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 const SAMPLE_BUDGET: usize = if cfg!(fuzzing) { 640 } else { 6400 };
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
+/// Lanes of the evaluations of Q' at those nodes ([`Reduction::q_slopes_in_frame`]).
+const SLOPE_LANES: usize = 8;
+const _: () = assert!(DIVIDED_DIFFERENCE_NODES % SLOPE_LANES == 0);
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
 /// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
 /// to R and a large m) every sample bisects toward it, and with the sample budget that took
@@ -1324,11 +1327,23 @@ impl Nutation {
                     phase.one_minus - self.gap_top,
                 )
             };
-            let (near, pieces) = self.rule.mean_avoiding(
+            // Each piece's nodes in lanes ([`Reduction::q_slopes_in_frame`], each
+            // `q_slope_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
+            let rule = &self.rule;
+            let (near, pieces) = rule.mean_avoiding_by(
                 x_end,
                 x,
                 &self.frame_singularities[frame_index(pole)],
-                &|v| red.q_slope_in_frame(pole, v),
+                &|a, b| {
+                    let mut slopes = [0.0; DIVIDED_DIFFERENCE_NODES];
+                    let lanes = slopes.chunks_exact_mut(SLOPE_LANES);
+                    for (chunk, nodes) in lanes.zip(rule.nodes.chunks_exact(SLOPE_LANES)) {
+                        let points: [f64; SLOPE_LANES] =
+                            std::array::from_fn(|j| a + nodes[j] * (b - a));
+                        chunk.copy_from_slice(&red.q_slopes_in_frame(pole, points));
+                    }
+                    rule.integrate_values(&slopes)
+                },
             );
             self.work.add(pieces);
             let q = red.q_in_frame(pole, x);

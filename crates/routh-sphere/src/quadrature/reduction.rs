@@ -50,7 +50,7 @@ use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
 use num_dual::{
     first_derivative, second_derivative, second_partial_derivative, third_partial_derivative_vec,
-    Dual2,
+    Dual, Dual2,
 };
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
@@ -626,6 +626,15 @@ impl Reduction {
     /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
     pub fn q_slope_in_frame(&self, pole: f64, x: f64) -> f64 {
         first_derivative(|v| self.q_in_frame(pole, v), x).1
+    }
+
+    /// [`Reduction::q_slope_in_frame`] at each of the points `xs`, bit for bit, evaluated as
+    /// one number of `W` lanes (as [`Reduction::q_curvatures_in_frame`]).
+    pub fn q_slopes_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
+        let x = Lanes(xs.map(|x| Dual::from_re(x).derivative()));
+        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
+            .0
+            .map(|q| q.eps)
     }
 
     /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
