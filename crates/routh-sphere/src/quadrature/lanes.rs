@@ -16,16 +16,22 @@ macro_rules! lane_operator {
         impl<D: Scalar, const W: usize> $trait for Lanes<D, W> {
             type Output = Self;
             #[inline(always)]
-            fn $method(self, other: Self) -> Self {
-                Lanes(std::array::from_fn(|i| self.0[i].$method(other.0[i])))
+            fn $method(mut self, other: Self) -> Self {
+                for (a, b) in self.0.iter_mut().zip(other.0) {
+                    *a = a.$method(b);
+                }
+                self
             }
         }
 
         impl<D: Scalar, const W: usize> $trait<f64> for Lanes<D, W> {
             type Output = Self;
             #[inline(always)]
-            fn $method(self, other: f64) -> Self {
-                Lanes(self.0.map(|a| a.$method(other)))
+            fn $method(mut self, other: f64) -> Self {
+                for a in &mut self.0 {
+                    *a = a.$method(other);
+                }
+                self
             }
         }
     };
@@ -39,8 +45,11 @@ lane_operator!(Div, div);
 impl<D: Scalar, const W: usize> Neg for Lanes<D, W> {
     type Output = Self;
     #[inline(always)]
-    fn neg(self) -> Self {
-        Lanes(self.0.map(|a| -a))
+    fn neg(mut self) -> Self {
+        for a in &mut self.0 {
+            *a = -*a;
+        }
+        self
     }
 }
 
@@ -51,17 +60,26 @@ impl<D: Scalar, const W: usize> Scalar for Lanes<D, W> {
     }
 
     #[inline(always)]
-    fn sqrt(self) -> Self {
-        Lanes(self.0.map(D::sqrt))
+    fn sqrt(mut self) -> Self {
+        for a in &mut self.0 {
+            *a = a.sqrt();
+        }
+        self
     }
 
     #[inline(always)]
-    fn recip(self) -> Self {
-        Lanes(self.0.map(D::recip))
+    fn recip(mut self) -> Self {
+        for a in &mut self.0 {
+            *a = a.recip();
+        }
+        self
     }
 
     #[inline(always)]
-    fn mul_add(self, a: Self, b: Self) -> Self {
-        Lanes(std::array::from_fn(|i| self.0[i].mul_add(a.0[i], b.0[i])))
+    fn mul_add(mut self, a: Self, b: Self) -> Self {
+        for ((s, a), b) in self.0.iter_mut().zip(a.0).zip(b.0) {
+            *s = s.mul_add(a, b);
+        }
+        self
     }
 }

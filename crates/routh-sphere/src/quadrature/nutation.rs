@@ -629,8 +629,9 @@ impl ExactSolution {
     /// and its error, with the same text, exactly when `new` errs. The same decision and the
     /// same series, without what only the states and the error estimate need (the nutation
     /// solved again with moved integrals, the phase of the initial state, the probes of the
-    /// accuracy): about half the cost of `new` (0.47 ms against 0.88 ms on the default case,
-    /// `benches/quadrature.rs`). What the `quadrature` columns of a sweep use.
+    /// accuracy): about half the cost of `new` (on the default case 0.25 ms against 0.50 ms,
+    /// `benches/quadrature.rs`; `new` took 0.88 ms before Q' and Q'' were evaluated in lanes).
+    /// What the `quadrature` columns of a sweep use.
     pub fn nutation_numbers(body: &Body, initial: &State) -> Result<NutationNumbers> {
         require_finite_inertia(body)?;
         let units = Units::of(body, &initial.omega(body)).binary();

@@ -761,20 +761,24 @@ impl<D: Real, const W: usize> FrameScalar for Lanes<D, W> {
     /// Lane by lane, each in its own form.
     #[inline(always)]
     fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
-        Lanes(std::array::from_fn(|i| {
-            jellett_divided_at(geo, x.0[i], h.0[i], g.0[i])
-        }))
+        let mut j = x;
+        for (i, j) in j.0.iter_mut().enumerate() {
+            *j = jellett_divided_at(geo, x.0[i], h.0[i], g.0[i]);
+        }
+        j
     }
 }
 
 /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`,
 /// `h = h_p - p R x`, with the constants of the pole.
+#[inline(always)]
 fn g_change_at<D: Scalar>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
     let change = x * ((-x + 2.0) * geo.amr2 - (h + geo.hp) * geo.cmpr);
     (change, (change + geo.gp2).sqrt())
 }
 
 /// `J(x)` of [`Reduction::jellett_divided`] at `x = 1 - p u` with `h` and `g = g(u)` there.
+#[inline(always)]
 fn jellett_divided_at<D: Real>(geo: &PoleGeometry, x: D, h: D, g: D) -> D {
     let (hp, gp) = (geo.hp, geo.gp);
     if h.re() * hp > 0.0 {
