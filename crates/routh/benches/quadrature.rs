@@ -1,6 +1,7 @@
 //! The exact solution by quadrature against step-by-step integration, on the default case:
-//! the one-period precomputation, the state at t = 1e6 after it, and (timed once: it takes
-//! tens of seconds) DOP853 from 0 to 1e6 with the case's tolerances.
+//! the one-period precomputation, the period and the advance alone (the sweep's `quadrature`
+//! columns, `ExactSolution::nutation_numbers`), the state at t = 1e6 after it, and (timed
+//! once: it takes tens of seconds) DOP853 from 0 to 1e6 with the case's tolerances.
 
 use criterion::Criterion;
 use routh::case::Case;
@@ -26,6 +27,11 @@ fn quadrature(c: &mut Criterion) {
     group.sample_size(50);
     group.bench_function("precompute (turning points, period, series)", |b| {
         b.iter(|| ExactSolution::new(black_box(&body), black_box(&x0)).unwrap())
+    });
+    // What a sweep's `quadrature` columns use: the same period and advance, bit for bit,
+    // without the error estimate's second solve, the phase and the probes.
+    group.bench_function("period and advance only (nutation_numbers)", |b| {
+        b.iter(|| ExactSolution::nutation_numbers(black_box(&body), black_box(&x0)).unwrap())
     });
     group.bench_function("state at t = 1e6", |b| {
         b.iter(|| exact.state_at(black_box(T_LONG)))

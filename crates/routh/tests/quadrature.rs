@@ -616,7 +616,7 @@ mod quadrature {
 
     /// A point on the homoclinic orbit of the unstable vertical spin at `spin` (below Routh's
     /// threshold), at `gamma3 = u`: the same integrals, omega_n from `(du/dt)^2 = Q(u)`.
-    fn on_separatrix(body: &Body, spin: f64, u: f64) -> State {
+    pub(super) fn on_separatrix(body: &Body, spin: f64, u: f64) -> State {
         let top = routh::steady::vertical_spin_state(body, 1.0, spin).unwrap();
         let red = Reduction::of_state(body, &top).unwrap();
         let s = (1.0 - u * u).sqrt();
@@ -977,13 +977,13 @@ mod exact_in_any_units {
     use routh::RouthError;
     use std::f64::consts::{PI, TAU};
 
-    fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {
+    pub(super) fn state(body: &Body, gamma: [f64; 3], omega: [f64; 3]) -> State {
         State::from_omega(body, gamma, omega, Normalise::Rescale).unwrap()
     }
 
     /// The same motion in other units: the body and the state scaled in mass by `k`, length by
     /// `l` and time by `s` (the library's [`scaled_body`] and [`scaled_state`]).
-    fn scaled(body: &Body, x: &State, factors: [f64; 3]) -> (Body, State) {
+    pub(super) fn scaled(body: &Body, x: &State, factors: [f64; 3]) -> (Body, State) {
         (
             scaled_body(body, factors).unwrap(),
             scaled_state(x, factors),
@@ -1062,7 +1062,7 @@ mod exact_in_any_units {
 
     /// Where a random state starts.
     #[derive(Debug, Clone, Copy)]
-    enum Start {
+    pub(super) enum Start {
         /// gamma uniform on the sphere, omega of any direction, 0.1 to 20 rates of the fall.
         Anywhere,
         /// gamma within 1e-9 to 1e-3 of a pole, omega of any direction.
@@ -1075,7 +1075,7 @@ mod exact_in_any_units {
     /// A random Routh sphere in its own units (m = R = 1; I1 from 0.05 to 1, I3 / I1 from 1e-3,
     /// slender, to 2, flat, the triangle inequality's limit; a of either sign; G = 9.81 or 0)
     /// and a random state of a random `Start`.
-    fn random_problem() -> impl Strategy<Value = (Body, State, Start)> {
+    pub(super) fn random_problem() -> impl Strategy<Value = (Body, State, Start)> {
         let unit = || [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0];
         (
             (
@@ -1131,7 +1131,7 @@ mod exact_in_any_units {
     /// problem, a few eps away, whose difference measures the condition of the motion, up to
     /// 1.8e-12 near Routh's threshold; those copies are checked on the default case, whose
     /// condition is known: `the_scaled_default_case_is_the_default_case`.)
-    fn random_factors() -> impl Strategy<Value = [f64; 3]> {
+    pub(super) fn random_factors() -> impl Strategy<Value = [f64; 3]> {
         (-100i32..=100, -16i32..=16, -17i32..=17)
             .prop_map(|(k, l, s)| [2f64.powi(k), 4f64.powi(l), 2f64.powi(s)])
     }
@@ -1233,12 +1233,12 @@ mod exact_in_any_units {
 
     /// The default case's body (m = 1, R = 1, a = 0.3, I1 = 0.4, I3 = 0.5, G = 9.81) with `m`,
     /// `I1` and `I3` given.
-    fn default_body(m: f64, i1: f64, i3: f64) -> Body {
+    pub(super) fn default_body(m: f64, i1: f64, i3: f64) -> Body {
         Body::new(m, 1.0, 0.3, i1, i1, i3, 9.81).unwrap()
     }
 
     /// The default case's initial state.
-    fn default_state(body: &Body) -> State {
+    pub(super) fn default_state(body: &Body) -> State {
         state(
             body,
             [0.29552020666133955, 0.0, 0.955336489125606],
@@ -1251,7 +1251,7 @@ mod exact_in_any_units {
     /// horizontal omega: before, at t = 10 the first was answered 4.4e-3 off DOP853 with an
     /// estimate of 4e-14, the second 4.2e-2 (1.6e-3 already at t = 0) with 3e-13, the third
     /// 1.9e-4 with 5e-13; the fourth is the brief's kind of state (solved before too).
-    fn slender_near_the_axis() -> Vec<(Body, State)> {
+    pub(super) fn slender_near_the_axis() -> Vec<(Body, State)> {
         let body = default_body(1.0, 0.4, 1e-3);
         [
             (
@@ -1769,5 +1769,306 @@ mod exact_unresolved {
         let resolved = State::new([-1.0, 0.0, 0.0], [0.0, 1.0, 1.0], Normalise::Reject).unwrap();
         let exact = ExactSolution::new(&body, &resolved).unwrap();
         assert!(exact.accuracy.checked_error_at(1.0).is_ok());
+    }
+}
+
+mod exact_numbers {
+    //! Issue 34: `ExactSolution::nutation_numbers`, the period and the advance alone (what a
+    //! sweep's `quadrature` columns use), is `ExactSolution::new` bit for bit: the same period
+    //! and advance of a nutation, `None` for a steady motion, and the same error, with the same
+    //! text, exactly when `new` errs. On random bodies and states anywhere, near the poles,
+    //! near Routh's threshold, near the steady precessions and near the separatrix of the
+    //! vertical spin, slender (I3 / I1 down to 1e-3) and flat, each in units scaled by powers of
+    //! two (masses 2^+-100, lengths 4^+-16, times 2^+-17), by decimal factors or not at all.
+
+    use crate::exact_in_any_units::{
+        default_body, default_state, random_factors, random_problem, scaled, slender_near_the_axis,
+        state,
+    };
+    use crate::quadrature::on_separatrix;
+    use proptest::prelude::*;
+    use proptest::test_runner::{RngSeed, TestCaseError, TestRunner};
+    use routh::body::Body;
+    use routh::quadrature::{ExactSolution, Motion, NutationNumbers, Reduction};
+    use routh::state::{Normalise, State};
+    use routh::steady::{routh_threshold, steady_precessions};
+    use routh::RouthError;
+
+    /// Random cases of the property test (each one body and state, compared once).
+    const CASES: u32 = 3000;
+
+    /// Why the numbers `numbers` differ from those of the solution `exact`, if they do: the
+    /// period and the advance compared by their bits, the errors by their text.
+    fn difference(
+        exact: &Result<ExactSolution, RouthError>,
+        numbers: &Result<NutationNumbers, RouthError>,
+    ) -> Option<String> {
+        let bits = |v: Option<f64>| v.map(f64::to_bits);
+        match (exact, numbers) {
+            (Ok(exact), Ok(numbers)) => {
+                let advance = match &exact.motion {
+                    Motion::Nutation(nut) => Some(nut.advance),
+                    Motion::Steady { .. } => None,
+                };
+                (bits(exact.period()) != bits(numbers.period)
+                    || bits(advance) != bits(numbers.advance))
+                .then(|| {
+                    format!(
+                        "period {:?} against {:?}, advance {advance:?} against {:?}",
+                        exact.period(),
+                        numbers.period,
+                        numbers.advance
+                    )
+                })
+            }
+            (Err(a), Err(b)) => {
+                (a.to_string() != b.to_string()).then(|| format!("{a} against {b}"))
+            }
+            (a, b) => Some(format!(
+                "{:?} against {:?}",
+                a.as_ref().err(),
+                b.as_ref().err()
+            )),
+        }
+    }
+
+    /// The comparison of `ExactSolution::new` and `nutation_numbers` at one body and state.
+    fn compare(body: &Body, x0: &State) -> Option<String> {
+        difference(
+            &ExactSolution::new(body, x0),
+            &ExactSolution::nutation_numbers(body, x0),
+        )
+    }
+
+    /// A random Routh sphere of `random_problem`'s range (m = R = 1; I1 from 0.05 to 1, I3 / I1
+    /// from 1e-3 to 2; a of either sign; G = 9.81).
+    fn random_body() -> impl Strategy<Value = Body> {
+        (
+            -1.3f64..0.0,
+            -3.0f64..2f64.log10(),
+            0.05f64..0.8,
+            any::<bool>(),
+        )
+            .prop_map(|(log_i1, log_ratio, a, up)| {
+                let i1 = 10f64.powf(log_i1);
+                let i3 = (i1 * 10f64.powf(log_ratio)).min(2.0 * i1);
+                let a = if up { a } else { -a };
+                Body::new(1.0, 1.0, a, i1, i1, i3, 9.81).unwrap()
+            })
+    }
+
+    /// A steady precession at a random tilt and spin ([`steady_precessions`]), its omega moved
+    /// by a relative 1e-16 to 1e-3 (or not at all).
+    fn near_a_steady_precession() -> impl Strategy<Value = Option<(Body, State)>> {
+        (
+            random_body(),
+            0.05f64..3.09,
+            -20.0f64..20.0,
+            any::<bool>(),
+            prop_oneof![Just(0.0), -16.0f64..-3.0],
+            [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0],
+        )
+            .prop_map(|(body, theta, spin, far, log_off, dir)| {
+                let precessions = steady_precessions(&body, theta, spin).ok()?;
+                let steady = if far {
+                    precessions.last()
+                } else {
+                    precessions.first()
+                }?;
+                let off = if log_off == 0.0 {
+                    0.0
+                } else {
+                    10f64.powf(log_off)
+                };
+                let omega = steady.state.omega(&body);
+                let size = omega.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+                let moved = std::array::from_fn(|i| omega[i] + off * size * dir[i]);
+                Some((body, state(&body, steady.state.gamma, moved)))
+            })
+    }
+
+    /// A point of the homoclinic orbit of the unstable top-heavy vertical spin (a spin of 0.1
+    /// to 0.95 of Routh's threshold, a > 0), its omega moved by a relative 1e-16 to 1e-4 (or
+    /// not at all): on either side of the separatrix, or on it within round-off.
+    fn near_the_separatrix() -> impl Strategy<Value = Option<(Body, State)>> {
+        (
+            random_body(),
+            0.1f64..0.95,
+            -0.9f64..0.99,
+            prop_oneof![Just(0.0), -16.0f64..-4.0],
+            [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0],
+        )
+            .prop_map(|(body, fraction, u, log_off, dir)| {
+                let body = Body::new(
+                    1.0,
+                    1.0,
+                    body.a().abs(),
+                    body.i1(),
+                    body.i1(),
+                    body.i3(),
+                    9.81,
+                )
+                .unwrap();
+                let spin = fraction * routh_threshold(&body, 1.0);
+                let on = separatrix_point(&body, spin, u)?;
+                let off = if log_off == 0.0 {
+                    0.0
+                } else {
+                    10f64.powf(log_off)
+                };
+                let omega = on.omega(&body);
+                let size = omega.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+                let moved = std::array::from_fn(|i| omega[i] + off * size * dir[i]);
+                Some((body, state(&body, on.gamma, moved)))
+            })
+    }
+
+    /// `on_separatrix`, or `None` where it would panic (no motion at `u`).
+    fn separatrix_point(body: &Body, spin: f64, u: f64) -> Option<State> {
+        let top = routh::steady::vertical_spin_state(body, 1.0, spin).ok()?;
+        let red = Reduction::of_state(body, &top).ok()?;
+        let s = (1.0 - u * u).sqrt();
+        let q = red.q(u);
+        if q.is_nan() || q <= 0.0 {
+            return None;
+        }
+        let (gamma, omega) = red.omega(u, s, 0.0, q.sqrt() / s, red.jellett_quotient(u));
+        State::from_omega(body, gamma, omega, Normalise::Rescale).ok()
+    }
+
+    /// A random case: `random_problem`'s (anywhere, near a pole, near Routh's threshold), near
+    /// a steady precession or near the separatrix, in its own units, in units scaled by powers
+    /// of two (`random_factors`: huge and tiny), or by decimal factors (another problem, a few
+    /// eps away, with its own decisions).
+    fn random_case() -> impl Strategy<Value = Option<(Body, State)>> {
+        let motion = prop_oneof![
+            3 => random_problem().prop_map(|(body, x0, _)| Some((body, x0))),
+            1 => near_a_steady_precession(),
+            1 => near_the_separatrix(),
+        ];
+        let factors = prop_oneof![
+            2 => Just([1.0; 3]),
+            2 => random_factors(),
+            1 => (-30.0f64..30.0, -8.0f64..8.0, -5.0f64..5.0)
+                .prop_map(|(k, l, s)| [10f64.powf(k), 10f64.powf(l), 10f64.powf(s)]),
+        ];
+        (motion, factors).prop_map(|(motion, factors)| {
+            let (body, x0) = motion?;
+            Some(scaled(&body, &x0, factors))
+        })
+    }
+
+    /// `nutation_numbers` is `new`'s period and advance, or its error, bit for bit, on `CASES`
+    /// random cases; each kind of outcome (nutation, steady, refusal) is met.
+    #[test]
+    fn nutation_numbers_are_those_of_the_exact_solution_bit_for_bit() {
+        let config = ProptestConfig {
+            cases: CASES,
+            failure_persistence: None,
+            rng_seed: RngSeed::Fixed(34),
+            ..ProptestConfig::default()
+        };
+        // Nutations, steady motions, refusals, and cases not built (no steady precession at
+        // the tilt, no motion at the point of the separatrix).
+        let outcomes = std::cell::RefCell::new([0usize; 4]);
+        let result = TestRunner::new(config).run(&random_case(), |case| {
+            let Some((body, x0)) = case else {
+                outcomes.borrow_mut()[3] += 1;
+                return Ok(());
+            };
+            if let Some(difference) = compare(&body, &x0) {
+                return Err(TestCaseError::fail(format!(
+                    "{body:?} {x0:?}: {difference}"
+                )));
+            }
+            outcomes.borrow_mut()[match ExactSolution::nutation_numbers(&body, &x0) {
+                Ok(NutationNumbers {
+                    period: Some(_), ..
+                }) => 0,
+                Ok(_) => 1,
+                Err(_) => 2,
+            }] += 1;
+            Ok(())
+        });
+        let outcomes = outcomes.into_inner();
+        println!(
+            "{CASES} cases: {} nutations, {} steady, {} refused, {} not built",
+            outcomes[0], outcomes[1], outcomes[2], outcomes[3]
+        );
+        if let Err(e) = result {
+            panic!("{e}");
+        }
+        assert!(outcomes[..3].iter().all(|&n| n >= 20), "{outcomes:?}");
+    }
+
+    #[test]
+    fn nutation_numbers_of_the_reproducers_are_those_of_the_exact_solution() {
+        // The slender body near the axis, the default case in decimal units, a separatrix, a
+        // vertical spin, a start nearly at rest, a state that does not fix its omega and a
+        // period beyond f64: nutations, steady motions and each kind of refusal.
+        let mut cases = slender_near_the_axis();
+        let body = default_body(1.0, 0.4, 0.5);
+        let x0 = default_state(&body);
+        cases.push((body, x0));
+        cases.push(scaled(&body, &x0, [1e12, 1e3, 1e-2]));
+        let spin = 0.5 * routh_threshold(&Body::default(), 1.0);
+        cases.push((Body::default(), on_separatrix(&Body::default(), spin, 0.9)));
+        cases.push((body, state(&body, [0.0, 0.0, 1.0], [0.0, 0.0, 20.0])));
+        let heavy = default_body(1e30, 0.4, 0.5);
+        cases.push((heavy, default_state(&heavy)));
+        let fuzz = Body::new(0.1, 0.1, 0.0609375, 607.84, 607.84, 607.84, 607.84).unwrap();
+        cases.push((
+            fuzz,
+            State::new([-1.0, 0.0, 0.0], [0.0, 1e-160, 1e-160], Normalise::Reject).unwrap(),
+        ));
+        let free = Body::new(1.0, 1.0, 0.3, 0.4, 0.4, 0.5, 0.0).unwrap();
+        cases.push((
+            free,
+            state(&free, [0.6, 0.0, 0.8], [2.2e-308, 0.0, 2.2e-308]),
+        ));
+        let mut outcomes = [0; 3];
+        for (body, x0) in &cases {
+            if let Some(difference) = compare(body, x0) {
+                panic!("{body:?} {x0:?}: {difference}");
+            }
+            outcomes[match ExactSolution::nutation_numbers(body, x0) {
+                Ok(NutationNumbers {
+                    period: Some(_), ..
+                }) => 0,
+                Ok(_) => 1,
+                Err(_) => 2,
+            }] += 1;
+        }
+        println!(
+            "{} cases: {outcomes:?} nutations, steady, refused",
+            cases.len()
+        );
+        assert!(outcomes.iter().all(|&n| n > 0), "{outcomes:?}");
+    }
+
+    #[test]
+    fn a_comparison_with_another_state_fails() {
+        // Negative control of the bitwise comparison: the numbers of the default case against
+        // the solution of the same state with M1 moved by one ulp, by 1e-12, and against a
+        // refusal (a separatrix), each differ.
+        let body = default_body(1.0, 0.4, 0.5);
+        let x0 = default_state(&body);
+        let numbers = ExactSolution::nutation_numbers(&body, &x0);
+        assert_eq!(difference(&ExactSolution::new(&body, &x0), &numbers), None);
+        for moved in [f64::EPSILON, 1e-12] {
+            let mut other = x0;
+            other.m[0] *= 1.0 + moved;
+            let found = difference(&ExactSolution::new(&body, &other), &numbers);
+            println!("M1 moved by {moved:e}: {found:?}");
+            assert!(found.is_some(), "M1 moved by {moved:e}");
+        }
+        let spin = 0.5 * routh_threshold(&Body::default(), 1.0);
+        let separatrix = on_separatrix(&Body::default(), spin, 0.9);
+        assert!(difference(&ExactSolution::new(&Body::default(), &separatrix), &numbers).is_some());
+        assert!(difference(
+            &ExactSolution::new(&Body::default(), &separatrix),
+            &ExactSolution::nutation_numbers(&Body::default(), &separatrix)
+        )
+        .is_none());
     }
 }

@@ -59,6 +59,14 @@ impl GaussLegendre {
             .map(|(x, w)| w * f(*x))
             .sum()
     }
+
+    /// The integral over [0, 1] of the function whose `values` at the nodes are given: bit
+    /// for bit [`GaussLegendre::integrate`] of that function (the same products, summed in
+    /// the same order).
+    pub fn integrate_values(&self, values: &[f64]) -> f64 {
+        assert_eq!(values.len(), self.nodes.len(), "one value a node");
+        values.iter().zip(&self.weights).map(|(v, w)| w * v).sum()
+    }
 }
 
 /// A Gauss-Legendre rule loses its geometric convergence when a singularity of the
@@ -83,13 +91,28 @@ impl GaussLegendre {
         singularities: &[(f64, f64)],
         f: &impl Fn(f64) -> f64,
     ) -> (f64, usize) {
+        self.mean_avoiding_by(a, b, singularities, &|a, b| {
+            self.integrate(|tau| f(a + tau * (b - a)))
+        })
+    }
+
+    /// [`GaussLegendre::mean_avoiding`] with the rule's integral over a piece `[a, b]` given by
+    /// `piece(a, b)` (the mean of f there, `integrate(|tau| f(a + tau (b - a)))`, computed as
+    /// the caller can, e.g. at all the nodes at once): the same pieces, the same sums.
+    pub fn mean_avoiding_by(
+        &self,
+        a: f64,
+        b: f64,
+        singularities: &[(f64, f64)],
+        piece: &impl Fn(f64, f64) -> f64,
+    ) -> (f64, usize) {
         let min_rho = self.min_rho();
         let near = |a: f64, b: f64| {
             singularities
                 .iter()
                 .any(|&z| bernstein_rho(a, b, z) < min_rho)
         };
-        self.mean_at_depth(a, b, &near, f, 0)
+        self.mean_at_depth(a, b, &near, piece, 0)
     }
 
     /// The smallest Bernstein parameter of a singularity for which this rule's error,
@@ -98,21 +121,22 @@ impl GaussLegendre {
         SINGULARITY_ERROR.powf(-0.5 / self.nodes.len() as f64)
     }
 
-    /// The mean over `[a, b]`, bisected while `near(a, b)` (a singularity too close).
+    /// The mean over `[a, b]`, bisected while `near(a, b)` (a singularity too close), each
+    /// piece's by `piece`.
     fn mean_at_depth(
         &self,
         a: f64,
         b: f64,
         near: &impl Fn(f64, f64) -> bool,
-        f: &impl Fn(f64) -> f64,
+        piece: &impl Fn(f64, f64) -> f64,
         depth: u32,
     ) -> (f64, usize) {
         if !near(a, b) || depth >= MAX_DEPTH || a == b {
-            return (self.integrate(|tau| f(a + tau * (b - a))), 1);
+            return (piece(a, b), 1);
         }
         let m = 0.5 * (a + b);
-        let (left, n_left) = self.mean_at_depth(a, m, near, f, depth + 1);
-        let (right, n_right) = self.mean_at_depth(m, b, near, f, depth + 1);
+        let (left, n_left) = self.mean_at_depth(a, m, near, piece, depth + 1);
+        let (right, n_right) = self.mean_at_depth(m, b, near, piece, depth + 1);
         (0.5 * (left + right), n_left + n_right)
     }
 }

@@ -7,9 +7,10 @@
 //! `docs/quadrature.md`.
 
 pub mod gauss;
+pub mod lanes;
 pub mod nutation;
 pub mod panels;
 pub mod reduction;
 
-pub use nutation::{Accuracy, ExactSolution, Motion, Nutation};
+pub use nutation::{Accuracy, ExactSolution, Motion, Nutation, NutationNumbers};
 pub use reduction::Reduction;

@@ -43,6 +43,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 const SAMPLE_BUDGET: usize = if cfg!(fuzzing) { 640 } else { 6400 };
 /// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
 const DIVIDED_DIFFERENCE_NODES: usize = 24;
+/// Lanes of the evaluations of Q' at those nodes ([`Reduction::q_slopes_in_frame`]).
+const SLOPE_LANES: usize = 8;
+const _: () = assert!(DIVIDED_DIFFERENCE_NODES % SLOPE_LANES == 0);
 /// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
 /// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
 /// to R and a large m) every sample bisects toward it, and with the sample budget that took
@@ -209,6 +212,52 @@ pub enum Motion {
     },
     /// A nutation between two turning points.
     Nutation(Nutation),
+}
+
+/// The nutation period and the advance of the precession angle per period of the motion
+/// through one initial state, in the problem's units: [`ExactSolution::nutation_numbers`].
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct NutationNumbers {
+    /// The nutation period ([`Nutation::period`]); `None` for a steady motion.
+    pub period: Option<f64>,
+    /// The advance per period of the precession angle psi ([`Nutation::advance`]); `None`
+    /// for a steady motion.
+    pub advance: Option<f64>,
+}
+
+/// The decision of [`ExactSolution::decide`], in the dimensionless problem.
+// One per solution, moved once (as `Motion`): boxing the nutation would save nothing.
+#[allow(clippy::large_enum_variant)]
+enum Decision {
+    /// A steady motion at `gamma3 = u`, rotating at `precession` (per unit of the
+    /// dimensionless time), with its accuracy.
+    Steady {
+        u: f64,
+        precession: f64,
+        accuracy: Accuracy,
+    },
+    /// A nutation, its series solved, with what its error estimate needs.
+    Nutation(Solved),
+}
+
+/// A nutation as decided, with the numbers of the decision that its error estimate
+/// ([`ExactSolution::sensitivity`]) and its accuracy use.
+struct Solved {
+    /// The series, period and advance; not yet the phase of the initial state.
+    nutation: Nutation,
+    /// The pole of the initial state's hemisphere.
+    pole: f64,
+    /// The middle of the nutation in `x = 1 - pole u`, and in u.
+    x_mid: f64,
+    mid: f64,
+    /// The round-off of the integrals ([`Reduction::frames_of_state`]).
+    errors: [f64; 5],
+    /// The relative error of the period from the round-off of the turning points.
+    root_error: f64,
+    /// The relative error of omega fixed by the state (`omega_round_off`).
+    conditioning: f64,
+    /// `d gamma3 / dt` at the start.
+    udot0: f64,
 }
 
 /// The exact solution of (mg-eq) for the Routh sphere through one initial state, all its
@@ -557,6 +606,7 @@ impl ExactSolution {
         require_finite_inertia(body)?;
         let units = Units::of(body, &initial.omega(body)).binary();
         let (motion, accuracy) = Self::solve(&units.body(body)?, &units.state(initial), units)?;
+        let reduction = Reduction::of_state(body, initial)?;
         let motion = match motion {
             Motion::Steady { u, precession, .. } => Motion::Steady {
                 u,
@@ -567,9 +617,36 @@ impl ExactSolution {
         };
         Ok(ExactSolution {
             body: *body,
-            reduction: Reduction::of_state(body, initial)?,
+            reduction,
             motion,
             accuracy: accuracy.in_time_unit(units.time()),
+        })
+    }
+
+    /// The nutation period and the advance per period of the precession angle of the motion
+    /// through `initial`: bit for bit `ExactSolution::new(body, initial)`'s
+    /// [`ExactSolution::period`] and [`Nutation::advance`] (both `None` for a steady motion),
+    /// and its error, with the same text, exactly when `new` errs. The same decision and the
+    /// same series, without what only the states and the error estimate need (the nutation
+    /// solved again with moved integrals, the phase of the initial state, the probes of the
+    /// accuracy): about half the cost of `new` (on the default case 0.25 ms against 0.50 ms,
+    /// `benches/quadrature.rs`; `new` took 0.88 ms before Q' and Q'' were evaluated in lanes).
+    /// What the `quadrature` columns of a sweep use.
+    pub fn nutation_numbers(body: &Body, initial: &State) -> Result<NutationNumbers> {
+        require_finite_inertia(body)?;
+        let units = Units::of(body, &initial.omega(body)).binary();
+        let decision = Self::decide(&units.body(body)?, &units.state(initial), units)?;
+        // `new` builds this too, and refuses what it refuses.
+        Reduction::of_state(body, initial)?;
+        Ok(match decision {
+            Decision::Steady { .. } => NutationNumbers {
+                period: None,
+                advance: None,
+            },
+            Decision::Nutation(solved) => NutationNumbers {
+                period: Some(solved.nutation.period),
+                advance: Some(solved.nutation.advance),
+            },
         })
     }
 
@@ -577,6 +654,72 @@ impl ExactSolution {
     /// `units`: R = m = 1, and the faster of the fall and the spin 1) and its accuracy, in
     /// those units; a nutation reports its own numbers in the problem's units ([`Nutation`]).
     fn solve(body: &Body, initial: &State, units: Units) -> Result<(Motion, Accuracy)> {
+        let Solved {
+            mut nutation,
+            pole,
+            x_mid,
+            mid,
+            errors,
+            root_error,
+            conditioning,
+            udot0,
+        } = match Self::decide(body, initial, units)? {
+            Decision::Steady {
+                u,
+                precession,
+                accuracy,
+            } => {
+                let steady = Motion::Steady {
+                    u,
+                    precession,
+                    initial: *initial,
+                };
+                return Ok((steady, accuracy));
+            }
+            Decision::Nutation(solved) => solved,
+        };
+        nutation.start_at(initial, udot0);
+        match Self::sensitivity(&nutation, (pole, x_mid), mid, errors) {
+            Some((period, advance)) => {
+                nutation.period_error += period;
+                nutation.advance_error += advance;
+            }
+            None => {
+                nutation.period_error += root_error;
+                nutation.advance_error += root_error * nutation.advance.abs();
+            }
+        }
+        // The state moves at `velocity` (relative sizes: gamma against 1, M against the size
+        // of M of the initial state), so a time error dt = T dT/T per period moves it by
+        // `velocity dt`; an error of psi rotates its horizontal part. Both vary along the
+        // nutation: their largest values at the turning points, the quarter phases and the
+        // widest tilt are taken.
+        let states = nutation.probes();
+        let m_size = nutation.momentum_scale;
+        let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
+        for x in &states {
+            let field = vector_field(body, x);
+            velocity = velocity.max(norm(&field[..3]) + norm(&field[3..]) / m_size);
+            horizontal = horizontal.max(norm(&x[..2]) + norm(&x[3..5]) / m_size);
+        }
+        let period = nutation.cycle();
+        let per_period =
+            velocity * period * nutation.period_error + horizontal * nutation.advance_error;
+        // The error of omega from the state moves it at that relative error of its speed.
+        let accuracy = Accuracy {
+            initial: per_period,
+            drift: per_period / period + conditioning * velocity,
+            growth: 0.0,
+        };
+        Ok((Motion::Nutation(nutation), accuracy))
+    }
+
+    /// The decision of [`ExactSolution::solve`] (steady, nutation or separatrix) and, for a
+    /// nutation, its series, period and advance ([`Nutation::series`]) with what the error
+    /// estimate needs; not the phase of the initial state nor the error estimate. The one
+    /// place of the decision: [`ExactSolution::new`] and [`ExactSolution::nutation_numbers`]
+    /// both take it from here.
+    fn decide(body: &Body, initial: &State, units: Units) -> Result<Decision> {
         let conditioning = omega_round_off(body, initial);
         if !(conditioning <= Accuracy::REFUSAL) {
             return Err(RouthError::Singular {
@@ -593,16 +736,10 @@ impl ExactSolution {
         // Its error of omega (`conditioning`) is counted in the drift of the estimate.
         let (_, errors) = red.frames_of_state(initial, 0.0);
         let u0 = initial.gamma[2];
-        let steady = |u: f64, precession: f64, accuracy: Accuracy| {
-            let initial = *initial;
-            (
-                Motion::Steady {
-                    u,
-                    precession,
-                    initial,
-                },
-                accuracy,
-            )
+        let steady = |u: f64, precession: f64, accuracy: Accuracy| Decision::Steady {
+            u,
+            precession,
+            accuracy,
         };
         let omega = initial.omega(body);
         let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
@@ -710,40 +847,17 @@ impl ExactSolution {
             }
             root_error += shift / width;
         }
-        let mut nutation = Nutation::new(red, &turnings, initial, udot0, units)?;
-        match Self::sensitivity(&nutation, (pole, x_mid), mid, errors, initial, udot0) {
-            Some((period, advance)) => {
-                nutation.period_error += period;
-                nutation.advance_error += advance;
-            }
-            None => {
-                nutation.period_error += root_error;
-                nutation.advance_error += root_error * nutation.advance.abs();
-            }
-        }
-        // The state moves at `velocity` (relative sizes: gamma against 1, M against the size
-        // of M of the initial state), so a time error dt = T dT/T per period moves it by
-        // `velocity dt`; an error of psi rotates its horizontal part. Both vary along the
-        // nutation: their largest values at the turning points, the quarter phases and the
-        // widest tilt are taken.
-        let states = nutation.probes();
-        let m_size = nutation.momentum_scale;
-        let (mut velocity, mut horizontal) = (0.0_f64, 0.0_f64);
-        for x in &states {
-            let field = vector_field(body, x);
-            velocity = velocity.max(norm(&field[..3]) + norm(&field[3..]) / m_size);
-            horizontal = horizontal.max(norm(&x[..2]) + norm(&x[3..5]) / m_size);
-        }
-        let period = nutation.cycle();
-        let per_period =
-            velocity * period * nutation.period_error + horizontal * nutation.advance_error;
-        // The error of omega from the state moves it at that relative error of its speed.
-        let accuracy = Accuracy {
-            initial: per_period,
-            drift: per_period / period + conditioning * velocity,
-            growth: 0.0,
-        };
-        Ok((Motion::Nutation(nutation), accuracy))
+        let nutation = Nutation::series(red, &turnings, units)?;
+        Ok(Decision::Nutation(Solved {
+            nutation,
+            pole,
+            x_mid,
+            mid,
+            errors,
+            root_error,
+            conditioning,
+            udot0,
+        }))
     }
 
     /// How much the round-off of the integrals changes the period and the advance: the
@@ -759,8 +873,6 @@ impl ExactSolution {
         (pole, x_mid): (f64, f64),
         mid: f64,
         errors: [f64; 5],
-        initial: &State,
-        udot0: f64,
     ) -> Option<(f64, f64)> {
         let red = &nutation.reduction;
         let grad = red.q_integral_gradient(mid);
@@ -784,7 +896,9 @@ impl ExactSolution {
             upper: turnings.upper.snapped(1.0),
             ..turnings
         };
-        let alt = Nutation::new(other, &turnings, initial, udot0, nutation.units).ok()?;
+        // Only the period and the advance are compared: the series alone, without the phase
+        // of the initial state.
+        let alt = Nutation::series(other, &turnings, nutation.units).ok()?;
         Some((
             (alt.period - nutation.period).abs() / (k * nutation.period),
             (alt.advance - nutation.advance).abs() / k,
@@ -958,15 +1072,11 @@ impl Phase {
 }
 
 impl Nutation {
-    /// The nutation of the dimensionless problem of `red` (in `units`) between `turnings`,
-    /// through `initial` (dimensionless) moving at `udot0 = d gamma3 / dt`.
-    fn new(
-        red: Reduction,
-        turnings: &Turnings,
-        initial: &State,
-        udot0: f64,
-        units: Units,
-    ) -> Result<Self> {
+    /// The nutation of the dimensionless problem of `red` (in `units`) between `turnings`: its
+    /// series, period, advances and their errors from the series alone, all that depends on
+    /// the level set and not on the state on it. The phase of a state on it is set by
+    /// [`Nutation::start_at`] (until then `sigma0`, `momentum_scale` and `psi_ref` are 0).
+    fn series(red: Reduction, turnings: &Turnings, units: Units) -> Result<Self> {
         let (lower, upper) = (turnings.lower, turnings.upper);
         let (u1, u2) = (lower.u, upper.u);
         let mut nut = Nutation {
@@ -1024,7 +1134,6 @@ impl Nutation {
                 nut.poles.push((pole, strength));
             }
         }
-        let half = 0.5 * turnings.width;
         let built = Piecewise::build(SAMPLE_BUDGET, |sigma, rho| nut.sample(sigma, rho))?;
         let series = match built {
             Ok(series) => series,
@@ -1084,6 +1193,15 @@ impl Nutation {
         nut.period_error = 2.0 * (series.truncation[0] + series.noise[0]) / period;
         nut.advance_error = 2.0 * (series.truncation[1] + series.noise[1]);
         nut.series = series;
+        Ok(nut)
+    }
+
+    /// Set the phase of `initial` (dimensionless, on the level set of the series) moving at
+    /// `udot0 = d gamma3 / dt`: `sigma0`, the scale of M and `psi_ref`.
+    fn start_at(&mut self, initial: &State, udot0: f64) {
+        let nut = self;
+        let red = nut.reduction;
+        let half = 0.5 * nut.width;
         // The phase of the initial state from both `cos sigma0 = (mid - u0) / half` and
         // `sin sigma0 = f(sigma0) (du/dt)0 / half`: near a turning point, where u0 fixes sigma0
         // only to the square root of its error, the rate du/dt fixes it well.
@@ -1141,7 +1259,6 @@ impl Nutation {
             cross_dot(unit(model_omega), unit(omega))
         };
         nut.psi_ref = (y1 + y2).atan2(x1 + x2);
-        Ok(nut)
     }
 
     /// The states (as `[gamma, M]`) of the nutation at its turning points, its quarter phases,
@@ -1211,11 +1328,23 @@ impl Nutation {
                     phase.one_minus - self.gap_top,
                 )
             };
-            let (near, pieces) = self.rule.mean_avoiding(
+            // Each piece's nodes in lanes ([`Reduction::q_slopes_in_frame`], each
+            // `q_slope_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
+            let rule = &self.rule;
+            let (near, pieces) = rule.mean_avoiding_by(
                 x_end,
                 x,
                 &self.frame_singularities[frame_index(pole)],
-                &|v| red.q_slope_in_frame(pole, v),
+                &|a, b| {
+                    let mut slopes = [0.0; DIVIDED_DIFFERENCE_NODES];
+                    let lanes = slopes.chunks_exact_mut(SLOPE_LANES);
+                    for (chunk, nodes) in lanes.zip(rule.nodes.chunks_exact(SLOPE_LANES)) {
+                        let points: [f64; SLOPE_LANES] =
+                            std::array::from_fn(|j| a + nodes[j] * (b - a));
+                        chunk.copy_from_slice(&red.q_slopes_in_frame(pole, points));
+                    }
+                    rule.integrate_values(&slopes)
+                },
             );
             self.work.add(pieces);
             let q = red.q_in_frame(pole, x);
@@ -1239,10 +1368,12 @@ impl Nutation {
             };
             let far = near + width;
             let rule = &self.narrow_rule;
+            // The inner rule's points at once ([`Reduction::q_curvatures_in_frame`], each
+            // `q_curvature_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
             let p = -rule.integrate(|s| {
-                s * rule.integrate(|t| {
-                    red.q_curvature_in_frame(pole, near + s * (x - near) + s * t * (far - x))
-                })
+                let points: [f64; NARROW_NODES] =
+                    std::array::from_fn(|j| near + s * (x - near) + s * rule.nodes[j] * (far - x));
+                s * rule.integrate_values(&red.q_curvatures_in_frame(pole, points))
             });
             (p, f64::EPSILON * red.q_curvature_scale(phase.u) / p.abs())
         }

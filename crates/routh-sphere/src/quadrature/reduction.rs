@@ -45,10 +45,12 @@
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
+use crate::quadrature::lanes::Lanes;
 use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
 use num_dual::{
     first_derivative, second_derivative, second_partial_derivative, third_partial_derivative_vec,
+    Dual, Dual2,
 };
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
@@ -125,7 +127,7 @@ struct PoleGeometry {
 
 impl PoleGeometry {
     /// `h = h_p - p R x`, the height `R u + a` at `x = 1 - p u`.
-    fn height<D: Real>(&self, x: D) -> D {
+    fn height<D: Scalar>(&self, x: D) -> D {
         -x * self.pr + self.hp
     }
 
@@ -457,7 +459,7 @@ impl Reduction {
     }
 
     /// `[K, n_p, e_p]` of the frame of pole `p`.
-    fn frame_parameters<D: Real>(&self, pole: f64) -> [D; 3] {
+    fn frame_parameters<D: Scalar>(&self, pole: f64) -> [D; 3] {
         let f = self.frame(pole);
         [self.k, f.remainder, f.excess].map(lift)
     }
@@ -476,7 +478,7 @@ impl Reduction {
     /// The terms of `Q` at `x = 1 - p u` from the parameters `[K, n_p, e_p]` of the pole `p`
     /// (module docs): each vanishes with x or with the parameters, so near the pole they are
     /// small and Q carries no cancellation of O(1) numbers.
-    fn q_terms_in_frame<D: Real>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
+    fn q_terms_in_frame<D: FrameScalar>(&self, pole: f64, x: D, parameters: [D; 3]) -> [D; 5] {
         let b = &self.body;
         let geo = self.geometry(pole);
         let [k, remainder, excess] = parameters;
@@ -485,7 +487,7 @@ impl Reduction {
         let s2 = x * (-x + 2.0);
         let (g2_change, g) = g_change_at(geo, x, h);
         let w3 = k / g;
-        let n = x * jellett_divided_at(geo, x, h, g) * k * b.i3() + remainder;
+        let n = x * D::jellett_divided_at(geo, x, h, g) * k * b.i3() + remainder;
         let inertia = (s2 * (r * r) + h * h) * b.m() + ai;
         let rolling = w3 * s2 * r - n * h / (ai * r);
         [
@@ -611,9 +613,28 @@ impl Reduction {
         second_derivative(|v| self.q_in_frame(pole, v), x).2
     }
 
+    /// [`Reduction::q_curvature_in_frame`] at each of the points `xs`, bit for bit, evaluated
+    /// as one number of `W` lanes ([`Lanes`]: the same operations on each point, which the
+    /// processor overlaps).
+    pub fn q_curvatures_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
+        let x = Lanes(xs.map(|x| Dual2::from_re(x).derivative()));
+        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
+            .0
+            .map(|q| q.v2)
+    }
+
     /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
     pub fn q_slope_in_frame(&self, pole: f64, x: f64) -> f64 {
         first_derivative(|v| self.q_in_frame(pole, v), x).1
+    }
+
+    /// [`Reduction::q_slope_in_frame`] at each of the points `xs`, bit for bit, evaluated as
+    /// one number of `W` lanes (as [`Reduction::q_curvatures_in_frame`]).
+    pub fn q_slopes_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
+        let x = Lanes(xs.map(|x| Dual::from_re(x).derivative()));
+        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
+            .0
+            .map(|q| q.eps)
     }
 
     /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
@@ -721,19 +742,87 @@ impl Reduction {
     }
 }
 
+/// A number the terms of Q in a pole's frame are written over ([`Reduction::q_terms_in_frame`]):
+/// field arithmetic, and `J(x)`, whose form depends on the sign of the real part of `h h_p`
+/// (one number's, or each lane's).
+trait FrameScalar: Scalar {
+    /// [`jellett_divided_at`].
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self;
+}
+
+impl<D: Real> FrameScalar for D {
+    #[inline(always)]
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
+        jellett_divided_at(geo, x, h, g)
+    }
+}
+
+impl<D: Real, const W: usize> FrameScalar for Lanes<D, W> {
+    /// Lane by lane, each in its own form.
+    #[inline(always)]
+    fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
+        let mut j = x;
+        for (i, j) in j.0.iter_mut().enumerate() {
+            *j = jellett_divided_at(geo, x.0[i], h.0[i], g.0[i]);
+        }
+        j
+    }
+}
+
 /// `g(u)^2 - g_p^2 = x [A m R^2 (2 - x) - C m p R (h_p + h)]` and `g(u)` at `x = 1 - p u`,
 /// `h = h_p - p R x`, with the constants of the pole.
-fn g_change_at<D: Real>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
+#[inline(always)]
+fn g_change_at<D: Scalar>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
     let change = x * ((-x + 2.0) * geo.amr2 - (h + geo.hp) * geo.cmpr);
     (change, (change + geo.gp2).sqrt())
 }
 
 /// `J(x)` of [`Reduction::jellett_divided`] at `x = 1 - p u` with `h` and `g = g(u)` there.
+#[inline(always)]
 fn jellett_divided_at<D: Real>(geo: &PoleGeometry, x: D, h: D, g: D) -> D {
     let (hp, gp) = (geo.hp, geo.gp);
     if h.re() * hp > 0.0 {
         ((-x + 2.0) * geo.jellett_even + (h + hp) * geo.jellett_odd) / (g * gp * (g * hp + h * gp))
     } else {
         (g.recip() * (-h) + hp / gp) / x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lanes_are_the_scalar_evaluations_bit_for_bit() {
+        // Q' and Q'' at 8 points in lanes against one point at a time, in both frames, for
+        // bodies with a of either sign (so that `h h_p` changes sign inside [0, 2] and the two
+        // forms of J(x) meet in one number of lanes), from the pole to past the other pole.
+        for (a, i3) in [(0.3, 0.5), (-0.6, 1e-3), (0.9, 0.8)] {
+            let body = Body::new(1.0, 1.0, a, 0.4, 0.4, i3, 9.81).unwrap();
+            let state = State::new(
+                [0.3, 0.1, 0.9],
+                [0.5, -0.2, 8.0],
+                crate::state::Normalise::Rescale,
+            )
+            .unwrap();
+            let red = Reduction::of_state(&body, &state).unwrap();
+            for pole in [1.0, -1.0] {
+                for start in [0.0, 1e-9, 0.3, 1.1, 1.7] {
+                    let xs: [f64; 8] = std::array::from_fn(|j| start + 0.04 * j as f64);
+                    let slopes = red.q_slopes_in_frame(pole, xs);
+                    let curvatures = red.q_curvatures_in_frame(pole, xs);
+                    for (j, &x) in xs.iter().enumerate() {
+                        let slope = red.q_slope_in_frame(pole, x);
+                        let curvature = red.q_curvature_in_frame(pole, x);
+                        assert_eq!(slopes[j].to_bits(), slope.to_bits(), "{a} {pole} {x}");
+                        assert_eq!(
+                            curvatures[j].to_bits(),
+                            curvature.to_bits(),
+                            "{a} {pole} {x}"
+                        );
+                    }
+                }
+            }
+        }
     }
 }
