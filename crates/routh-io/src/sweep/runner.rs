@@ -15,7 +15,7 @@ use crate::body::Body;
 use crate::case::{Case, CaseValues};
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
-use crate::quadrature::{ExactSolution, Motion};
+use crate::quadrature::ExactSolution;
 use crate::row::Kind;
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
 use crate::state::State;
@@ -452,20 +452,14 @@ impl Sweep {
         let (quadrature, message) = if !self.columns.solves_quadrature() {
             (None, String::new())
         } else if body.is_symmetric() {
-            match ExactSolution::new(body, initial) {
-                Ok(exact) => {
-                    let precession = match &exact.motion {
-                        Motion::Nutation(n) => Some(n.advance),
-                        Motion::Steady { .. } => None,
-                    };
-                    (
-                        Some(NutationQuadrature {
-                            period: exact.period(),
-                            precession,
-                        }),
-                        String::new(),
-                    )
-                }
+            match ExactSolution::nutation_numbers(body, initial) {
+                Ok(numbers) => (
+                    Some(NutationQuadrature {
+                        period: numbers.period,
+                        precession: numbers.advance,
+                    }),
+                    String::new(),
+                ),
                 Err(e) => (None, format!("no quadrature: {e}")),
             }
         } else {
