@@ -475,9 +475,10 @@ pub fn centre_of_mass(body: &Body, pole: f64) -> &'static str {
 }
 
 /// Fail with the parameter named when the inertia about the contact point `I_Q = I + m r^2 -
-/// m r r^T` (om-m) of `body` overflows: its determinant is of the size of `(m R^2)^3` times
-/// the moments, and `omega = I_Q^{-1} M` would come out NaN. Tried with an angular momentum
-/// of the body's own scale, `M = m R^2 (1, 1, 1)` per unit time.
+/// m r r^T` (om-m) of `body` cannot be inverted: `omega = I_Q^{-1} M` (computed in the body's
+/// unit of inertia, `Ball::inertia_unit`, so that no unit of the problem makes it overflow)
+/// would come out NaN, or `m R^2` itself is beyond f64. Tried with an angular momentum of the
+/// body's own scale, `M = m R^2 (1, 1, 1)` per unit time.
 pub fn require_finite_inertia(body: &Body) -> Result<()> {
     let scale = body.m() * body.radius() * body.radius();
     let omega: [f64; 3] = body.angular_velocity(&[0.6, 0.0, 0.8], &[scale; 3]);
@@ -488,8 +489,8 @@ pub fn require_finite_inertia(body: &Body) -> Result<()> {
             name: "m",
             value: body.m(),
             rule: "too large for the size of the ball: the inertia about the contact point \
-                   I_Q = I + m |r|^2 - m r r^T overflows (its determinant is of the size of \
-                   (m R^2)^3 I1 I2 I3)",
+                   I_Q = I + m |r|^2 - m r r^T cannot be inverted in f64 (m R^2 beyond f64, \
+                   or too large against the moments)",
         })
     }
 }

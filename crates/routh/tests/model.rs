@@ -2231,8 +2231,9 @@ mod inertia_unit {
     /// The default body in units of mass 2^-997 (m = 7.5e-301) and 2^997 (m = 1.3e300), the
     /// latter also in lengths 2^-332 (R = 1.1e-100, so that `m R^2`, 2^333, keeps the
     /// integrals finite): omega in both forms is the default body's to the bit (scaled by
-    /// `1 / s` of the time factor, here 1). Test 3, the negative control: in the problem's
-    /// units (the unit 1, the old formula) omega of the same copies is not finite.
+    /// `1 / s` of the time factor, here 1), and so is Routh's g (times `k l^2`). Test 3, the
+    /// negative control: in the problem's units (the unit 1, the old formula) omega of the
+    /// same copies is not finite, and g of the copies in mass alone is 0 or infinite.
     #[test]
     fn a_copy_in_other_units_has_the_same_omega_and_the_old_formula_overflows() {
         let body = Body::default();
@@ -2261,6 +2262,26 @@ mod inertia_unit {
                 bits(reference),
                 "{factors:?}"
             );
+            // Routh's g (of the units of an inertia) in the unit of inertia: the default's times
+            // k l^2, to the bit; in the problem's units (the formula before) g^2, of the size
+            // of k^2 = 2^-1994 or 2^1994, left f64 (g = 0 or inf, and K = g omega3 with it).
+            let [k, l, _] = factors;
+            let g = copy.routh_g(&y.gamma);
+            assert_eq!(
+                g.to_bits(),
+                (body.routh_g(&state.gamma) * k * l * l).to_bits()
+            );
+            let horizontal = y.gamma[0] * y.gamma[0] + y.gamma[1] * y.gamma[1];
+            let (m, radius, i1, i3) = (copy.m(), copy.radius(), copy.i1(), copy.i3());
+            let h = y.gamma[2] * radius + copy.a();
+            let old_g =
+                (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt();
+            if l == 1.0 {
+                assert!(
+                    old_g == 0.0 || old_g.is_infinite(),
+                    "{factors:?}: {old_g:e}"
+                );
+            }
             let ball = copy.ball();
             let old = ball.inertia_in(1.0);
             let before = ball.angular_velocity_in(&old, &y.gamma, &y.m);
