@@ -196,13 +196,20 @@ pub struct SteadyPrecession {
 /// `n = m / mu <= 1`, so that no product of masses and inertias can overflow, nor a quotient
 /// by a tiny mass (with m = 6.5e-319 and I = 8.4e-5 the quotient `I / m` was infinite and the
 /// threshold NaN; found by the fuzz target `numerics_model`): the one formula that `steady`,
-/// `diagram` and Python report.
+/// `diagram` and Python report. The lengths are divided by the unit of length `len`, R
+/// rounded to a power of two ([`Units::binary`]): `G a (A / mu)` is of the size of a length to
+/// the fourth, which underflowed to a threshold 0 for R = 1e-100 (the default body in units of
+/// length 1e-100, accepted since the inertia about the contact point is inverted in the body's
+/// own unit, issue 33). `len` a power of two, every factor is the one before times a power of
+/// two: the threshold is unchanged to the bit wherever that one was normal.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
-    let mu = Units::with_rate(body, 0.0).mass();
+    let units = Units::with_rate(body, 0.0);
+    let (mu, len) = (units.mass(), units.binary().length());
     let n = body.m() / mu;
-    let l = body.radius() + body.a() * pole;
-    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / mu + n * l * l) * n;
-    lift.max(0.0).sqrt() / (body.i3() / mu + n * body.radius() * l)
+    let (radius, a, gravity) = (body.radius() / len, body.a() / len, body.gravity() / len);
+    let l = radius + a * pole;
+    let lift = 4.0 * gravity * a * pole * (body.i1() / mu / len / len + n * l * l) * n;
+    lift.max(0.0).sqrt() / (body.i3() / mu / len / len + n * radius * l)
 }
 
 /// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
