@@ -44,6 +44,24 @@ pub struct Ball {
     /// Gravitational acceleration G >= 0 (0: the free rolling of (m-eq)).
     #[serde(rename = "G")]
     gravity: f64,
+    /// The body's unit of inertia k, a power of two ([`Ball::inertia_unit`]), in which
+    /// `I_Q^{-1}` is computed; a function of the other fields, made once by [`Ball::new`].
+    #[serde(skip)]
+    unit: f64,
+}
+
+/// The parameters of `I_Q` in the body's unit of inertia k ([`Ball::scaled_inertia`]):
+/// `m / k`, `I / k` and `1 / k`, exact (k is a power of two).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScaledInertia {
+    /// `m / k`.
+    pub m: f64,
+    /// `(I1, I2, I3) / k`.
+    pub inertia: [f64; 3],
+    /// `1 / k`, by which M is multiplied to be in the same unit.
+    pub per_unit: f64,
+    /// k.
+    pub unit: f64,
 }
 
 /// Which integrable case a ball is, decided with [`MODEL_TOLERANCE`]; each states its
@@ -165,15 +183,88 @@ impl Ball {
         com: [f64; 3],
         gravity: f64,
     ) -> Result<Self> {
-        let ball = Ball {
+        let mut ball = Ball {
             m,
             radius,
             inertia,
             com,
             gravity,
+            unit: 1.0,
         };
         ball.validate()?;
+        ball.unit = ball.unit_of_inertia()?;
         Ok(ball)
+    }
+
+    /// The body's unit of inertia, `max(m R^2, I_max)` (the unit of [`crate::units::Units`]:
+    /// `max(m, I_max / R^2) R^2`) rounded to the nearest power of two k, from the logarithms
+    /// so that `m R^2` never overflows. Every `A_i = I_i + m r^2` is within a few factors of 2
+    /// of it at the top (`r <= 2 R`) and at most [`crate::range::MAX_CONDITION`] times larger
+    /// than the smallest moment, so the products of up to six `A_i / k` in the inverse of
+    /// `I_Q / k` are finite and normal for every body whose condition number is accepted,
+    /// whatever its units. Refused only when k itself is not a normal f64 (the scale of the
+    /// inertia beyond 2^1023 or below 2^-1022: not a body's inertia that f64 can hold).
+    fn unit_of_inertia(&self) -> Result<f64> {
+        let largest_moment = self.inertia.iter().fold(0.0_f64, |a, &b| a.max(b));
+        let exponent = (self.m.log2() + 2.0 * self.radius.log2())
+            .max(largest_moment.log2())
+            .round();
+        if !(f64::MIN_EXP as f64 - 1.0..f64::MAX_EXP as f64).contains(&exponent) {
+            return Err(RouthError::Overflow {
+                cause: format!(
+                    "m = {:?}, R = {:?}, I = {:?}",
+                    self.m, self.radius, self.inertia
+                ),
+                quantity: "the body's unit of inertia max(m R^2, I_max) (a normal f64, \
+                           2^-1022 to 2^1023, in which the inertia about the contact point is \
+                           inverted),",
+                direction: if exponent > 0.0 {
+                    "overflow"
+                } else {
+                    "underflow"
+                },
+                value: 2f64.powf(exponent),
+            });
+        }
+        Ok(2f64.powi(exponent as i32))
+    }
+
+    /// The body's unit of inertia k: `max(m R^2, I_max)` rounded to the nearest power of two
+    /// (1 for the default body). `omega = I_Q^{-1} M` is computed as `(I_Q / k)^{-1} (M / k)`
+    /// ([`Ball::angular_velocity`], [`Ball::angular_velocity_by_determinant`]), so that its
+    /// intermediates (up to the sixth power of the inertia) have the size of the body's
+    /// dimensionless inertia, not of its units.
+    #[inline]
+    pub fn inertia_unit(&self) -> f64 {
+        self.unit
+    }
+
+    /// The parameters of `I_Q = I + m (r^2 - r r^T)` in the unit k ([`Ball::inertia_unit`]):
+    /// `m / k`, `I / k`, `1 / k`. The one place where the scaling is made: every closed form
+    /// of `I_Q^{-1}` takes its parameters from here. k being a power of two, each is exact
+    /// (barring subnormals), and so is every product and sum of the closed forms made of them:
+    /// each intermediate is the one of the unscaled formula times a power of two, and omega,
+    /// of degree 0 in k, is the unscaled formula's to the bit wherever neither overflows nor
+    /// underflows (`tests/model.rs`, `omega_in_the_unit_of_inertia_is_the_old_formula_to_the_bit`).
+    #[inline(always)]
+    pub fn scaled_inertia(&self) -> ScaledInertia {
+        self.inertia_in(self.unit)
+    }
+
+    /// The parameters of `I_Q` in the unit of inertia `unit` (a power of two, for the
+    /// division to be exact): [`Ball::scaled_inertia`] in another unit. In the unit 1 the
+    /// closed forms of `I_Q^{-1}` are, operation for operation, those in the problem's units
+    /// (each product by 1 is exact): the formula before the body's unit, kept for the tests
+    /// that compare with it.
+    #[inline(always)]
+    pub fn inertia_in(&self, unit: f64) -> ScaledInertia {
+        let per_unit = unit.recip();
+        ScaledInertia {
+            m: self.m * per_unit,
+            inertia: self.inertia.map(|i| i * per_unit),
+            per_unit,
+            unit,
+        }
     }
 
     /// Check the rules of [`Ball::new`] on the parameters it is building.
@@ -307,21 +398,41 @@ impl Ball {
     ///
     /// (the matrix determinant lemma). `D > 0` because each `m r_i^2 / A_i < r_i^2 / r^2`.
     /// About 45 floating-point operations and a single division, instead of a general 3x3
-    /// solve or a division per `A_i` (BENCHMARKS.md). `D det A` is of the size of `A_i^6`:
-    /// finite and normal for `A_i` between 1e-50 and 1e50. The form for numbers (`f64`, dual
+    /// solve or a division per `A_i` (BENCHMARKS.md). The form for numbers (`f64`, dual
     /// numbers, lanes); series take [`Ball::angular_velocity_by_determinant`].
+    ///
+    /// `D det A` is of the size of `A_i^6`, finite and normal in f64 only for `A_i` between
+    /// 1e-51 and 5e51: the inverse is taken of `I_Q / k` in the body's unit of inertia k
+    /// ([`Ball::scaled_inertia`]), where the `A_i / k` are within [`crate::range::MAX_CONDITION`]
+    /// of 1, so that a body in any units is inverted as its copy with `m R^2 = 1` is.
+    /// `omega = (I_Q / k)^{-1} (M / k)`, with the factor `1 / k` of M folded into the one
+    /// division (`M` times the cofactors of `A / k` over `D det A / k^6` times k: one product
+    /// instead of three); every step is the unscaled one's times a power of two, so omega is
+    /// the unscaled formula's to the bit for a body where that one is finite and normal.
     #[inline(always)]
     pub fn angular_velocity<D: Scalar>(&self, gamma: &[D; 3], m_vec: &[D; 3]) -> [D; 3] {
+        self.angular_velocity_in(&self.scaled_inertia(), gamma, m_vec)
+    }
+
+    /// [`Ball::angular_velocity`] with the inertia in the unit of `scaled`
+    /// ([`Ball::inertia_in`]).
+    #[inline(always)]
+    pub fn angular_velocity_in<D: Scalar>(
+        &self,
+        scaled: &ScaledInertia,
+        gamma: &[D; 3],
+        m_vec: &[D; 3],
+    ) -> [D; 3] {
         let r = self.contact_vector(gamma);
-        let mr2 = dot(&r, &r) * self.m;
-        let a: [D; 3] = std::array::from_fn(|i| mr2 + self.inertia[i]);
+        let mr2 = dot(&r, &r) * scaled.m;
+        let a: [D; 3] = std::array::from_fn(|i| mr2 + scaled.inertia[i]);
         let cofactor = [a[1] * a[2], a[0] * a[2], a[0] * a[1]];
         let det_a = a[0] * cofactor[0];
         let b: [D; 3] = std::array::from_fn(|i| r[i] * cofactor[i]);
         let c: [D; 3] = std::array::from_fn(|i| m_vec[i] * cofactor[i]);
-        let det_iq = det_a - dot(&r, &b) * self.m;
-        let coupling = dot(&r, &c) * self.m;
-        let scale = (det_iq * det_a).recip();
+        let det_iq = det_a - dot(&r, &b) * scaled.m;
+        let coupling = dot(&r, &c) * scaled.m;
+        let scale = (det_iq * det_a * scaled.unit).recip();
         std::array::from_fn(|i| c[i].mul_add(det_iq, b[i] * coupling) * scale)
     }
 
@@ -353,19 +464,42 @@ impl Ball {
     /// each group's `A_G` (the form before, BENCHMARKS.md, "Omega by the determinant"). In `f64` its
     /// divisions cost more than the cofactors' one, hence two forms ([`crate::field`]); they
     /// agree to round-off (`tests/field_identities.rs`).
+    ///
+    /// Computed, as [`Ball::angular_velocity`], in the body's unit of inertia k
+    /// ([`Ball::scaled_inertia`]): `omega = (I_Q / k)^{-1} (M / k)`, with m, the moments and M
+    /// divided by k (`N`, of degree `n + 1` in the inertia, would overflow for `A_i` beyond
+    /// 1e77 otherwise). Exact in powers of two: the series are the unscaled formula's to the
+    /// bit; for k = 1 (the default body) the products by `1 / k` are folded away on the tape.
     #[inline(always)]
     pub fn angular_velocity_by_determinant<D: Scalar>(
         &self,
         gamma: &[D; 3],
         m_vec: &[D; 3],
     ) -> [D; 3] {
+        self.angular_velocity_by_determinant_in(&self.scaled_inertia(), gamma, m_vec)
+    }
+
+    /// [`Ball::angular_velocity_by_determinant`] with the inertia in the unit of `scaled`
+    /// ([`Ball::inertia_in`]).
+    #[inline(always)]
+    pub fn angular_velocity_by_determinant_in<D: Scalar>(
+        &self,
+        scaled: &ScaledInertia,
+        gamma: &[D; 3],
+        m_vec: &[D; 3],
+    ) -> [D; 3] {
+        let ScaledInertia {
+            m: mass,
+            inertia,
+            per_unit,
+            ..
+        } = *scaled;
+        let m_vec: [D; 3] = std::array::from_fn(|i| m_vec[i] * per_unit);
+        let m_vec = &m_vec;
         let r = self.contact_vector(gamma);
         // The groups of equal moments, by their first index.
-        let first: [usize; 3] = std::array::from_fn(|i| {
-            (0..i)
-                .find(|&j| self.inertia[j] == self.inertia[i])
-                .unwrap_or(i)
-        });
+        let first: [usize; 3] =
+            std::array::from_fn(|i| (0..i).find(|&j| inertia[j] == inertia[i]).unwrap_or(i));
         let groups: Vec<usize> = (0..3).filter(|&g| first[g] == g).collect();
         let n = groups.len();
         // sum_{i in G} u_i v_i, fused.
@@ -382,12 +516,12 @@ impl Ball {
         };
         let x: Vec<D> = groups
             .iter()
-            .map(|&g| group_sum(g, &r, &r) * self.m)
+            .map(|&g| group_sum(g, &r, &r) * mass)
             .collect();
         let t: Vec<D> = groups.iter().map(|&g| group_sum(g, &r, m_vec)).collect();
         let rho = x[1..].iter().fold(x[0], |acc, &v| acc + v);
         // The moment of each group, and e_k of those of the groups other than the one at `skip`.
-        let moments: Vec<f64> = groups.iter().map(|&g| self.inertia[g]).collect();
+        let moments: Vec<f64> = groups.iter().map(|&g| inertia[g]).collect();
         let e = |k: usize, skip: usize| -> f64 {
             let others: Vec<f64> = (0..n).filter(|&h| h != skip).map(|h| moments[h]).collect();
             elementary_symmetric(&others, k)
@@ -402,7 +536,7 @@ impl Ball {
                 .rev()
                 .fold(coefficient(top), |acc, j| acc.mul_add(rho, coefficient(j)))
         };
-        let numerator = horner(n - 1, &|j| combine(&t, &|g| e(n - 1 - j, g))) * self.m;
+        let numerator = horner(n - 1, &|j| combine(&t, &|g| e(n - 1 - j, g))) * mass;
         let constant = D::from_f64(elementary_symmetric(&moments, n));
         let denominator = if n < 2 {
             constant
@@ -410,7 +544,7 @@ impl Ball {
             horner(n - 2, &|j| combine(&x, &|g| moments[g] * e(n - 2 - j, g))) + constant
         };
         let q = numerator / denominator;
-        std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / (rho + self.inertia[first[i]]))
+        std::array::from_fn(|i| r[i].mul_add(q, m_vec[i]) / (rho + inertia[first[i]]))
     }
 
     /// `det I_Q` of (om-m) (the `D` of [`Ball::angular_velocity`]).

@@ -164,12 +164,19 @@ impl Body {
     /// `g(gamma) = sqrt(I1 I3 + I1 m R^2 (H4 - gamma3^2) + I3 m (R gamma3 + a)^2)`,
     /// with `H4 - gamma3^2` written as `gamma1^2 + gamma2^2` so that it also holds off the
     /// sphere, where its derivatives are taken. Defined with I1 (the Routh sphere has I1 = I2).
+    ///
+    /// `g^2` is of the size of an inertia squared: it is computed in the body's unit of inertia
+    /// k ([`Ball::scaled_inertia`]), `g = k sqrt(g^2 / k^2)`, so that neither underflows nor
+    /// overflows in any units (K = g omega3 of a body of mass 1e-300 was 0). k being a power
+    /// of two, this is the unscaled formula's g to the bit wherever that one is normal.
     #[inline(always)]
     pub fn routh_g<D: Scalar>(&self, gamma: &[D; 3]) -> D {
+        let scaled = self.ball.scaled_inertia();
         let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
-        let (m, radius, i1, i3) = (self.m(), self.radius(), self.i1(), self.i3());
+        let (m, radius) = (scaled.m, self.radius());
+        let (i1, i3) = (scaled.inertia[0], scaled.inertia[2]);
         let h = gamma[2] * radius + self.a();
-        (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt()
+        (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt() * scaled.unit
     }
 
     /// Potential energy of gravity `U = m G (r, gamma)`, [`Ball::potential`].

@@ -18,22 +18,33 @@ pub const KERNELS: &str = "src/kernels.rs";
 /// The families: the Routh sphere of the default case (m = R = 1; the case "tilted" of the
 /// work-precision benchmark is of this family) and of a general body (no parameter 0 or 1),
 /// each with and without gravity; the Chaplygin ball (the centre of mass at the centre, three
-/// moments); a general ball (three moments, the centre of mass off the axis).
+/// moments); a general ball (three moments, the centre of mass off the axis). omega is
+/// computed in the body's unit of inertia k ([`Ball::inertia_unit`]), whose products by
+/// `1 / k` the tape folds when k = 1: the general bodies come twice, with k = 4 (m R^2 = 4.5)
+/// and with k = 1 (`_unit`: m R^2 = 0.98), two shapes; the default body and the Chaplygin
+/// ball of the family have k = 1.
 pub fn families() -> Vec<(&'static str, Ball)> {
     let ball = |m, r, inertia, com, gravity| {
         Ball::new(m, r, inertia, com, gravity).expect("a valid ball of the family")
     };
     let routh = |gravity| ball(1.0, 1.0, [0.4, 0.4, 0.5], [0.0, 0.0, -0.3], gravity);
     let general = |gravity| ball(2.0, 1.5, [0.7, 0.7, 1.1], [0.0, 0.0, 0.3], gravity);
+    let general_unit = |gravity| ball(2.0, 0.7, [0.3, 0.3, 0.45], [0.0, 0.0, 0.25], gravity);
     vec![
         ("routh", routh(9.81)),
         ("routh_free", routh(0.0)),
         ("routh_general", general(9.81)),
         ("routh_general_free", general(0.0)),
+        ("routh_general_unit", general_unit(9.81)),
+        ("routh_general_unit_free", general_unit(0.0)),
         ("chaplygin", ball(1.0, 1.0, [0.3, 0.4, 0.5], [0.0; 3], 0.0)),
         (
             "ball",
             ball(2.0, 1.5, [0.7, 0.9, 1.1], [0.1, -0.2, 0.3], 9.81),
+        ),
+        (
+            "ball_unit",
+            ball(2.0, 0.7, [0.3, 0.35, 0.45], [0.1, -0.2, 0.25], 9.81),
         ),
     ]
 }

@@ -3,17 +3,22 @@
 //! refused with the quantity and its cause named, before any integration sees a NaN.
 //!
 //! The inverse of the inertia about the contact point (om-m) is computed in closed form
-//! (`Body::angular_velocity`) through `det I_Q det A`, of the size of `A_i^6` with
-//! `A_i = I_i + m r^2`: it stays finite and normal for `A_i` within [`INERTIA_RANGE`].
+//! ([`crate::Ball::angular_velocity`]) through `det I_Q det A`, of the size of `A_i^6` with
+//! `A_i = I_i + m r^2`: in the units of the problem it would be finite and normal only for
+//! `A_i` between 1.6e-51 and 5.5e51, an absolute range that refused the default body in units
+//! of mass 1e-300 (m = 1e-300 with its moments) and solved it with m = 1. It is computed instead
+//! in the body's own unit of inertia k ([`crate::Ball::inertia_unit`], `max(m R^2, I_max)`
+//! rounded to a power of two, so that omega is unchanged to the bit), where every `A_i / k`
+//! lies between `0.7 / MAX_CONDITION` and 8 (`A_i <= I_max + 4 m R^2`, `k` within a factor
+//! `sqrt 2` of `max(m R^2, I_max)`): what remains to check is relative, the condition number
+//! [`MAX_CONDITION`], and what no choice of units can help: k a normal f64 (checked by
+//! [`crate::Ball::new`]), `m r^2 / k` finite (a radius whose square is beyond f64) and the
+//! weight `m G (R + |com|)` finite.
 
 use crate::ball::AsBall;
 use crate::error::{Result, RouthError};
 use crate::integrals::Integrals;
 use crate::state::State;
-
-/// The interval in which every `A_i = I_i + m r^2` must lie: its sixth power (the size of
-/// `det I_Q det A`) must be a finite normal f64, `(2.2e-308)^(1/6)` to `(1.8e308)^(1/6)`.
-pub const INERTIA_RANGE: (f64, f64) = (1.6e-51, 5.5e51);
 
 /// The largest condition number `(I_max + m r_max^2) / I_min` of the inertia about the contact
 /// point accepted. `I_Q = I + m (r^2 - r r^T)` has the eigenvalue of about `m r^2 + I` across
@@ -25,44 +30,32 @@ pub const INERTIA_RANGE: (f64, f64) = (1.6e-51, 5.5e51);
 pub const MAX_CONDITION: f64 = 1e10;
 
 /// Check that the body's inertia about the contact point can be inverted in f64 at every
-/// tilt ([`INERTIA_RANGE`], [`MAX_CONDITION`]: the parameter that breaks it named, m or the
-/// smallest moment), and that its weight times its height is finite.
+/// tilt, in the body's unit of inertia k ([`MAX_CONDITION`]: the parameter that breaks it
+/// named, m or the smallest moment; `m r^2 / k` finite), and that its weight times its height
+/// is finite. Relative but for these: a body and its copy in other units are accepted
+/// together.
 pub fn check_body(body: &impl AsBall) -> Result<()> {
     let body = &body.ball();
-    let (low, high) = INERTIA_RANGE;
-    let moments = body.inertia();
+    let scaled = body.scaled_inertia();
+    let moments = scaled.inertia;
     let offset = norm(&body.com());
     let r_max = body.radius() + offset;
-    let r_min = body.radius() - offset;
     let largest_moment = moments.iter().fold(0.0_f64, |a, &b| a.max(b));
     let smallest_moment = moments.iter().fold(f64::INFINITY, |a, &b| a.min(b));
-    let largest = largest_moment + body.m() * r_max * r_max;
-    let smallest = smallest_moment + body.m() * r_min * r_min;
-    let cause = || {
-        format!(
-            "m = {:?}, R = {:?}, com = {:?}, I = {:?}",
-            body.m(),
-            body.radius(),
-            body.com(),
-            body.inertia()
-        )
-    };
-    if !(largest <= high) {
+    let largest = largest_moment + scaled.m * r_max * r_max;
+    if !largest.is_finite() {
         return Err(RouthError::Overflow {
-            cause: cause(),
-            quantity: "the inertia about the contact point, I + m r^2 (at most 5.5e51 for its \
-                       inverse),",
+            cause: format!(
+                "m = {:?}, R = {:?}, com = {:?}, I = {:?}",
+                body.m(),
+                body.radius(),
+                body.com(),
+                body.inertia()
+            ),
+            quantity: "the inertia about the contact point in the body's unit of inertia, \
+                       (I + m r^2) / max(m R^2, I_max),",
             direction: "overflow",
             value: largest,
-        });
-    }
-    if !(smallest >= low) {
-        return Err(RouthError::Overflow {
-            cause: cause(),
-            quantity: "the inertia about the contact point, I + m r^2 (at least 1.6e-51 for \
-                       its inverse),",
-            direction: "underflow",
-            value: smallest,
         });
     }
     let condition = largest / smallest_moment;
@@ -77,7 +70,7 @@ pub fn check_body(body: &impl AsBall) -> Result<()> {
                 .iter()
                 .position(|&v| v == smallest_moment)
                 .unwrap_or(0);
-            (["I1", "I2", "I3"][i], smallest_moment)
+            (["I1", "I2", "I3"][i], body.inertia()[i])
         };
         return Err(RouthError::Parameter {
             name,
@@ -186,12 +179,29 @@ mod tests {
         check_state(&body, &fine).unwrap();
     }
 
+    /// A huge mass with the default moments is refused by the ratio of `m r^2` to the moments,
+    /// with m named; the same body in units of mass 1e300 or 1e-300 (every mass and moment
+    /// scaled, outside the absolute range `1.6e-51 ..= 5.5e51` of the inertia refused before
+    /// issue 33's last item) is accepted, as the default body is: the checks are relative.
+    /// Only a unit of inertia beyond f64 (m R^2 = 1e400) is refused absolutely, by
+    /// `Ball::new`, with the quantity named.
     #[test]
     fn a_huge_mass_names_the_inertia() {
         let with_mass = |m| Body::new(m, 1.0, 0.3, 0.4, 0.4, 0.5, 9.81).unwrap();
         let e = check_body(&with_mass(1e300)).unwrap_err().to_string();
         assert!(e.contains("m = 1e300") && e.contains("inertia"), "{e}");
         check_body(&with_mass(1e9)).unwrap();
+        for k in [1e300, 1e-300, 1.0] {
+            let copy = Body::new(k, 1.0, 0.3, 0.4 * k, 0.4 * k, 0.5 * k, 9.81).unwrap();
+            check_body(&copy).unwrap();
+        }
+        let e = Body::new(1.0, 1e200, 0.3, 0.4, 0.4, 0.5, 9.81)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("unit of inertia") && e.contains("overflow"),
+            "{e}"
+        );
     }
 
     /// Regression (issue 33): m = 1e40 in the default case blamed "the spin omega3 = inf"

@@ -389,6 +389,70 @@ mod cli_exact_steady {
         let text = String::from_utf8(out.stdout).unwrap();
         assert!(text.contains("m = 1e-300, R = 1, a = 0.3"), "{text}");
     }
+
+    /// Issue 33, last item (test 4): the default case in units of mass 1e-300 (m = 1e-300,
+    /// I1 = 4e-301, I3 = 5e-301; omega has no unit of mass), refused before by the absolute
+    /// range of the inertia, is simulated by the binary with exit 0 and the default case's
+    /// answer, with DOP853 and the Taylor method: gamma and `M / 1e-300` within 1e-8 of the
+    /// default's after t = 1 (rtol = atol = 1e-12 of the case file: the two runs differ by
+    /// the rounding of the decimal factor in each parameter, a relative 1e-16 amplified along
+    /// the run, and by at most a step or two of the step control, well within 1e-8), and the
+    /// energy's relative drift of the same size (each below 1e-12).
+    #[test]
+    fn simulate_takes_the_default_case_in_units_of_mass_1e_minus_300() {
+        let dir = std::env::temp_dir().join(format!("routh-tiny-mass-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("case.toml");
+        let default = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/default.toml"),
+        )
+        .unwrap();
+        let tiny = default
+            .replace("m = 1.0", "m = 1e-300")
+            .replace("I1 = 0.4", "I1 = 4e-301")
+            .replace("I3 = 0.5", "I3 = 5e-301");
+        assert_ne!(tiny, default);
+        std::fs::write(&path, tiny).unwrap();
+        for method in ["dop853", "taylor"] {
+            let run = |case: &std::path::Path| {
+                json(&routh(&[
+                    "simulate",
+                    "--case",
+                    case.to_str().unwrap(),
+                    "--method",
+                    method,
+                    "--t-end",
+                    "1",
+                    "--json",
+                ]))
+            };
+            let reference =
+                run(&std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("../../cases/default.toml"));
+            let copy = run(&path);
+            let values = |v: &serde_json::Value, key: &str, unit: f64| -> Vec<f64> {
+                v["final_state"][key]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap() / unit)
+                    .collect()
+            };
+            for (key, unit) in [("gamma", 1.0), ("M", 1e-300)] {
+                let (a, b) = (values(&copy, key, unit), values(&reference, key, 1.0));
+                for (x, y) in a.iter().zip(&b) {
+                    assert!((x - y).abs() <= 1e-8, "{method} {key}: {a:?} {b:?}");
+                }
+            }
+            let drift = |v: &serde_json::Value| v["integrals"]["H1"]["max_rel_drift"].as_f64();
+            let (d, d0) = (drift(&copy).unwrap(), drift(&reference).unwrap());
+            assert!(
+                d <= 1e-12 && d0 <= 1e-12,
+                "{method}: H1 drifts {d:e} {d0:e}"
+            );
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
 
 mod cli_flow {

@@ -196,13 +196,20 @@ pub struct SteadyPrecession {
 /// `n = m / mu <= 1`, so that no product of masses and inertias can overflow, nor a quotient
 /// by a tiny mass (with m = 6.5e-319 and I = 8.4e-5 the quotient `I / m` was infinite and the
 /// threshold NaN; found by the fuzz target `numerics_model`): the one formula that `steady`,
-/// `diagram` and Python report.
+/// `diagram` and Python report. The lengths are divided by the unit of length `len`, R
+/// rounded to a power of two ([`Units::binary`]): `G a (A / mu)` is of the size of a length to
+/// the fourth, which underflowed to a threshold 0 for R = 1e-100 (the default body in units of
+/// length 1e-100, accepted since the inertia about the contact point is inverted in the body's
+/// own unit, issue 33). `len` a power of two, every factor is the one before times a power of
+/// two: the threshold is unchanged to the bit wherever that one was normal.
 pub fn routh_threshold(body: &Body, pole: f64) -> f64 {
-    let mu = Units::with_rate(body, 0.0).mass();
+    let units = Units::with_rate(body, 0.0);
+    let (mu, len) = (units.mass(), units.binary().length());
     let n = body.m() / mu;
-    let l = body.radius() + body.a() * pole;
-    let lift = 4.0 * body.gravity() * body.a() * pole * (body.i1() / mu + n * l * l) * n;
-    lift.max(0.0).sqrt() / (body.i3() / mu + n * body.radius() * l)
+    let (radius, a, gravity) = (body.radius() / len, body.a() / len, body.gravity() / len);
+    let l = radius + a * pole;
+    let lift = 4.0 * gravity * a * pole * (body.i1() / mu / len / len + n * l * l) * n;
+    lift.max(0.0).sqrt() / (body.i3() / mu / len / len + n * radius * l)
 }
 
 /// Why the vertical spin at `gamma3 = pole` has no Routh threshold (it is stable at every
@@ -475,9 +482,10 @@ pub fn centre_of_mass(body: &Body, pole: f64) -> &'static str {
 }
 
 /// Fail with the parameter named when the inertia about the contact point `I_Q = I + m r^2 -
-/// m r r^T` (om-m) of `body` overflows: its determinant is of the size of `(m R^2)^3` times
-/// the moments, and `omega = I_Q^{-1} M` would come out NaN. Tried with an angular momentum
-/// of the body's own scale, `M = m R^2 (1, 1, 1)` per unit time.
+/// m r r^T` (om-m) of `body` cannot be inverted: `omega = I_Q^{-1} M` (computed in the body's
+/// unit of inertia, `Ball::inertia_unit`, so that no unit of the problem makes it overflow)
+/// would come out NaN, or `m R^2` itself is beyond f64. Tried with an angular momentum of the
+/// body's own scale, `M = m R^2 (1, 1, 1)` per unit time.
 pub fn require_finite_inertia(body: &Body) -> Result<()> {
     let scale = body.m() * body.radius() * body.radius();
     let omega: [f64; 3] = body.angular_velocity(&[0.6, 0.0, 0.8], &[scale; 3]);
@@ -488,8 +496,8 @@ pub fn require_finite_inertia(body: &Body) -> Result<()> {
             name: "m",
             value: body.m(),
             rule: "too large for the size of the ball: the inertia about the contact point \
-                   I_Q = I + m |r|^2 - m r r^T overflows (its determinant is of the size of \
-                   (m R^2)^3 I1 I2 I3)",
+                   I_Q = I + m |r|^2 - m r r^T cannot be inverted in f64 (m R^2 beyond f64, \
+                   or too large against the moments)",
         })
     }
 }

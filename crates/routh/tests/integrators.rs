@@ -2135,4 +2135,87 @@ mod units {
         };
         assert_ne!(steps(&body, &x), steps(&b, &y));
     }
+
+    /// Issue 33, last item: the default case (rtol = atol = 1e-10 over 20 T) in units of mass
+    /// 2^-997 (m = 7.5e-301) and 2^997 (m = 1.3e300), alone and with lengths 2^332 and
+    /// 2^-332, far outside the old absolute range of the inertia (`1.6e-51 <= I + m r^2 <=
+    /// 5.5e51`, refused before): omega is inverted in the body's unit of inertia, so the
+    /// copies are the same motion. DOP853: the same counters, the final state and the
+    /// relative drift of every integral representable in both to the bit (tolerance zero:
+    /// powers of two). H2, of the units of an inertia squared, is 2^-1994 or 2^1994 times the
+    /// default's in the copies in mass alone: not an f64 (0 or refused), so it is compared in
+    /// the copies that keep `m R^2` within 2^±333. Taylor: the same steps, the states within
+    /// 1e-9 as in [`a_copy_in_binary_units_takes_the_same_steps_to_the_bit`] (its tape folds
+    /// the parameters 1 of the default body and not of the copy: round-off). Decimal factors
+    /// (1e-300, 1e300 with R = 1e-100): within 1e-7 as in
+    /// [`a_copy_in_decimal_units_agrees_within_the_tolerance`].
+    #[test]
+    fn a_copy_far_outside_the_old_inertia_range_is_the_same_motion() {
+        let body = Body::default();
+        let x = state(&body, 0.3, [0.5, 0.2, 8.0]);
+        let units = Units::of(&body, &x.omega(&body));
+        let t_end = 20.0 * units.time();
+        let p = units.momentum();
+        let (tiny, huge) = (2f64.powi(-997), 2f64.powi(997));
+        for method in [Method::Dop853, Method::Taylor] {
+            let reference = simulated(&body, &x, t_end, method);
+            for (factors, with_h2) in [
+                ([tiny, 1.0, 1.0], false),
+                ([tiny, 2f64.powi(332), 1.0], true),
+                ([huge, 2f64.powi(-332), 1.0], true),
+                ([huge, 2f64.powi(-300), 0.5], true),
+            ] {
+                let [k, l, s] = factors;
+                let (b, y) = (
+                    scaled_body(&body, factors).unwrap(),
+                    scaled_state(&x, factors),
+                );
+                let copy = simulated(&b, &y, s * t_end, method);
+                let context = format!("{method} factors {factors:?}");
+                assert_eq!(counters(&copy), counters(&reference), "{context}");
+                let back = copy.final_state.m.map(|v| v * s / (k * l * l));
+                let end = &reference.final_state;
+                if method == Method::Taylor {
+                    let pairs = copy.final_state.gamma.iter().zip(&end.gamma);
+                    for ((g, g0), (m, m0)) in pairs.zip(back.iter().zip(&end.m)) {
+                        let close = (g - g0).abs() <= 1e-9 && (m - m0).abs() / p <= 1e-9;
+                        assert!(close, "{context}: {g} {g0} {m} {m0}");
+                    }
+                    continue;
+                }
+                assert_eq!(copy.final_state.gamma, end.gamma, "{context}");
+                assert_eq!(back, end.m, "{context}");
+                for (name, drift) in &reference.integrals {
+                    if *name == "H2" && !with_h2 {
+                        continue;
+                    }
+                    assert_eq!(
+                        copy.integrals[name].max_rel_drift.to_bits(),
+                        drift.max_rel_drift.to_bits(),
+                        "{context}: {name}"
+                    );
+                }
+            }
+            for factors in [[1e-300, 1.0, 1.0], [1e300, 1e-100, 1.0]] {
+                let [k, l, s] = factors;
+                let (b, y) = (
+                    scaled_body(&body, factors).unwrap(),
+                    scaled_state(&x, factors),
+                );
+                let copy = simulated(&b, &y, s * t_end, method);
+                let context = format!("{method} factors {factors:?}");
+                let (n, n0) = (copy.steps as f64, reference.steps as f64);
+                assert!((n - n0).abs() <= 2.0 + 0.1 * n0, "{context}: {n} {n0}");
+                let back = copy.final_state.m.map(|v| v * s / (k * l * l) / p);
+                let m0 = reference.final_state.m.map(|v| v / p);
+                for (a, b) in back
+                    .iter()
+                    .chain(&copy.final_state.gamma)
+                    .zip(m0.iter().chain(&reference.final_state.gamma))
+                {
+                    assert!((a - b).abs() <= 1e-7, "{context}: {back:?} {m0:?}");
+                }
+            }
+        }
+    }
 }

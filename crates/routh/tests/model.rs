@@ -2123,3 +2123,185 @@ mod simulate {
         );
     }
 }
+
+mod inertia_unit {
+    //! Issue 33, last item: `omega = I_Q^{-1} M` is computed in the body's unit of inertia k
+    //! (`Ball::inertia_unit`, `max(m R^2, I_max)` rounded to a power of two), as
+    //! `(I_Q / k)^{-1} (M / k)`, in both closed forms (cofactors for numbers, the determinant
+    //! for the Taylor tape). k being a power of two, every intermediate is the unscaled one
+    //! times a power of two: omega is the formula's before, to the bit, for every body in which
+    //! that one was finite and normal (the old range `1.6e-51 <= I + m r^2 <= 5.5e51`), and
+    //! finite for a body in any units, where the old one overflowed or underflowed.
+    //!
+    //! Tolerances: zero (bit for bit) wherever the scaling is by powers of two; 4 ulp (relative
+    //! 1e-15) between a body and its copy scaled by a decimal factor (1e-300), whose
+    //! parameters are each rounded once in the scaling (a relative 1.1e-16 each, carried
+    //! through a well-conditioned inverse, condition number below 10 here).
+
+    use routh::sampling::SplitMix64;
+    use routh::scalar::{dot, Scalar};
+    use routh::units::{scaled_body, scaled_state};
+    use routh::{AsBall, Ball, Body, State};
+
+    /// The cofactor form of omega as it was before the body's unit (the code of
+    /// `Ball::angular_velocity` in the problem's units, copied literally; `mul_add` and
+    /// `recip` those of `Scalar`, as there).
+    fn old_cofactors(ball: &Ball, gamma: &[f64; 3], m_vec: &[f64; 3]) -> [f64; 3] {
+        let (m, inertia) = (ball.m(), ball.inertia());
+        let r = ball.contact_vector(gamma);
+        let mr2 = dot(&r, &r) * m;
+        let a: [f64; 3] = std::array::from_fn(|i| mr2 + inertia[i]);
+        let cofactor = [a[1] * a[2], a[0] * a[2], a[0] * a[1]];
+        let det_a = a[0] * cofactor[0];
+        let b: [f64; 3] = std::array::from_fn(|i| r[i] * cofactor[i]);
+        let c: [f64; 3] = std::array::from_fn(|i| m_vec[i] * cofactor[i]);
+        let det_iq = det_a - dot(&r, &b) * m;
+        let coupling = dot(&r, &c) * m;
+        let scale = Scalar::recip(det_iq * det_a);
+        std::array::from_fn(|i| Scalar::mul_add(c[i], det_iq, b[i] * coupling) * scale)
+    }
+
+    fn bits(v: [f64; 3]) -> [u64; 3] {
+        v.map(f64::to_bits)
+    }
+
+    /// Random balls inside the old range (m from 1e-20 to 1e20, R from 1e-5 to 1e5, moments
+    /// 0.5 to 1 times m R^2 (the triangle rule holds), the centre of mass anywhere within 0.8 R; one in two with
+    /// I1 = I2, so that the determinant form's groups of equal moments are both exercised).
+    fn balls(rng: &mut SplitMix64, count: usize) -> Vec<Ball> {
+        (0..count)
+            .map(|n| {
+                let m = 10f64.powf(rng.uniform(-20.0, 20.0));
+                let radius = 10f64.powf(rng.uniform(-5.0, 5.0));
+                let unit = m * radius * radius;
+                let mut moment = || unit * rng.uniform(0.5, 1.0);
+                let (i1, i3) = (moment(), moment());
+                let i2 = if n % 2 == 0 { i1 } else { moment() };
+                let com = [0, 1, 2].map(|_| 0.45 * radius * rng.uniform(-1.0, 1.0));
+                Ball::new(m, radius, [i1, i2, i3], com, 9.81).unwrap()
+            })
+            .collect()
+    }
+
+    /// Test 2 of the item: for 400 random balls inside the old range and 10 states each,
+    /// the new omega equals the old formula's to the bit, in both forms: the cofactors
+    /// against a literal copy of the old code, the determinant against itself in the unit 1
+    /// (`Ball::inertia_in(1.0)`: each product by 1 exact, the old operations). 399 of the
+    /// 400 have k != 1, so the equality is not that of unchanged code.
+    #[test]
+    fn omega_in_the_unit_of_inertia_is_the_old_formula_to_the_bit() {
+        let mut rng = SplitMix64::new(33);
+        let mut scaled = 0;
+        for ball in balls(&mut rng, 400) {
+            routh::range::check_body(&ball).unwrap();
+            let k = ball.inertia_unit();
+            assert_eq!(
+                k,
+                2f64.powi(k.log2() as i32),
+                "{ball:?}: k = {k} a power of two"
+            );
+            scaled += usize::from(k != 1.0);
+            let old = ball.inertia_in(1.0);
+            for _ in 0..10 {
+                let x = rng.phase_point(3.0, 0.0, 0.0);
+                let gamma = [x[0], x[1], x[2]];
+                let unit = ball.m() * ball.radius() * ball.radius();
+                let m_vec = [x[3] * unit, x[4] * unit, x[5] * unit];
+                let omega = ball.angular_velocity(&gamma, &m_vec);
+                assert!(omega.iter().all(|w| w.is_finite()), "{ball:?}");
+                assert_eq!(
+                    bits(omega),
+                    bits(old_cofactors(&ball, &gamma, &m_vec)),
+                    "{ball:?} {x:?}"
+                );
+                assert_eq!(
+                    bits(omega),
+                    bits(ball.angular_velocity_in(&old, &gamma, &m_vec))
+                );
+                assert_eq!(
+                    bits(ball.angular_velocity_by_determinant(&gamma, &m_vec)),
+                    bits(ball.angular_velocity_by_determinant_in(&old, &gamma, &m_vec)),
+                    "{ball:?} {x:?}"
+                );
+            }
+        }
+        assert!(scaled >= 390, "{scaled} of 400 balls with k != 1");
+    }
+
+    /// The default body in units of mass 2^-997 (m = 7.5e-301) and 2^997 (m = 1.3e300), the
+    /// latter also in lengths 2^-332 (R = 1.1e-100, so that `m R^2`, 2^333, keeps the
+    /// integrals finite): omega in both forms is the default body's to the bit (scaled by
+    /// `1 / s` of the time factor, here 1), and so is Routh's g (times `k l^2`). Test 3, the
+    /// negative control: in the problem's units (the unit 1, the old formula) omega of the
+    /// same copies is not finite, and g of the copies in mass alone is 0 or infinite.
+    #[test]
+    fn a_copy_in_other_units_has_the_same_omega_and_the_old_formula_overflows() {
+        let body = Body::default();
+        let state = State::from_omega(
+            &body,
+            [0.3_f64.sin(), 0.0, 0.3_f64.cos()],
+            [0.5, 0.2, 8.0],
+            routh::state::Normalise::Reject,
+        )
+        .unwrap();
+        let omega = state.omega(&body);
+        let by_determinant =
+            |b: &Body, y: &State| b.ball().angular_velocity_by_determinant(&y.gamma, &y.m);
+        let reference = by_determinant(&body, &state);
+        for factors in [
+            [2f64.powi(-997), 1.0, 1.0],
+            [2f64.powi(997), 1.0, 1.0],
+            [2f64.powi(997), 2f64.powi(-332), 1.0],
+        ] {
+            let copy = scaled_body(&body, factors).unwrap();
+            let y = scaled_state(&state, factors);
+            routh::range::check_body(&copy).unwrap();
+            assert_eq!(bits(y.omega(&copy)), bits(omega), "{factors:?}");
+            assert_eq!(
+                bits(by_determinant(&copy, &y)),
+                bits(reference),
+                "{factors:?}"
+            );
+            // Routh's g (of the units of an inertia) in the unit of inertia: the default's times
+            // k l^2, to the bit; in the problem's units (the formula before) g^2, of the size
+            // of k^2 = 2^-1994 or 2^1994, left f64 (g = 0 or inf, and K = g omega3 with it).
+            let [k, l, _] = factors;
+            let g = copy.routh_g(&y.gamma);
+            assert_eq!(
+                g.to_bits(),
+                (body.routh_g(&state.gamma) * k * l * l).to_bits()
+            );
+            let horizontal = y.gamma[0] * y.gamma[0] + y.gamma[1] * y.gamma[1];
+            let (m, radius, i1, i3) = (copy.m(), copy.radius(), copy.i1(), copy.i3());
+            let h = y.gamma[2] * radius + copy.a();
+            let old_g =
+                (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt();
+            if l == 1.0 {
+                assert!(
+                    old_g == 0.0 || old_g.is_infinite(),
+                    "{factors:?}: {old_g:e}"
+                );
+            }
+            let ball = copy.ball();
+            let old = ball.inertia_in(1.0);
+            let before = ball.angular_velocity_in(&old, &y.gamma, &y.m);
+            assert!(
+                before.iter().any(|w| !w.is_finite()),
+                "{factors:?}: {before:?}"
+            );
+            assert!(old_cofactors(&ball, &y.gamma, &y.m)
+                .iter()
+                .any(|w| !w.is_finite()));
+        }
+        // A decimal factor: each parameter and M rounded once, omega within 1e-15 |omega|
+        // (measured: 1.4e-15 / 8.0 = 1.7e-16 in omega1).
+        let factors = [1e-300, 1.0, 1.0];
+        let copy = scaled_body(&body, factors).unwrap();
+        let y = scaled_state(&state, factors);
+        let w = y.omega(&copy);
+        let size = omega.iter().map(|v| v * v).sum::<f64>().sqrt();
+        for i in 0..3 {
+            assert!((w[i] - omega[i]).abs() <= 1e-15 * size, "{w:?} {omega:?}");
+        }
+    }
+}

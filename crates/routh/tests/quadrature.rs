@@ -1231,6 +1231,30 @@ mod exact_in_any_units {
         }
     }
 
+    /// Issue 33, last item: the default case in units of mass 2^-997 (m = 7.5e-301) and 2^997
+    /// with lengths 2^-332 (m = 1.3e300, R = 1.1e-100), and in the decimal units 1e-300 and
+    /// 1e300 with 1e-100: outside the absolute range of the inertia (`1.6e-51 ..= 5.5e51`)
+    /// that refused them before, now solved as the default case: within
+    /// `EXACT_COPY_AGREEMENT` for powers of two, `COPY_AGREEMENT` for decimal factors.
+    #[test]
+    fn the_default_case_far_outside_the_old_inertia_range_is_the_default_case() {
+        let body = default_body(1.0, 0.4, 0.5);
+        let x0 = default_state(&body);
+        let original = ExactSolution::new(&body, &x0).unwrap();
+        for (factors, agreement) in [
+            ([2f64.powi(-997), 1.0, 1.0], EXACT_COPY_AGREEMENT),
+            ([2f64.powi(997), 2f64.powi(-332), 1.0], EXACT_COPY_AGREEMENT),
+            ([1e-300, 1.0, 1.0], COPY_AGREEMENT),
+            ([1e300, 1e-100, 1.0], COPY_AGREEMENT),
+        ] {
+            let (copy_body, copy_x0) = scaled(&body, &x0, factors);
+            let copy = ExactSolution::new(&copy_body, &copy_x0).unwrap();
+            let d = copy_difference(&original, &copy, factors).unwrap();
+            println!("copied by {factors:?}: {d:.1e}");
+            assert!(d <= agreement, "{factors:?}: {d:e}");
+        }
+    }
+
     /// The default case's body (m = 1, R = 1, a = 0.3, I1 = 0.4, I3 = 0.5, G = 9.81) with `m`,
     /// `I1` and `I3` given.
     pub(super) fn default_body(m: f64, i1: f64, i3: f64) -> Body {

@@ -622,3 +622,30 @@ fn the_comparisons_can_fail() {
         assert_eq!(far > 1e3 * 1e-7, grows, "f = {f}: {far}");
     }
 }
+
+/// Issue 33, last item: the default body in units of mass 2^997 and length 2^-332 (and in the
+/// decimal units 1e300, 1e-100), accepted since the inertia about the contact point is
+/// inverted in the body's own unit: Routh's threshold, in which `G a A` is of the size of a
+/// length to the fourth (1e-400 there), is computed with the lengths in the unit R rounded to a
+/// power of two, and is the default's: to the bit for powers of two, within 4 eps for the
+/// decimal factors (each parameter rounded once, the formula a few correctly rounded
+/// operations). Negative control: the lift of the formula in the problem's lengths (the one
+/// before) underflows to 0, the threshold 0 that `routh steady` printed.
+#[test]
+fn routh_threshold_of_a_body_in_units_of_length_1e_minus_100() {
+    let body = Body::default();
+    let w = routh_threshold(&body, 1.0);
+    for (factors, tolerance) in [
+        ([2f64.powi(997), 2f64.powi(-332), 1.0], 0.0),
+        ([1e300, 1e-100, 1.0], 4.0 * f64::EPSILON),
+    ] {
+        let copy = scaled_body(&body, factors).unwrap();
+        let wc = routh_threshold(&copy, 1.0);
+        assert!((wc - w).abs() <= tolerance * w, "{factors:?}: {wc} {w}");
+        let mu = Units::with_rate(&copy, 0.0).mass();
+        let n = copy.m() / mu;
+        let l = copy.radius() + copy.a();
+        let lift = 4.0 * copy.gravity() * copy.a() * (copy.i1() / mu + n * l * l) * n;
+        assert_eq!(lift, 0.0, "{factors:?}");
+    }
+}
