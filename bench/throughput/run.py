@@ -15,7 +15,8 @@ tilts spread evenly over (0.05, 1.5), to t = 10 (the initial states come from ro
   default method, the runs' tilts given as the `[sweep]` table's values, the CSV table
   written to a pipe and read back for the final states), with the default columns (final
   state, integrals and their drift) and with every column (also the turning points by events
-  and the nutation by quadrature): what a user's sweep costs, not the lanes alone;
+  and the nutation by quadrature): what a user's sweep costs, not the lanes alone (the
+  fastest of 2 x REPEAT processes: a whole process is noisier than a loop inside one);
 * heyoka ensemble: `ensemble_propagate_until` with one worker thread (a copy of the
   integrator per run, as heyoka does it);
 * heyoka batch: `taylor_adaptive_batch` with heyoka's recommended SIMD width (or
@@ -97,7 +98,7 @@ def sweep(states, tol, repeat, columns):
     rows = list(csv.DictReader(io.StringIO(out)))
     names = ["final_gamma1", "final_gamma2", "final_gamma3", "final_M1", "final_M2", "final_M3"]
     finals = [[float(r[n]) for n in names] for r in sorted(rows, key=lambda r: int(r["run"]))]
-    return best, finals, {"method": rows[0]["method"], "columns": columns}
+    return best, finals, {"ran": rows[0]["method"], "columns": columns}
 
 
 def error(finals, reference):
@@ -233,8 +234,8 @@ def main():
                 ("routh taylor", "taylor"), ("routh taylor4", "taylor4"), ("routh taylor8", "taylor8")]
         for name, f in [(name, lambda mode=mode: routh(bench, mode, tol, states, args.repeat))
                         for name, mode in ours] + [
-                        ("routh sweep", lambda: sweep(states, tol, args.repeat, "final,integrals")),
-                        ("routh sweep --columns all", lambda: sweep(states, tol, args.repeat, "all")),
+                        ("routh sweep", lambda: sweep(states, tol, 2 * args.repeat, "final,integrals")),
+                        ("routh sweep --columns all", lambda: sweep(states, tol, 2 * args.repeat, "all")),
                         # The batch mode before the ensemble: after the ensemble (heyoka's
                         # thread pool, even with one worker) the batch mode measured at
                         # 23,000 to 35,000 runs/s at 1e-12 instead of its 45,000 alone.

@@ -46,9 +46,19 @@ pub fn routh_integral<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
 /// `H2 = I1 H1 + (I3 - I1)/I1 K^2 - (m/I1) H3^2`, valid with and without gravity (I1 = I2).
 #[inline]
 pub fn quadratic_integral<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
-    let k = routh_integral(body, x);
-    let h3 = jellett(body, x);
-    energy(body, x) * body.i1() + k * k * ((body.i3() - body.i1()) / body.i1())
+    quadratic_of(
+        body,
+        energy(body, x),
+        routh_integral(body, x),
+        jellett(body, x),
+    )
+}
+
+/// H2 of [`quadratic_integral`] from the values `h1`, `k` and `h3` of H1, K and H3 (so that
+/// [`Integrals::at`] computes each once).
+#[inline]
+fn quadratic_of<D: Scalar>(body: &Body, h1: D, k: D, h3: D) -> D {
+    h1 * body.i1() + k * k * ((body.i3() - body.i1()) / body.i1())
         - h3 * h3 * (body.m() / body.i1())
 }
 
@@ -146,21 +156,26 @@ impl Integrals {
             Model::RouthSphere => ball.axial_body("Routh's integrals").ok(),
             _ => None,
         };
-        let h2 = match &routh {
-            Some(body) => Some(quadratic_integral(body, x)),
-            None if ball.gravity() == 0.0 && model == Model::General => ball
+        let h1 = energy(&ball, x);
+        let (h3, k) = match &routh {
+            Some(body) => (Some(jellett(body, x)), Some(routh_integral(body, x))),
+            None => (None, None),
+        };
+        let h2 = match (&routh, k, h3) {
+            (Some(body), Some(k), Some(h3)) => Some(quadratic_of(body, h1, k, h3)),
+            _ if ball.gravity() == 0.0 && model == Model::General => ball
                 .axial_body("the quadratic integral (int)")
                 .ok()
                 .map(|body| quadratic_integral_free(&body, x)),
-            None => None,
+            _ => None,
         };
         let chaplygin = model == Model::Chaplygin;
         Integrals {
-            h1: energy(&ball, x),
+            h1,
             h2,
-            h3: routh.as_ref().map(|body| jellett(body, x)),
+            h3,
             h4: geometric(x),
-            k: routh.as_ref().map(|body| routh_integral(body, x)),
+            k,
             mm: chaplygin.then(|| momentum_squared(x)),
             m_gamma: chaplygin.then(|| area_integral(x)),
         }
