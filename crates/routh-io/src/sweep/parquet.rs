@@ -195,8 +195,12 @@ impl ParquetTable {
         let columns = sweep.table_columns();
         let settings = sweep.run_settings();
         let staged = Staged::beside(target)?;
+        // No dictionary encoding: the numbers of a sweep are nearly all distinct, so hashing
+        // each one into a dictionary (the crate's default) was most of the writer's time, a
+        // thread beside the runs; Snappy compresses the repeated ones (settings, status).
         let props = WriterProperties::builder()
             .set_compression(Compression::SNAPPY)
+            .set_dictionary_enabled(false)
             .set_key_value_metadata(Some(vec![
                 KeyValue::new(CASE_KEY.into(), sweep.case_text.clone()),
                 KeyValue::new(VERSION_KEY.into(), env!("CARGO_PKG_VERSION").to_string()),
