@@ -121,10 +121,31 @@ pub fn check_state(body: &impl AsBall, state: &State) -> Result<()> {
     }
     let x = state.to_array();
     let values = Integrals::at(body, &x).values();
-    for (name, value) in crate::integrals::INTEGRAL_NAMES.iter().zip(values) {
+    // The same state turning at a unit spin: an integral that overflows there too does so
+    // because of the body's size (H2 grows as the square of its inertia), not of the spin.
+    let at_unit_spin = (spin > 0.0).then(|| {
+        let m = state.m.map(|c| c / spin);
+        Integrals::at(body, &[x[0], x[1], x[2], m[0], m[1], m[2]]).values()
+    });
+    for (i, (name, value)) in crate::integrals::INTEGRAL_NAMES
+        .iter()
+        .zip(values)
+        .enumerate()
+    {
         if let Some(v) = value.filter(|v| !v.is_finite()) {
+            let by_size = at_unit_spin.is_some_and(|u| u[i].is_some_and(|v| !v.is_finite()));
             return Err(RouthError::Overflow {
-                cause: cause(),
+                cause: if by_size {
+                    format!(
+                        "the body's size (its unit of inertia max(m R^2, I_max) = {:.3e}, \
+                         m = {:e}, R = {:e}; at any spin)",
+                        body.inertia_unit(),
+                        body.m(),
+                        body.radius()
+                    )
+                } else {
+                    cause()
+                },
                 quantity: integral_meaning(name),
                 direction: "overflow",
                 value: v,
@@ -177,6 +198,34 @@ mod tests {
         let fine = State::from_omega(&body, [0.0, 0.0, 1.0], [0.0, 0.0, 1e100], Normalise::Reject)
             .unwrap();
         check_state(&body, &fine).unwrap();
+    }
+
+    /// An integral beyond f64 because of the body's size (the default body in units of
+    /// length 1e100: H2 has the size of its inertia squared, 1e400, at any spin) blames the
+    /// body, not the spin (it blamed "the spin |omega| = 8"); the same body turning at 1e-200
+    /// rad/s is refused the same way, and a huge spin of the default body still names the spin.
+    #[test]
+    fn an_integral_beyond_f64_by_the_body_s_size_names_the_body() {
+        let l = 1e100;
+        let body = Body::new(
+            1.0,
+            l,
+            0.3 * l,
+            0.4 * l * l,
+            0.4 * l * l,
+            0.5 * l * l,
+            9.81 * l,
+        )
+        .unwrap();
+        for omega in [[0.5, 0.2, 8.0], [5e-201, 2e-201, 8e-200]] {
+            let state =
+                State::from_omega(&body, [0.0, 0.0, 1.0], omega, Normalise::Reject).unwrap();
+            let e = check_state(&body, &state).unwrap_err().to_string();
+            assert!(
+                e.contains("the body's size") && e.contains("R = 1e100") && !e.contains("spin |"),
+                "{e}"
+            );
+        }
     }
 
     /// A huge mass with the default moments is refused by the ratio of `m r^2` to the moments,
