@@ -40,14 +40,37 @@ impl Cell {
     /// The cell as CSV text: numbers in the shortest form that reads back to the same f64,
     /// empty for null, text quoted when it holds a comma, a quote or a line break.
     pub fn to_csv(&self) -> String {
-        match self {
-            Cell::Int(v) => v.map(|v| v.to_string()).unwrap_or_default(),
-            Cell::Float(v) => v.map(|v| v.to_string()).unwrap_or_default(),
+        let mut text = String::new();
+        self.write_csv(&mut text);
+        text
+    }
+
+    /// [`Cell::to_csv`] appended to `out` (no allocation but `out`'s growth: a sweep's
+    /// writer formats every cell of every row through it).
+    pub fn write_csv(&self, out: &mut String) {
+        use std::fmt::Write;
+        // Writing into a `String` cannot fail.
+        let _ = match self {
+            Cell::Int(Some(v)) => write!(out, "{v}"),
+            Cell::Float(Some(v)) => write!(out, "{v}"),
+            Cell::Int(None) | Cell::Float(None) => Ok(()),
             Cell::Text(s) if s.contains([',', '"', '\n', '\r']) => {
-                format!("\"{}\"", s.replace('"', "\"\"").replace(['\n', '\r'], " "))
+                out.push('"');
+                for c in s.chars() {
+                    match c {
+                        '"' => out.push_str("\"\""),
+                        '\n' | '\r' => out.push(' '),
+                        c => out.push(c),
+                    }
+                }
+                out.push('"');
+                Ok(())
             }
-            Cell::Text(s) => s.clone(),
-        }
+            Cell::Text(s) => {
+                out.push_str(s);
+                Ok(())
+            }
+        };
     }
 
     /// The cell as a number of a [`crate::table::Table`]: NaN for null and for text (as an
@@ -63,6 +86,17 @@ impl Cell {
 
 /// The cells as one line of CSV (without the line break).
 pub fn csv_line(cells: &[Cell]) -> String {
-    let cells: Vec<String> = cells.iter().map(Cell::to_csv).collect();
-    cells.join(",")
+    let mut line = String::new();
+    write_csv_line(cells, &mut line);
+    line
+}
+
+/// [`csv_line`] appended to `out` (without the line break).
+pub fn write_csv_line(cells: &[Cell], out: &mut String) {
+    for (i, cell) in cells.iter().enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        cell.write_csv(out);
+    }
 }

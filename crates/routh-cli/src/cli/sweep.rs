@@ -87,14 +87,62 @@ struct Stdout {
 
 impl TableWriter for Stdout {
     fn write(&mut self, rows: &[Row]) -> Result<()> {
+        let mut text = String::new();
         for row in rows {
-            outln!("{}", row.csv_line(&self.settings))?;
+            row.write_csv_line(&self.settings, &mut text);
+            text.push('\n');
         }
-        Ok(())
+        outln!("{}", text.trim_end_matches('\n'))
     }
 
     fn finish(self: Box<Self>) -> Result<()> {
         Ok(())
+    }
+}
+
+/// Where a sweep's rows go as they are written (by its worker threads, [`Sweep::execute`]):
+/// the table (unless only `--json` is asked for), the rows of `--json`, the counts of the
+/// summary and the progress bar.
+struct Output {
+    table: Option<Box<dyn TableWriter>>,
+    /// The columns' names and the settings of `--json`'s rows, when it is asked for.
+    json: Option<(Vec<String>, routh::sweep::record::RunSettings)>,
+    json_rows: Vec<serde_json::Map<String, serde_json::Value>>,
+    ran: u64,
+    failed: u64,
+    bar: indicatif::ProgressBar,
+}
+
+impl TableWriter for Output {
+    fn write(&mut self, rows: &[Row]) -> Result<()> {
+        if let Some(table) = self.table.as_mut() {
+            table.write(rows)?;
+        }
+        self.ran += rows.len() as u64;
+        self.failed += rows
+            .iter()
+            .filter(|r| r.status == routh::sweep::record::Status::Failed)
+            .count() as u64;
+        if let Some((names, settings)) = &self.json {
+            self.json_rows.extend(rows.iter().map(|r| {
+                let cells = r.cells(settings);
+                names
+                    .iter()
+                    .cloned()
+                    .zip(cells.iter().map(|c| c.to_json()))
+                    .collect::<serde_json::Map<_, _>>()
+            }));
+        }
+        self.bar.inc(rows.len() as u64);
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>) -> Result<()> {
+        self.bar.finish_and_clear();
+        match self.table {
+            Some(table) => table.finish(),
+            None => Ok(()),
+        }
     }
 }
 
@@ -126,7 +174,7 @@ pub fn run(args: Args) -> Result<()> {
     sweep.batch = !args.no_batch;
     let sweep = Arc::new(sweep);
     let names: Vec<String> = sweep.table_columns().into_iter().map(|c| c.0).collect();
-    let (mut writer, resumed): (Box<dyn TableWriter>, Resumed) = match &args.out {
+    let (table, resumed): (Box<dyn TableWriter>, Resumed) = match &args.out {
         Some(path) => open(path, &sweep, args.resume)?,
         None => {
             if !args.json {
@@ -140,7 +188,7 @@ pub fn run(args: Args) -> Result<()> {
             )
         }
     };
-    let done = &resumed.done;
+    let done = resumed.done;
     if let (Some(partial), Some(path)) = (&resumed.dropped, &args.out) {
         eprintln!(
             "routh sweep: dropped the last row of {}, cut short ({partial}): its run is done again",
@@ -163,34 +211,20 @@ pub fn run(args: Args) -> Result<()> {
     } else {
         indicatif::ProgressBar::hidden()
     };
+    let output = Output {
+        table: (args.out.is_some() || !args.json).then_some(table),
+        json: args.json.then(|| (names, sweep.run_settings())),
+        json_rows: Vec::new(),
+        ran: 0,
+        failed: 0,
+        bar,
+    };
     let start = Instant::now();
-    let mut json_rows = Vec::new();
-    let (mut ran, mut failed) = (0u64, 0u64);
-    let settings_row = sweep.run_settings();
-    let completion = sweep.execute(todo, &pool, chunk(sweep.runs()), &stop, &mut |rows| {
-        if args.out.is_some() || !args.json {
-            writer.write(rows)?;
-        }
-        ran += rows.len() as u64;
-        failed += rows
-            .iter()
-            .filter(|r| r.status == routh::sweep::record::Status::Failed)
-            .count() as u64;
-        if args.json {
-            json_rows.extend(rows.iter().map(|r| {
-                let cells = r.cells(&settings_row);
-                names
-                    .iter()
-                    .cloned()
-                    .zip(cells.iter().map(|c| c.to_json()))
-                    .collect::<serde_json::Map<_, _>>()
-            }));
-        }
-        bar.inc(rows.len() as u64);
-        Ok(())
-    })?;
-    bar.finish_and_clear();
-    writer.finish()?;
+    let (completion, mut output) =
+        sweep.execute(todo, &pool, chunk(sweep.runs()), &stop, output)?;
+    let (ran, failed) = (output.ran, output.failed);
+    let json_rows = std::mem::take(&mut output.json_rows);
+    Box::new(output).finish()?;
     let elapsed = start.elapsed().as_secs_f64();
     let stopped = completion == Completion::Stopped;
     if args.json {

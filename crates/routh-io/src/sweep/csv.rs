@@ -124,11 +124,15 @@ impl CsvTable {
 
 impl TableWriter for CsvTable {
     fn write(&mut self, rows: &[Row]) -> Result<()> {
+        let mut text = String::new();
         for row in rows {
-            let line = row.csv_line(&self.sweep_settings);
-            writeln!(self.file, "{line}").map_err(|e| self.staged.io(e))?;
+            row.write_csv_line(&self.sweep_settings, &mut text);
+            text.push('\n');
         }
-        self.file.flush().map_err(|e| self.staged.io(e))
+        self.file
+            .write_all(text.as_bytes())
+            .and_then(|()| self.file.flush())
+            .map_err(|e| self.staged.io(e))
     }
 
     fn finish(self: Box<Self>) -> Result<()> {

@@ -2,7 +2,7 @@
 //! JSON, written through [`crate::row`]).
 
 use crate::integrals::INTEGRAL_NAMES;
-use crate::row::{csv_line, Cell, Kind};
+use crate::row::{csv_line, write_csv_line, Cell, Kind};
 use crate::simulate::Summary;
 use crate::sweep::columns::{catalogue, Columns};
 use crate::sweep::turning::NutationEvents;
@@ -136,6 +136,11 @@ impl Row {
     /// The row as one line of CSV (without the line break).
     pub fn csv_line(&self, settings: &RunSettings) -> String {
         csv_line(&self.cells(settings))
+    }
+
+    /// [`Row::csv_line`] appended to `out`.
+    pub fn write_csv_line(&self, settings: &RunSettings, out: &mut String) {
+        write_csv_line(&self.cells(settings), out)
     }
 }
 
