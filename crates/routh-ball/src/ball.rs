@@ -245,7 +245,7 @@ impl Ball {
     /// (barring subnormals), and so is every product and sum of the closed forms made of them:
     /// each intermediate is the one of the unscaled formula times a power of two, and omega,
     /// of degree 0 in k, is the unscaled formula's to the bit wherever neither overflows nor
-    /// underflows (`tests/model.rs`, `omega_in_the_unit_of_inertia_is_the_old_formula_to_the_bit`).
+    /// underflows (`tests/suite/model.rs`, `omega_in_the_unit_of_inertia_is_the_old_formula_to_the_bit`).
     #[inline(always)]
     pub fn scaled_inertia(&self) -> ScaledInertia {
         self.inertia_in(self.unit)

@@ -2,8 +2,7 @@
 //! types them. The numerics behind them are tested in the library
 //! (`crates/routh/tests/quadrature.rs`, module `exact_in_any_units`).
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{assert_exit_2, routh};
 use std::path::{Path, PathBuf};

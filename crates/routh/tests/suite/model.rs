@@ -2,9 +2,6 @@
 //!
 //! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
 
-#[path = "support/properties.rs"]
-mod properties;
-
 mod ball {
     //! The general unbalanced ball and its models: which integrals each one states, checked by
     //! automatic differentiation of the same field that simulates, with a negative control per

@@ -2,8 +2,7 @@
 //! exit code 2 and a message naming the key, the value and the rule (the input that caused
 //! the failure, not a quantity computed from it); each control beside it runs.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{assert_exit_2, routh};
 

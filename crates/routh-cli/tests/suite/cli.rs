@@ -2,9 +2,6 @@
 //!
 //! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
 
-#[path = "common/mod.rs"]
-mod common;
-
 mod batch_sweep {
     //! `routh sweep` in SIMD lanes (the default with DOP853) against `routh sweep --no-batch`
     //! (one run at a time): every row is the same, bit for bit (serde_json writes the shortest

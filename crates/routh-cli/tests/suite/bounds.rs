@@ -3,7 +3,7 @@
 //! output files: temporary names that fit, errors that name the target, `--resume` of a cut
 //! row, one output stream per destination.
 
-mod common;
+use crate::common;
 
 use common::{assert_exit_2, command, listing, routh};
 use std::path::{Path, PathBuf};

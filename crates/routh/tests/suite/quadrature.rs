@@ -2,9 +2,6 @@
 //!
 //! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
 
-#[path = "support/exact_sweep.rs"]
-mod sweep_cases;
-
 mod exact_decisions {
     //! When `exact` may call a state steady, when it must solve the motion, and when it must
     //! refuse: the reproducers of issue 10 (wrong "steady" verdicts near the vertical spin) and of
@@ -166,7 +163,7 @@ mod exact_decisions {
         // the sphere, omega with components log-uniform from 0.03 to 30; 100 states within 1e-3
         // of the top-heavy vertical spin, 50 above and 50 below Routh's threshold. All are
         // regular values (none is steady or on a separatrix to round-off: those are decided by
-        // the tests above and in tests/quadrature.rs): at t = 10 the quadrature must solve every
+        // the tests above and in tests/suite/quadrature.rs): at t = 10 the quadrature must solve every
         // one and agree with DOP853 to 1e-8 (issue 14), and its error estimate must not be far
         // below the measured error.
         let mut rng = Random(20261123);
@@ -726,7 +723,7 @@ mod quadrature_reference {
     //! The data file `tests/data/quadrature_reference.csv` was written by this test in its write
     //! mode on commit 1276152 (before the quadrature was made cheaper, issue 13, and before the
     //! field was written with exact identities, issue 12):
-    //! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test quadrature quadrature_reference`.
+    //! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test suite quadrature:: quadrature_reference`.
     //! 31 lines were rewritten by issue 33 (every other line still agrees with the stored one;
     //! the rewrite kept the stored line wherever the new one agrees with it to this test's
     //! tolerances, and took the new one elsewhere): the two states built on the separatrix of
@@ -1805,11 +1802,11 @@ mod exact_numbers {
     //! vertical spin, slender (I3 / I1 down to 1e-3) and flat, each in units scaled by powers of
     //! two (masses 2^+-100, lengths 4^+-16, times 2^+-17), by decimal factors or not at all.
 
-    use crate::exact_in_any_units::{
+    use super::exact_in_any_units::{
         default_body, default_state, random_factors, random_problem, scaled, slender_near_the_axis,
         state,
     };
-    use crate::quadrature::on_separatrix;
+    use super::quadrature::on_separatrix;
     use proptest::prelude::*;
     use proptest::test_runner::{RngSeed, TestCaseError, TestRunner};
     use routh::body::Body;

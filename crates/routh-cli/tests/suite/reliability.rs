@@ -2,9 +2,6 @@
 //!
 //! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
 
-#[path = "common/mod.rs"]
-mod common;
-
 mod reliability {
     //! Regression tests of issue 10, one per reproducer: never a wrong answer with exit 0, never
     //! a lost or clobbered file. Each was observed failing on the commit before the fix (ded9944)
