@@ -59,14 +59,6 @@ impl GaussLegendre {
             .map(|(x, w)| w * f(*x))
             .sum()
     }
-
-    /// The integral over [0, 1] of the function whose `values` at the nodes are given: bit
-    /// for bit [`GaussLegendre::integrate`] of that function (the same products, summed in
-    /// the same order).
-    pub fn integrate_values(&self, values: &[f64]) -> f64 {
-        assert_eq!(values.len(), self.nodes.len(), "one value a node");
-        values.iter().zip(&self.weights).map(|(v, w)| w * v).sum()
-    }
 }
 
 /// A Gauss-Legendre rule loses its geometric convergence when a singularity of the
