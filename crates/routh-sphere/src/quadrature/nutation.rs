@@ -566,8 +566,9 @@ impl ExactSolution {
     /// and its error, with the same text, exactly when `new` errs. The same decision and the
     /// same series, without what only the states and the error estimate need (the nutation
     /// solved again with moved integrals, the phase of the initial state, the probes of the
-    /// accuracy): about half the cost of `new` (on the default case 0.25 ms against 0.50 ms,
-    /// `benches/quadrature.rs`; `new` took 0.88 ms before Q' and Q'' were evaluated in lanes).
+    /// accuracy): about half the cost of `new` (on the default case 38 us against 79 us,
+    /// `benches/quadrature.rs`, on a loaded machine where they took 0.28 ms and 0.54 ms before
+    /// the cofactor came from divided differences of Q, `Nutation::cofactor_with_noise`).
     /// What the `quadrature` columns of a sweep use.
     pub fn nutation_numbers(body: &Body, initial: &State) -> Result<NutationNumbers> {
         require_finite_inertia(body)?;
