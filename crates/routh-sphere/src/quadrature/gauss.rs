@@ -16,8 +16,8 @@ pub struct GaussLegendre {
 /// The rules of up to this many nodes are computed once per process ([`GaussLegendre::new`]).
 const CACHED: usize = 65;
 
-/// The rules computed so far, by number of nodes, shared by every thread: a sweep builds two
-/// rules per run (the quadrature of each row), which cost 10 % of its time when recomputed.
+/// The rules computed so far, by number of nodes, shared by every thread: computing one costs
+/// Newton's method at each node, copying it two short vectors.
 static RULES: [OnceLock<GaussLegendre>; CACHED] = [const { OnceLock::new() }; CACHED];
 
 impl GaussLegendre {
@@ -59,14 +59,6 @@ impl GaussLegendre {
             .map(|(x, w)| w * f(*x))
             .sum()
     }
-
-    /// The integral over [0, 1] of the function whose `values` at the nodes are given: bit
-    /// for bit [`GaussLegendre::integrate`] of that function (the same products, summed in
-    /// the same order).
-    pub fn integrate_values(&self, values: &[f64]) -> f64 {
-        assert_eq!(values.len(), self.nodes.len(), "one value a node");
-        values.iter().zip(&self.weights).map(|(v, w)| w * v).sum()
-    }
 }
 
 /// A Gauss-Legendre rule loses its geometric convergence when a singularity of the
@@ -91,28 +83,14 @@ impl GaussLegendre {
         singularities: &[(f64, f64)],
         f: &impl Fn(f64) -> f64,
     ) -> (f64, usize) {
-        self.mean_avoiding_by(a, b, singularities, &|a, b| {
-            self.integrate(|tau| f(a + tau * (b - a)))
-        })
-    }
-
-    /// [`GaussLegendre::mean_avoiding`] with the rule's integral over a piece `[a, b]` given by
-    /// `piece(a, b)` (the mean of f there, `integrate(|tau| f(a + tau (b - a)))`, computed as
-    /// the caller can, e.g. at all the nodes at once): the same pieces, the same sums.
-    pub fn mean_avoiding_by(
-        &self,
-        a: f64,
-        b: f64,
-        singularities: &[(f64, f64)],
-        piece: &impl Fn(f64, f64) -> f64,
-    ) -> (f64, usize) {
         let min_rho = self.min_rho();
         let near = |a: f64, b: f64| {
             singularities
                 .iter()
                 .any(|&z| bernstein_rho(a, b, z) < min_rho)
         };
-        self.mean_at_depth(a, b, &near, piece, 0)
+        let piece = |a: f64, b: f64| self.integrate(|tau| f(a + tau * (b - a)));
+        self.mean_at_depth(a, b, &near, &piece, 0)
     }
 
     /// The smallest Bernstein parameter of a singularity for which this rule's error,

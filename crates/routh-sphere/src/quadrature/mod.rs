@@ -6,8 +6,8 @@
 //! time costs the same as at the start ([`nutation`]). The derivation is in
 //! `docs/quadrature.md`.
 
+pub mod divided;
 pub mod gauss;
-pub mod lanes;
 pub mod nutation;
 pub mod panels;
 pub mod reduction;

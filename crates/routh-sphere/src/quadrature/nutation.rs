@@ -25,46 +25,25 @@ use crate::differential::jacobian;
 use crate::error::{Result, RouthError};
 use crate::field::vector_field;
 use crate::integrate::brent;
-use crate::quadrature::gauss::{bernstein_rho, GaussLegendre};
 use crate::quadrature::panels::{Piecewise, Sample};
 use crate::quadrature::reduction::{frame_index, omega_round_off, Reduction};
 use crate::state::State;
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use crate::units::Units;
 use std::f64::consts::{PI, TAU};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Most samples spent on the panels of one nutation (a count: the same in any units); a level
 /// set that needs more lies within
 /// the resolution of f64 of a separatrix (or passes the axis closer than psi can be followed).
 /// Bisection toward a near-singularity at distance epsilon costs about
 /// `2 PANEL_NODES log2(1/epsilon)` samples, so this allows epsilon down to 1e-30. In the fuzz
-/// build (`cfg(fuzzing)`) a tenth (see `WORK_BUDGET`).
+/// build (`cfg(fuzzing)`, set by `cargo fuzz`) a tenth: the inputs that exhaust it are refused
+/// sooner, by the same code (docs/reliability.md, Fuzzing).
 const SAMPLE_BUDGET: usize = if cfg!(fuzzing) { 640 } else { 6400 };
-/// Gauss-Legendre nodes for the divided differences of Q and N (see `Nutation::cofactor`).
-const DIVIDED_DIFFERENCE_NODES: usize = 24;
-/// Lanes of the evaluations of Q' at those nodes ([`Reduction::q_slopes_in_frame`]).
-const SLOPE_LANES: usize = 8;
-const _: () = assert!(DIVIDED_DIFFERENCE_NODES % SLOPE_LANES == 0);
-/// Most Gauss-Legendre pieces (24 evaluations of Q' or N' each) spent on one nutation (a
-/// count), about 0.25 s: near a singularity of Q just outside `[-1, 1]` (a body with `a` close
-/// to R and a large m) every sample bisects toward it, and with the sample budget that took
-/// 1.5 s on a fuzz input. Ordinary motions use 2 pieces per sample. In the fuzz build
-/// (`cfg(fuzzing)`, set by `cargo fuzz`) 2,000 pieces, about 5 ms, and a tenth of the samples:
-/// the inputs that exhaust the budgets are refused sooner, by the same code, and the fuzz
-/// target `numerics_exact` runs at the speed of ordinary motions instead of spending most of
-/// its time on them (docs/reliability.md, Fuzzing).
-const WORK_BUDGET: usize = if cfg!(fuzzing) { 2_000 } else { 100_000 };
 /// Above this width `u2 - u1` the cofactor P is computed from first divided differences of Q
 /// (accurate over long intervals), below it from the second derivative (no cancellation). A
 /// width in `u = gamma3`, a cosine: dimensionless.
 const WIDE_NUTATION: f64 = 1.0 / 16.0;
-/// Gauss-Legendre nodes per direction of the double integral of a narrow nutation's cofactor:
-/// over a width below `WIDE_NUTATION` Q'' is so close to a polynomial that 8 nodes (exact to
-/// degree 15) leave an error far below round-off unless a singularity of Q lies within
-/// about the width of the nutation (then the cofactor is that of a wide one, see
-/// `Nutation::narrow`).
-const NARROW_NODES: usize = 8;
 /// First step of the outward search for the turning points, relative to the distance x0 of
 /// the start from the pole (x is dimensionless, and known to its relative round-off).
 const FIRST_SEARCH_STEP: f64 = 1e-8;
@@ -83,33 +62,6 @@ const RELATIVE_EQUILIBRIUM_EPSILONS: f64 = 64.0;
 /// typical size, not a bound, and a double root within a few such sizes cannot be told from a
 /// separatrix.
 const SEPARATRIX_MARGIN: f64 = 16.0;
-
-/// A count of Gauss-Legendre pieces that methods taking `&self` increase: atomic, so that a
-/// [`Nutation`] stays `Sync` (shared between threads, as Python's `ExactSolution` is).
-#[derive(Debug, Default)]
-struct Work(AtomicUsize);
-
-impl Work {
-    fn add(&self, pieces: usize) {
-        self.0.fetch_add(pieces, Ordering::Relaxed);
-    }
-
-    fn get(&self) -> usize {
-        self.0.load(Ordering::Relaxed)
-    }
-}
-
-impl Clone for Work {
-    fn clone(&self) -> Self {
-        Work(AtomicUsize::new(self.get()))
-    }
-}
-
-impl PartialEq for Work {
-    fn eq(&self, other: &Self) -> bool {
-        self.get() == other.get()
-    }
-}
 
 /// A nutation: the tilt oscillates between `u1` and `u2`, the whole state is periodic up to
 /// a rotation about e3 by `advance` per period. Its public numbers are in the problem's units;
@@ -157,27 +109,12 @@ pub struct Nutation {
     /// `dt/dsigma`, `dpsi/dsigma` and `dphi/dsigma` (less their pole parts) on `[0, pi]`, in
     /// the dimensionless problem.
     series: Piecewise,
-    rule: GaussLegendre,
-    /// The rule of the double integral of a narrow nutation's cofactor.
-    narrow_rule: GaussLegendre,
-    /// Whether the cofactor is that of a narrow nutation: `u2 - u1 <= WIDE_NUTATION`, and no
-    /// singularity of Q within the Bernstein ellipse of `[u1, u2]` on which the error of
-    /// `narrow_rule` reaches round-off ([`GaussLegendre::min_rho`]). A slender body
-    /// (C << A m R^2) has a branch point of g about `C (A + m h_p^2) / (2 A m R^2)` beyond each
-    /// pole: with I3 = 1e-3, I1 = 0.4, 1.9e-3, where one 8-point rule over a nutation of width
-    /// 0.055 next to the pole left P 1e-3 off, unseen by the series (the state at t = 0 was
-    /// 1.6e-3 off, estimated 4e-14).
+    /// Whether the cofactor is that of a narrow nutation: `u2 - u1 <= WIDE_NUTATION`.
     narrow: bool,
-    /// Where Q is not analytic ([`Reduction::singularities`]), in u.
-    singularities: Vec<(f64, f64)>,
-    /// The same in the distance `x = 1 - p u` from the top and the bottom pole.
-    frame_singularities: [Vec<(f64, f64)>; 2],
     /// The round-off scale of `dQ/dx` at the upper and at the lower turning point, in the
     /// frame of the top and of the bottom pole ([`Reduction::q_scales_in_frame`]): part of the
     /// round-off of every sample of a wide nutation's cofactor, computed once.
     end_slope_scales: [f64; 2],
-    /// Gauss-Legendre pieces evaluated so far (see `WORK_BUDGET`).
-    work: Work,
     /// Phase sigma of the initial state.
     sigma0: f64,
     /// The size of M (dimensionless) against which the relative error of M is measured: that
@@ -629,8 +566,9 @@ impl ExactSolution {
     /// and its error, with the same text, exactly when `new` errs. The same decision and the
     /// same series, without what only the states and the error estimate need (the nutation
     /// solved again with moved integrals, the phase of the initial state, the probes of the
-    /// accuracy): about half the cost of `new` (on the default case 0.25 ms against 0.50 ms,
-    /// `benches/quadrature.rs`; `new` took 0.88 ms before Q' and Q'' were evaluated in lanes).
+    /// accuracy): about half the cost of `new` (on the default case 38 us against 79 us,
+    /// `benches/quadrature.rs`, on a loaded machine where they took 0.28 ms and 0.54 ms before
+    /// the cofactor came from divided differences of Q, `Nutation::cofactor_with_noise`).
     /// What the `quadrature` columns of a sweep use.
     pub fn nutation_numbers(body: &Body, initial: &State) -> Result<NutationNumbers> {
         require_finite_inertia(body)?;
@@ -1096,29 +1034,14 @@ impl Nutation {
             period_error: 0.0,
             advance_error: 0.0,
             series: Piecewise::default(),
-            rule: GaussLegendre::new(DIVIDED_DIFFERENCE_NODES),
-            narrow_rule: GaussLegendre::new(NARROW_NODES),
-            narrow: false,
-            singularities: red.singularities(),
-            frame_singularities: [1.0, -1.0].map(|pole| {
-                red.singularities()
-                    .iter()
-                    .map(|&(re, im)| (1.0 - pole * re, im))
-                    .collect()
-            }),
+            narrow: turnings.width <= WIDE_NUTATION,
             end_slope_scales: [(1.0, upper.gap), (-1.0, lower.gap)]
                 .map(|(pole, gap)| red.q_scales_in_frame(pole, gap).1),
-            work: Work::default(),
             sigma0: 0.0,
             momentum_scale: 0.0,
             psi_ref: 0.0,
             poles: vec![],
         };
-        nut.narrow = nut.width <= WIDE_NUTATION
-            && nut
-                .singularities
-                .iter()
-                .all(|&z| bernstein_rho(u1, u2, z) >= nut.narrow_rule.min_rho());
         // The rate `dpsi/dt = N(u) / (2 A R) [1/(1 - u) - 1/(1 + u)] - omega3` has poles at
         // u = +-1, outside the nutation but close to it when the motion passes near the axis:
         // they would make psi turn too fast for a cosine series. Their parts
@@ -1287,8 +1210,7 @@ impl Nutation {
     /// between the two halves of the nutation, a jump no series resolves. Computed without
     /// dividing Q by a small distance:
     ///
-    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`, or a singularity of Q within the reach
-    ///   of the narrow rule, see `Nutation::narrow`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
+    /// * a wide nutation (`u2 - u1 > WIDE_NUTATION`): `(Q[u1, u] - Q[u, u2]) / (u2 - u1)`. On
     ///   the half of the nutation next to `u2` the near difference `Q[u, u2]` is the mean of
     ///   `dQ/dx` between the turning point and u in the frame of the top pole
     ///   (`x = 1 - u` from the phase, [`Reduction::q_in_frame`]), and the far one is
@@ -1299,14 +1221,17 @@ impl Nutation {
     ///   O(1) values there. The half next to `u1` is the mirror image in the frame of the
     ///   bottom pole. The two formulas differ by the round-off of Q at the turning points,
     ///   and they meet at `sigma = pi/2`, the boundary between the two sides of the panels.
-    /// * a narrow one: by Hermite-Genocchi, `Q[u1, u, u2] =
-    ///   int_0^1 int_0^1 s Q''(u1 + s (u - u1) + s t (u2 - u)) dt ds`, whose round-off does
-    ///   not grow as `u2 - u1` shrinks (the first form loses the digits of `u2 - u1`), in the
-    ///   distance from the nearer pole.
+    /// * a narrow one: `Q[u1, u, u2]` itself, whose round-off does not grow as `u2 - u1`
+    ///   shrinks (the first form loses the digits of `u2 - u1`), in the distance from the
+    ///   nearer pole.
     ///
-    /// Q' and Q'' by automatic differentiation, the integrals by Gauss-Legendre. Also returns
-    /// the relative round-off of P: `eps` times the magnitudes of the terms of Q and of their
-    /// slopes (curvatures), against P.
+    /// The divided differences by the Leibniz rule
+    /// ([`Reduction::q_divided_differences_in_frame`]), one evaluation of Q each: exact but for
+    /// round-off, however close a singularity of Q lies (the means of Q' and Q'' by
+    /// Gauss-Legendre rules that they replace were bisected toward it, and an 8-point rule over
+    /// a narrow nutation of a slender body next to the pole, I3 = 1e-3, left P 1e-3 off). Also
+    /// returns the relative round-off of P: `eps` times the magnitudes of the terms of Q and
+    /// of their slopes (curvatures), against P.
     fn cofactor_with_noise(&self, phase: &Phase) -> (f64, f64) {
         let red = &self.reduction;
         let width = self.width;
@@ -1328,32 +1253,15 @@ impl Nutation {
                     phase.one_minus - self.gap_top,
                 )
             };
-            // Each piece's nodes in lanes ([`Reduction::q_slopes_in_frame`], each
-            // `q_slope_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
-            let rule = &self.rule;
-            let (near, pieces) = rule.mean_avoiding_by(
-                x_end,
-                x,
-                &self.frame_singularities[frame_index(pole)],
-                &|a, b| {
-                    let mut slopes = [0.0; DIVIDED_DIFFERENCE_NODES];
-                    let lanes = slopes.chunks_exact_mut(SLOPE_LANES);
-                    for (chunk, nodes) in lanes.zip(rule.nodes.chunks_exact(SLOPE_LANES)) {
-                        let points: [f64; SLOPE_LANES] =
-                            std::array::from_fn(|j| a + nodes[j] * (b - a));
-                        chunk.copy_from_slice(&red.q_slopes_in_frame(pole, points));
-                    }
-                    rule.integrate_values(&slopes)
-                },
-            );
-            self.work.add(pieces);
-            let q = red.q_in_frame(pole, x);
-            let p = (q / far + near) / width;
-            let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
+            // At [x_end, x, x]: `Q[x_end, x]`, Q(x), and the round-off scales of Q and of Q'
+            // at x.
+            let (q, scales) = red.q_divided_differences_in_frame(pole, [x_end, x, x]);
+            let p = (q.values[1] / far + q.first[0]) / width;
             let end_slope_scale = self.end_slope_scales[frame_index(pole)];
             (
                 p,
-                f64::EPSILON * (scale / far + slope_scale + end_slope_scale) / (width * p.abs()),
+                f64::EPSILON * (scales.values[1] / far + scales.first[1] + end_slope_scale)
+                    / (width * p.abs()),
             )
         } else {
             // In the distance x from the pole nearer to the nutation (x = 1 - p u, so
@@ -1367,15 +1275,10 @@ impl Nutation {
                 (-1.0, self.gap_bottom, phase.one_plus)
             };
             let far = near + width;
-            let rule = &self.narrow_rule;
-            // The inner rule's points at once ([`Reduction::q_curvatures_in_frame`], each
-            // `q_curvature_in_frame` bit for bit), summed as `GaussLegendre::integrate` does.
-            let p = -rule.integrate(|s| {
-                let points: [f64; NARROW_NODES] =
-                    std::array::from_fn(|j| near + s * (x - near) + s * rule.nodes[j] * (far - x));
-                s * rule.integrate_values(&red.q_curvatures_in_frame(pole, points))
-            });
-            (p, f64::EPSILON * red.q_curvature_scale(phase.u) / p.abs())
+            let (q, scales) = red.q_divided_differences_in_frame(pole, [near, x, far]);
+            let p = -q.second;
+            // The round-off scale of Q'' over the nutation: `Q[x1, x, x2] = Q''(xi) / 2`.
+            (p, f64::EPSILON * 2.0 * scales.second / p.abs())
         }
     }
 
@@ -1384,17 +1287,6 @@ impl Nutation {
     /// `dpsi/dsigma = rate f` less the pole parts `c_p / (1 - p u)`.
     fn sample(&self, sigma: f64, rho: f64) -> Result<Sample> {
         let red = &self.reduction;
-        if self.work.get() > WORK_BUDGET {
-            return Err(RouthError::Singular {
-                formula: "the reduced equation (du/dt)^2 = Q(u)",
-                reason: format!(
-                    "a singularity of Q at {:?} (re, im) lies so close to the nutation between \
-                     {} and {} that its quadrature needs more than {WORK_BUDGET} \
-                     Gauss-Legendre pieces",
-                    self.singularities, self.u1, self.u2
-                ),
-            });
-        }
         let phase = if sigma <= 0.5 * PI {
             self.phase(sigma, false)
         } else {

@@ -45,12 +45,11 @@
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::{energy, jellett, routh_integral};
-use crate::quadrature::lanes::Lanes;
+use crate::quadrature::divided::DividedDifferences;
 use crate::scalar::{lift, Real, Scalar};
 use crate::state::State;
 use num_dual::{
     first_derivative, second_derivative, second_partial_derivative, third_partial_derivative_vec,
-    Dual, Dual2,
 };
 
 /// The smallest moment of inertia, relative to m R^2, for which the reduction is computed: with
@@ -608,72 +607,24 @@ impl Reduction {
         })
     }
 
-    /// `d2Q/dx2 = Q''(u)` at `x = 1 - p u` in the frame of pole `p`.
-    pub fn q_curvature_in_frame(&self, pole: f64, x: f64) -> f64 {
-        second_derivative(|v| self.q_in_frame(pole, v), x).2
-    }
-
-    /// [`Reduction::q_curvature_in_frame`] at each of the points `xs`, bit for bit, evaluated
-    /// as one number of `W` lanes ([`Lanes`]: the same operations on each point, which the
-    /// processor overlaps).
-    pub fn q_curvatures_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
-        let x = Lanes(xs.map(|x| Dual2::from_re(x).derivative()));
-        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
-            .0
-            .map(|q| q.v2)
-    }
-
-    /// `dQ/dx` at `x = 1 - p u` in the frame of pole `p`.
-    pub fn q_slope_in_frame(&self, pole: f64, x: f64) -> f64 {
-        first_derivative(|v| self.q_in_frame(pole, v), x).1
-    }
-
-    /// [`Reduction::q_slope_in_frame`] at each of the points `xs`, bit for bit, evaluated as
-    /// one number of `W` lanes (as [`Reduction::q_curvatures_in_frame`]).
-    pub fn q_slopes_in_frame<const W: usize>(&self, pole: f64, xs: [f64; W]) -> [f64; W] {
-        let x = Lanes(xs.map(|x| Dual::from_re(x).derivative()));
-        sum(self.q_terms_in_frame(pole, x, self.frame_parameters(pole)))
-            .0
-            .map(|q| q.eps)
-    }
-
-    /// The complex points `(re, im)` where Q (and N) are not analytic: the zeros of
-    /// `g(u)^2 = (C - A) m R^2 u^2 + 2 C m R a u + A C + A m R^2 + C m a^2` (branch points of
-    /// g) and of the inertia `A + m |r|^2 = A + m (R^2 + a^2) + 2 m R a u` (a pole). Gauss-
-    /// Legendre rules over u bisect toward them ([`crate::quadrature::gauss`]).
-    pub fn singularities(&self) -> Vec<(f64, f64)> {
-        let b = &self.body;
-        let (ai, c, m, r, a) = (b.i1(), b.i3(), b.m(), b.radius(), b.a());
-        let mut points = vec![];
-        if a != 0.0 {
-            points.push((-(ai + m * (r * r + a * a)) / (2.0 * m * r * a), 0.0));
-        }
-        let (q2, q1, q0) = (
-            (c - ai) * m * r * r,
-            2.0 * c * m * r * a,
-            ai * c + ai * m * r * r + c * m * a * a,
+    /// `Q` at the points `[x0, x1, x2]` (`x = 1 - p u`) in the frame of pole `p`, with its
+    /// divided differences there, `Q[x0, x1]`, `Q[x1, x2]` and `Q[x0, x1, x2]`, each by the
+    /// Leibniz rule ([`DividedDifferences`]): without the cancellation of `Q(x1) - Q(x0)`
+    /// however close the points, and in one evaluation of the terms of Q. Also the round-off
+    /// scale of each part: the sum of the magnitudes of that part of the terms (at equal
+    /// points those of [`Reduction::q_scales_in_frame`] and half those of
+    /// [`Reduction::q_curvature_scale`]).
+    pub fn q_divided_differences_in_frame(
+        &self,
+        pole: f64,
+        points: [f64; 3],
+    ) -> (DividedDifferences, DividedDifferences) {
+        let terms = self.q_terms_in_frame(
+            pole,
+            DividedDifferences::variable(points),
+            self.frame_parameters(pole),
         );
-        if q2 == 0.0 {
-            if q1 != 0.0 {
-                points.push((-q0 / q1, 0.0));
-            }
-        } else {
-            let disc = q1 * q1 - 4.0 * q2 * q0;
-            if disc >= 0.0 {
-                // Without cancellation: the root of larger magnitude first, the other from
-                // the product of the roots q0 / q2.
-                let big = -0.5 * (q1 + q1.signum() * disc.sqrt());
-                points.push((big / q2, 0.0));
-                if big != 0.0 {
-                    points.push((q0 / big, 0.0));
-                }
-            } else {
-                let im = (-disc).sqrt() / (2.0 * q2).abs();
-                points.push((-q1 / (2.0 * q2), im));
-            }
-        }
-        points.retain(|z| z.0.is_finite() && z.1.is_finite());
-        points
+        (sum(terms), sum(terms.map(DividedDifferences::magnitudes)))
     }
 
     /// The round-off scale of `Q''` at `u`: the sum of the magnitudes of the second
@@ -743,8 +694,8 @@ impl Reduction {
 }
 
 /// A number the terms of Q in a pole's frame are written over ([`Reduction::q_terms_in_frame`]):
-/// field arithmetic, and `J(x)`, whose form depends on the sign of the real part of `h h_p`
-/// (one number's, or each lane's).
+/// field arithmetic, and `J(x)`, whose form depends on the sign of `h h_p` (of the real part of
+/// one number, or at each point of [`DividedDifferences`]).
 trait FrameScalar: Scalar {
     /// [`jellett_divided_at`].
     fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self;
@@ -757,15 +708,46 @@ impl<D: Real> FrameScalar for D {
     }
 }
 
-impl<D: Real, const W: usize> FrameScalar for Lanes<D, W> {
-    /// Lane by lane, each in its own form.
+impl FrameScalar for DividedDifferences {
+    /// Where `h h_p > 0` at every point, the rationalised form by the Leibniz rule. Elsewhere
+    /// the values are those of [`jellett_divided_at`] at each point, and the differences
+    /// follow from those of `y = x J = h_p/g_p - h/g` (the differences of `-h/g`, without
+    /// cancellation) by the Leibniz rule for `x J`, solved for those of J at the point farther
+    /// from the pole: `y[xa, xb] = x(xa) J[xa, xb] + x[xa, xb] J(xb)` and
+    /// `y[x0, x1, x2] = x(x0) J[x0, x1, x2] + x[x0, x1] J[x1, x2] + x[x0, x1, x2] J(x2)`, or the
+    /// same with the points in reverse order (divided differences are symmetric). That point
+    /// is one where `h h_p <= 0`, at least `1 + p a / R` from the pole; dividing by a point
+    /// near the pole instead would bring back the cancellation of the direct form there.
     #[inline(always)]
     fn jellett_divided_at(geo: &PoleGeometry, x: Self, h: Self, g: Self) -> Self {
-        let mut j = x;
-        for (i, j) in j.0.iter_mut().enumerate() {
-            *j = jellett_divided_at(geo, x.0[i], h.0[i], g.0[i]);
+        if h.values.iter().all(|&h| h * geo.hp > 0.0) {
+            return jellett_rationalised(geo, x, h, g);
         }
-        j
+        let values: [f64; 3] =
+            std::array::from_fn(|i| jellett_divided_at(geo, x.values[i], h.values[i], g.values[i]));
+        let y = jellett_times_x(geo, h, g);
+        let ([x0, x1, x2], [j0, j1, j2]) = (x.values, values);
+        let solve = |y: f64, slope: f64, (xa, ja): (f64, f64), (xb, jb): (f64, f64)| {
+            if xa.abs() >= xb.abs() {
+                (y - slope * jb) / xa
+            } else {
+                (y - slope * ja) / xb
+            }
+        };
+        let first = [
+            solve(y.first[0], x.first[0], (x0, j0), (x1, j1)),
+            solve(y.first[1], x.first[1], (x1, j1), (x2, j2)),
+        ];
+        let second = if x0.abs() >= x2.abs() {
+            (y.second - x.first[0] * first[1] - x.second * j2) / x0
+        } else {
+            (y.second - x.first[1] * first[0] - x.second * j0) / x2
+        };
+        DividedDifferences {
+            values,
+            first,
+            second,
+        }
     }
 }
 
@@ -777,15 +759,30 @@ fn g_change_at<D: Scalar>(geo: &PoleGeometry, x: D, h: D) -> (D, D) {
     (change, (change + geo.gp2).sqrt())
 }
 
-/// `J(x)` of [`Reduction::jellett_divided`] at `x = 1 - p u` with `h` and `g = g(u)` there.
+/// `J(x)` of [`Reduction::jellett_divided`] at `x = 1 - p u` with `h` and `g = g(u)` there:
+/// rationalised where h and h_p have the same sign, directly where they do not (then x is not
+/// small).
 #[inline(always)]
 fn jellett_divided_at<D: Real>(geo: &PoleGeometry, x: D, h: D, g: D) -> D {
-    let (hp, gp) = (geo.hp, geo.gp);
-    if h.re() * hp > 0.0 {
-        ((-x + 2.0) * geo.jellett_even + (h + hp) * geo.jellett_odd) / (g * gp * (g * hp + h * gp))
+    if h.re() * geo.hp > 0.0 {
+        jellett_rationalised(geo, x, h, g)
     } else {
-        (g.recip() * (-h) + hp / gp) / x
+        jellett_times_x(geo, h, g) / x
     }
+}
+
+/// `J(x) = [h_p^2 A m R^2 (2 - x) + A C p R (h_p + h)] / (g g_p (h_p g + h g_p))` (module
+/// docs): no cancellation where h and h_p have the same sign.
+#[inline(always)]
+fn jellett_rationalised<D: Scalar>(geo: &PoleGeometry, x: D, h: D, g: D) -> D {
+    let (hp, gp) = (geo.hp, geo.gp);
+    ((-x + 2.0) * geo.jellett_even + (h + hp) * geo.jellett_odd) / (g * gp * (g * hp + h * gp))
+}
+
+/// `x J(x) = h_p / g_p - h / g`, a difference of O(1) numbers near the pole.
+#[inline(always)]
+fn jellett_times_x<D: Scalar>(geo: &PoleGeometry, h: D, g: D) -> D {
+    g.recip() * (-h) + geo.hp / geo.gp
 }
 
 #[cfg(test)]
@@ -793,10 +790,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn lanes_are_the_scalar_evaluations_bit_for_bit() {
-        // Q' and Q'' at 8 points in lanes against one point at a time, in both frames, for
-        // bodies with a of either sign (so that `h h_p` changes sign inside [0, 2] and the two
-        // forms of J(x) meet in one number of lanes), from the pole to past the other pole.
+    fn divided_differences_of_q_are_its_derivatives_and_secants() {
+        // Q by the Leibniz rule against Q itself, in both frames, for bodies with a of either
+        // sign (so that `h h_p` changes sign inside [0, 2] and both forms of J(x) meet in one
+        // evaluation), from the pole to past the other pole: at three equal points the
+        // differences are Q' and Q''/2 (automatic differentiation); at points 0.2 apart they
+        // are the secants of the values, which lose a few ulps of the sizes of Q there.
+        // Tolerance: 1e-12 of the round-off scales of Q and Q' (`q_scales_in_frame`, and |Q''|
+        // for Q''), 1e-11 of that of Q over the spacing for the secants.
         for (a, i3) in [(0.3, 0.5), (-0.6, 1e-3), (0.9, 0.8)] {
             let body = Body::new(1.0, 1.0, a, 0.4, 0.4, i3, 9.81).unwrap();
             let state = State::new(
@@ -807,22 +808,55 @@ mod tests {
             .unwrap();
             let red = Reduction::of_state(&body, &state).unwrap();
             for pole in [1.0, -1.0] {
-                for start in [0.0, 1e-9, 0.3, 1.1, 1.7] {
-                    let xs: [f64; 8] = std::array::from_fn(|j| start + 0.04 * j as f64);
-                    let slopes = red.q_slopes_in_frame(pole, xs);
-                    let curvatures = red.q_curvatures_in_frame(pole, xs);
-                    for (j, &x) in xs.iter().enumerate() {
-                        let slope = red.q_slope_in_frame(pole, x);
-                        let curvature = red.q_curvature_in_frame(pole, x);
-                        assert_eq!(slopes[j].to_bits(), slope.to_bits(), "{a} {pole} {x}");
-                        assert_eq!(
-                            curvatures[j].to_bits(),
-                            curvature.to_bits(),
-                            "{a} {pole} {x}"
-                        );
-                    }
+                for x in [0.0, 1e-9, 0.3, 1.1, 1.5] {
+                    let q = |x: f64| red.q_in_frame(pole, x);
+                    let (_, slope, curvature) = second_derivative(|v| red.q_in_frame(pole, v), x);
+                    let (scale, slope_scale) = red.q_scales_in_frame(pole, x);
+                    // The round-off scale of Q'' ([`Reduction::q_curvature_scale`]) is NaN at
+                    // u = -0.7 for the body with a = -0.6: Q'' and those of Q and Q' instead.
+                    let curvature_scale = curvature.abs() + slope_scale + scale;
+                    let (at, scales) = red.q_divided_differences_in_frame(pole, [x; 3]);
+                    assert!(
+                        (scales.values[0] - scale).abs() <= 1e-15 * scale,
+                        "{a} {pole}"
+                    );
+                    assert!((scales.first[0] - slope_scale).abs() <= 1e-12 * slope_scale);
+                    assert_eq!(at.values[0], q(x), "{a} {pole} {x}");
+                    assert!(
+                        (at.first[0] - slope).abs() <= 1e-12 * slope_scale,
+                        "{a} {pole} {x}: {at:?} {slope}"
+                    );
+                    assert!(
+                        (at.second - 0.5 * curvature).abs() <= 1e-12 * curvature_scale,
+                        "{a} {pole} {x}: {at:?} {curvature}"
+                    );
+                    let points = [x, x + 0.2, x + 0.4];
+                    let (apart, _) = red.q_divided_differences_in_frame(pole, points);
+                    let secant = (q(points[1]) - q(points[0])) / 0.2;
+                    let secants = (q(points[2]) - q(points[1])) / 0.2;
+                    let noise = 1e-11 * scale / 0.2;
+                    assert!((apart.first[0] - secant).abs() <= noise, "{a} {pole} {x}");
+                    assert!(
+                        (apart.second - (secants - secant) / 0.4).abs() <= noise / 0.4,
+                        "{a} {pole} {x}"
+                    );
                 }
             }
         }
+        // Negative control: the differences of another level set differ.
+        let state = State::new(
+            [0.3, 0.1, 0.9],
+            [0.5, -0.2, 8.0],
+            crate::state::Normalise::Rescale,
+        )
+        .unwrap();
+        let red = Reduction::of_state(&Body::default(), &state).unwrap();
+        let moved = red.with_parameters(red.parameters().map(|p| p * 1.001));
+        let at = |r: &Reduction| {
+            r.q_divided_differences_in_frame(1.0, [0.1, 0.3, 0.5])
+                .0
+                .second
+        };
+        assert!((at(&red) - at(&moved)).abs() > 1e-6 * at(&red).abs());
     }
 }
