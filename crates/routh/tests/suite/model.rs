@@ -1131,8 +1131,9 @@ mod fuzz_properties {
     /// The timeout the `numerics` fuzz target found (1.5 s, docs/reliability.md): a body of mass
     /// 1000 with a = 0.993 R, whose Q has a singularity 0.005 beyond gamma3 = -1, at rest
     /// (omega 1e-309) with gamma horizontal. Every sample of the quadrature bisected its
-    /// Gauss-Legendre rule toward the singularity; the work is now bounded (`WORK_BUDGET`) and
-    /// the motion refused with the reason. No panic, no NaN.
+    /// Gauss-Legendre rule toward the singularity; the work was then bounded and the motion
+    /// refused with the reason (the cofactor is now one evaluation of Q on divided differences,
+    /// docs/quadrature.md, and the motion is still refused, as singular). No panic, no NaN.
     #[test]
     fn fuzz_timeout_near_singular_body_is_refused() {
         let bytes: &[u8] = &[
