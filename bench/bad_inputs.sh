@@ -52,7 +52,7 @@ for cmd in simulate exact steady; do try body any $cmd --case "$(edit "m = 1.0" 
 # lengths 1e-100 (so that H2, of the units of an inertia squared, stays within f64): the same
 # body in other units, which must be solved as the default case is (issue 33: refused before by
 # the absolute range 1.6e-51 to 5.5e51 of I + m r^2; the answers, the default's after scaling
-# back, are checked by crates/routh-cli/tests/cli.rs and crates/routh/tests/integrators.rs).
+# back, are checked by crates/routh-cli/tests/suite/cli.rs and crates/routh/tests/suite/integrators.rs).
 units() { sed "$1" "$DEFAULT" > "$DIR/u.toml"; echo "$DIR/u.toml"; }
 for cmd in simulate exact steady; do
   try body ok $cmd --case "$(units 's|m = 1.0|m = 1e-300|; s|I1 = 0.4|I1 = 4e-301|; s|I3 = 0.5|I3 = 5e-301|')"

@@ -2,7 +2,7 @@
 //!
 //! One test binary, one module a topic (issue 32: few binaries, each named after what it proves).
 
-mod reliability {
+mod reproducers {
     //! Regression tests of issue 10, one per reproducer: never a wrong answer with exit 0, never
     //! a lost or clobbered file. Each was observed failing on the commit before the fix (ded9944)
     //! and passes after. The binary under test is `ROUTH_BIN` when set (to run these tests

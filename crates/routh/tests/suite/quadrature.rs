@@ -366,7 +366,7 @@ mod exact_sweep {
     }
 }
 
-mod quadrature {
+mod solutions {
     //! The exact solution by quadrature against the DOP853 integrator, the nutation period
     //! against the integrator's events, and the degenerate cases.
 
@@ -1806,7 +1806,7 @@ mod exact_numbers {
         default_body, default_state, random_factors, random_problem, scaled, slender_near_the_axis,
         state,
     };
-    use super::quadrature::on_separatrix;
+    use super::solutions::on_separatrix;
     use proptest::prelude::*;
     use proptest::test_runner::{RngSeed, TestCaseError, TestRunner};
     use routh::body::Body;

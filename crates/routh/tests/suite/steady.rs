@@ -461,7 +461,7 @@ mod diagram {
     }
 }
 
-mod steady {
+mod steady_motions {
     //! Stationary motions: Routh's threshold against the double root of Q and against the
     //! eigenvalues of the Jacobian; steady precessions against the integrator.
 
