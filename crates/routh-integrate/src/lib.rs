@@ -20,6 +20,9 @@
 //! * [`Method`] names them, [`stepper`] builds the one chosen (and resolves `auto`);
 //! * [`brent`]: a bracketing scalar root finder; [`locate`]: the one event locator (the
 //!   crossings of several event functions on a step's dense output).
+//! * [`variational`]: the variational equations of a field written over
+//!   [`Scalar`](scalar::Scalar) (the tangent flow by automatic differentiation of the same
+//!   field), the monodromy matrix and Floquet multipliers of a periodic orbit.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
@@ -35,6 +38,7 @@ pub mod sampling;
 pub mod scalar;
 pub mod tableau;
 pub mod taylor;
+pub mod variational;
 mod vern9;
 pub mod vern9_tableau;
 
