@@ -122,6 +122,18 @@ impl<'f, F: Field<N>, const N: usize, const K: usize, const M: usize> Variationa
         SMatrix::from_fn(|i, k| z[N * (k + 1) + i])
     }
 
+    /// Projects the tangent vectors of `z` (in place) onto the tangent space at its state of
+    /// the level set of `constraints` ([`project_tangent`]); the state is left as it is.
+    pub fn project_vectors<const C: usize>(
+        &self,
+        z: &mut [f64; M],
+        constraints: impl Fn(&[DualSVec64<N>; N]) -> [DualSVec64<N>; C],
+    ) {
+        let (y, mut vectors) = (self.state(z), self.vectors(z));
+        project_tangent(constraints, &y, &mut vectors);
+        *z = self.join(&y, &vectors);
+    }
+
     /// `f(y)` and `J(y) v_k` for the tangent vectors of `z`: one evaluation of the field on
     /// dual numbers seeded with the vectors.
     pub fn tangent_field(&self, z: &[f64; M]) -> [f64; M] {
@@ -252,14 +264,21 @@ pub(crate) mod tests {
     /// `sigma`, `rho`, `beta` of [`Lorenz`].
     pub(crate) const LORENZ: (f64, f64, f64) = (10.0, 28.0, 8.0 / 3.0);
 
-    impl Field<3> for Lorenz {
-        fn eval<D: Scalar>(&self, y: &[D; 3]) -> [D; 3] {
-            let (sigma, rho, beta) = LORENZ;
+    impl Lorenz {
+        /// The Lorenz field at `rho`, `sigma` and `beta` classical.
+        pub(crate) fn with_rho<D: Scalar>(rho: f64, y: &[D; 3]) -> [D; 3] {
+            let (sigma, _, beta) = LORENZ;
             [
                 (y[1] - y[0]) * sigma,
                 y[0] * (-y[2] + rho) - y[1],
                 y[0] * y[1] - y[2] * beta,
             ]
+        }
+    }
+
+    impl Field<3> for Lorenz {
+        fn eval<D: Scalar>(&self, y: &[D; 3]) -> [D; 3] {
+            Lorenz::with_rho(LORENZ.1, y)
         }
     }
 
