@@ -101,15 +101,20 @@ impl Renormalisation {
         self.interval
     }
 
-    /// The end of the interval that starts at `t`: `t + interval`, cut at the transient's end
-    /// and at `t_end`.
-    fn next(&self, t: f64) -> f64 {
-        let end = if t < self.transient {
-            self.transient
-        } else {
-            self.t_end
+    /// The times of the renormalisations: `k interval` up to the transient's end, then
+    /// `transient + k interval` up to `t_end` (each time computed from its stretch's start,
+    /// not accumulated, and each stretch's last time its end; a time within a billionth of an
+    /// interval before the end is the end, so that rounding leaves no sliver of an interval).
+    fn times(&self) -> impl Iterator<Item = f64> + '_ {
+        let stretch = move |start: f64, end: f64| {
+            (1..)
+                .map(move |k| start + k as f64 * self.interval)
+                .take_while(move |&t| t < end - 1e-9 * self.interval)
+                .chain(std::iter::once(end))
         };
-        (t + self.interval).min(end)
+        stretch(0.0, self.transient)
+            .filter(move |_| self.transient > 0.0)
+            .chain(stretch(self.transient, self.t_end))
     }
 }
 
@@ -234,8 +239,7 @@ pub fn spectrum<F: Field<N>, const N: usize, const K: usize, const M: usize>(
     let mut history = Vec::new();
     let mut divergence_integral = 0.0;
     let mut stats = Stats::default();
-    while t < schedule.t_end {
-        let t_next = schedule.next(t);
+    for t_next in schedule.times() {
         let averaged = t >= schedule.transient;
         let mut run = stepper(method, &system, t, z, t_next, opts)?;
         let run_drive = Drive {
@@ -446,6 +450,22 @@ mod tests {
         assert_eq!(name(Renormalisation::new(10.0, 5.0, 6.0)), "interval");
         assert_eq!(name(Renormalisation::new(10.0, 0.0, f64::NAN)), "interval");
         assert!(Renormalisation::new(10.0, 5.0, 5.0).is_ok());
+    }
+
+    /// The renormalisation times: every interval from 0 to the transient, then from the
+    /// transient to `t_end`, each stretch ending on its end; computed, not accumulated
+    /// (`0.1 + 0.1 + 0.1` is not `0.3`), and no sliver of an interval left by rounding.
+    #[test]
+    fn renormalisation_times() {
+        let times: Vec<f64> = Renormalisation::new(5.0, 2.5, 1.0).unwrap().times().collect();
+        assert_eq!(times, [1.0, 2.0, 2.5, 3.5, 4.5, 5.0]);
+        let times: Vec<f64> = Renormalisation::new(0.3, 0.0, 0.1).unwrap().times().collect();
+        assert_eq!(times, [0.1, 0.2, 0.3]);
+        let times: Vec<f64> = Renormalisation::new(2.0, 1.0, 1.0).unwrap().times().collect();
+        assert_eq!(times, [1.0, 2.0]);
+        let above = f64::from_bits((3.0 * 0.1f64).to_bits() + 1);
+        let times: Vec<f64> = Renormalisation::new(above, 0.0, 0.1).unwrap().times().collect();
+        assert_eq!(times, [0.1, 0.2, above]);
     }
 
     /// Kaplan–Yorke: Lorenz-like `(0.9, 0, -14.5)` gives `2 + 0.9 / 14.5`; all negative gives
