@@ -457,14 +457,26 @@ mod tests {
     /// (`0.1 + 0.1 + 0.1` is not `0.3`), and no sliver of an interval left by rounding.
     #[test]
     fn renormalisation_times() {
-        let times: Vec<f64> = Renormalisation::new(5.0, 2.5, 1.0).unwrap().times().collect();
+        let times: Vec<f64> = Renormalisation::new(5.0, 2.5, 1.0)
+            .unwrap()
+            .times()
+            .collect();
         assert_eq!(times, [1.0, 2.0, 2.5, 3.5, 4.5, 5.0]);
-        let times: Vec<f64> = Renormalisation::new(0.3, 0.0, 0.1).unwrap().times().collect();
+        let times: Vec<f64> = Renormalisation::new(0.3, 0.0, 0.1)
+            .unwrap()
+            .times()
+            .collect();
         assert_eq!(times, [0.1, 0.2, 0.3]);
-        let times: Vec<f64> = Renormalisation::new(2.0, 1.0, 1.0).unwrap().times().collect();
+        let times: Vec<f64> = Renormalisation::new(2.0, 1.0, 1.0)
+            .unwrap()
+            .times()
+            .collect();
         assert_eq!(times, [1.0, 2.0]);
         let above = f64::from_bits((3.0 * 0.1f64).to_bits() + 1);
-        let times: Vec<f64> = Renormalisation::new(above, 0.0, 0.1).unwrap().times().collect();
+        let times: Vec<f64> = Renormalisation::new(above, 0.0, 0.1)
+            .unwrap()
+            .times()
+            .collect();
         assert_eq!(times, [0.1, 0.2, above]);
     }
 

@@ -11,9 +11,9 @@
 pub mod animate;
 pub mod case;
 pub mod error;
-pub mod lyapunov;
 #[cfg(feature = "plot")]
 pub mod figure;
+pub mod lyapunov;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;

@@ -76,11 +76,7 @@ pub fn report(case: &Case, settings: &LyapunovSettings) -> Result<Report> {
         divergence_mean: spectrum.divergence_mean,
         history: History {
             times: spectrum.history.iter().map(|e| e.t).collect(),
-            exponents: spectrum
-                .history
-                .into_iter()
-                .map(|e| e.exponents)
-                .collect(),
+            exponents: spectrum.history.into_iter().map(|e| e.exponents).collect(),
         },
         exponents: spectrum.exponents,
         steps: spectrum.stats.steps,

@@ -102,7 +102,15 @@ fn report_text(r: &Report) -> String {
         "  Kaplan-Yorke dimension        {:.6}",
         r.kaplan_yorke_dimension
     );
-    let _ = writeln!(text, "  sum of the exponents          {:+.6e}", r.sum_of_exponents);
-    let _ = writeln!(text, "  mean divergence of the field  {:+.6e}", r.divergence_mean);
+    let _ = writeln!(
+        text,
+        "  sum of the exponents          {:+.6e}",
+        r.sum_of_exponents
+    );
+    let _ = writeln!(
+        text,
+        "  mean divergence of the field  {:+.6e}",
+        r.divergence_mean
+    );
     text
 }
