@@ -3,6 +3,7 @@
 //! its convergence, the Kaplan–Yorke dimension and the divergence check, with the settings
 //! of the run.
 
+use crate::ball::AsBall;
 use crate::case::Case;
 use crate::error::AppResult as Result;
 use routh_ball::lyapunov::{lyapunov_spectrum, LyapunovSettings};
@@ -22,8 +23,10 @@ pub struct History {
 /// The report of one spectrum: the settings, the exponents and their checks.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Report {
-    /// The case file (or `<built-in default>`).
-    pub case: String,
+    /// The case file (or `<built-in default>`); absent for a body and a state given as such
+    /// (Python).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub case: Option<String>,
     /// The integrator.
     pub method: String,
     /// The final time.
@@ -59,12 +62,20 @@ pub struct Report {
 }
 
 /// The spectrum of the motion of `case` with `settings`, reported.
-pub fn report(case: &Case, settings: &LyapunovSettings) -> Result<Report> {
+pub fn report_case(case: &Case, settings: &LyapunovSettings) -> Result<Report> {
+    let mut report = report(&case.ball, &case.initial.to_array(), settings)?;
+    report.case = Some(case.source.clone());
+    Ok(report)
+}
+
+/// The spectrum of the motion of `ball` from `x0 = (gamma, M)` with `settings`, reported
+/// (without a case).
+pub fn report(ball: &impl AsBall, x0: &[f64; 6], settings: &LyapunovSettings) -> Result<Report> {
     let start = Instant::now();
-    let spectrum = lyapunov_spectrum(&case.ball, &case.initial.to_array(), settings)?;
+    let spectrum = lyapunov_spectrum(ball, x0, settings)?;
     let (integration, schedule) = (settings.integration(), settings.schedule());
     Ok(Report {
-        case: case.source.clone(),
+        case: None,
         method: integration.method().to_string(),
         t_end: schedule.t_end(),
         transient: schedule.transient(),

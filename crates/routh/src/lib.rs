@@ -55,7 +55,7 @@ pub use routh_sphere::{audit, poisson, quadrature, steady};
 pub mod lyapunov {
     pub use routh_ball::lyapunov::*;
     #[cfg(feature = "io")]
-    pub use routh_io::lyapunov::{report, History, Report};
+    pub use routh_io::lyapunov::{report, report_case, History, Report};
 }
 
 /// The energy-momentum diagram (`routh-sphere`), and with the feature `plot` its figures

@@ -1,11 +1,11 @@
 //! `routh lyapunov`: the Lyapunov exponents of a case's motion on `|gamma| = 1`
-//! ([`routh::lyapunov::report`]), as text or JSON.
+//! ([`routh::lyapunov::report_case`]), as text or JSON.
 
 use super::simulate::{parse_method, Overrides};
 use super::{print_json, Readable};
 use routh::case::Case;
 use routh::integrate::Method;
-use routh::lyapunov::{report, LyapunovSettings, Report};
+use routh::lyapunov::{report_case, LyapunovSettings, Report};
 use routh::AppResult as Result;
 use std::path::PathBuf;
 
@@ -61,7 +61,7 @@ pub fn run(args: Args) -> Result<()> {
         .samples(0)
         .build()?;
     let settings = LyapunovSettings::new(integration, args.transient, args.interval)?;
-    let r = report(&case, &settings)?;
+    let r = report_case(&case, &settings)?;
     if args.json {
         print_json(&r)
     } else {
@@ -73,7 +73,11 @@ pub fn run(args: Args) -> Result<()> {
 fn report_text(r: &Report) -> String {
     use std::fmt::Write;
     let mut text = String::new();
-    let _ = writeln!(text, "routh lyapunov: {}", r.case);
+    let _ = writeln!(
+        text,
+        "routh lyapunov: {}",
+        r.case.as_deref().unwrap_or_default()
+    );
     let _ = writeln!(
         text,
         "  method   {} (rtol {}, atol {})",
