@@ -209,7 +209,8 @@ fn divergence_on_step<F: Field<N>, const N: usize, const K: usize, const M: usiz
 
 /// The `K` largest Lyapunov exponents of `field` from `y0` (all of them with `K = N`) by the
 /// QR method on the schedule `schedule`, the tangent vectors starting along `K` generic
-/// directions ([`generic_directions`]), projected by `project` and orthonormalised.
+/// directions (Weyl's sequence, `generic_directions`), projected by `project` and
+/// orthonormalised.
 ///
 /// Each interval is one run of [`crate::drive`] with the stepper of `method` (DOP853, Vern9
 /// or RK4 with `steps` equal steps per interval; [`Method::Taylor`] and [`Method::Auto`] are
