@@ -14,7 +14,7 @@ import numpy.typing as npt
 
 __all__ = [
     "__version__", "MAX_VALUES", "Ball", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
-    "audit", "default_case", "diagram", "load_case", "routh_threshold", "simulate", "steady_precessions",
+    "audit", "default_case", "diagram", "load_case", "lyapunov", "routh_threshold", "simulate", "steady_precessions",
     "sleeping_tops", "sweep", "vertical_spin",
 ]
 __version__: str
