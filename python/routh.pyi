@@ -14,7 +14,7 @@ import numpy.typing as npt
 
 __all__ = [
     "__version__", "MAX_VALUES", "Ball", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
-    "audit", "default_case", "diagram", "load_case", "routh_threshold", "simulate", "steady_precessions",
+    "audit", "default_case", "diagram", "load_case", "lyapunov", "routh_threshold", "simulate", "steady_precessions",
     "sleeping_tops", "sweep", "vertical_spin",
 ]
 __version__: str
@@ -276,6 +276,12 @@ def vertical_spin(body: Body, pole: float, spin: float) -> _Record: ...
 def steady_precessions(body: Body, theta: float, spin: float) -> list[_Record]: ...
 def routh_threshold(body: Body, pole: float) -> float: ...
 def audit(points: int = 20, seed: int = 1) -> list[_Record]: ...
+def lyapunov(
+    body: Union[Body, Ball], x0: _ArrayLike, t_end: float = 100.0, *,
+    transient: Optional[float] = None, interval: Optional[float] = None,
+    method: str = "dop853", rtol: float = 1e-12, atol: float = 1e-12,
+) -> _Record:
+    """The five Lyapunov exponents on |gamma| = 1 (the keys of `routh lyapunov --json`)."""
 def sweep(
     path: Optional[Union[str, PathLike[str]]] = None,
     *,

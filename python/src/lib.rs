@@ -19,6 +19,7 @@ mod diagram;
 mod drive;
 mod exact;
 mod flows;
+mod lyapunov;
 mod problem;
 mod solution;
 mod steady;
@@ -47,6 +48,7 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(steady::routh_threshold, module)?)?;
     module.add_function(wrap_pyfunction!(audit::audit, module)?)?;
     module.add_function(wrap_pyfunction!(sweep::sweep, module)?)?;
+    module.add_function(wrap_pyfunction!(lyapunov::lyapunov, module)?)?;
     module.add_function(wrap_pyfunction!(diagram::diagram, module)?)?;
     module.add_function(wrap_pyfunction!(diagram::sleeping_tops, module)?)?;
     Ok(())

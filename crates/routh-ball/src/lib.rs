@@ -5,7 +5,7 @@
 //! invariant measure ([`integrals`]), the motion in space ([`motion`]), the validated states
 //! ([`state`]), the projection onto the level set of the integrals ([`projection`]) and runs
 //! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]; the method that
-//! `auto` runs: [`auto`]).
+//! `auto` runs: [`auto`]) and its Lyapunov exponents ([`lyapunov`]).
 //!
 //! Equation labels, such as (m-eq), are those of Bizyaev and Tsiganov, "On the Routh sphere
 //! problem".
@@ -22,6 +22,7 @@ pub mod field;
 pub mod integrals;
 #[rustfmt::skip]
 pub mod kernels;
+pub mod lyapunov;
 pub mod motion;
 pub mod problem;
 pub mod projection;

@@ -8,16 +8,17 @@ use num_dual::{gradient as nd_gradient, jacobian as nd_jacobian, DualSVec64};
 /// A dual number carrying the six partial derivatives on the phase space.
 pub type Dual6 = DualSVec64<6>;
 
-/// The point `x` as dual numbers seeded with the unit directions: a function evaluated there
-/// carries its value in `.re` and its gradient in `.eps`.
-pub fn seeded(x: &[f64; 6]) -> [Dual6; 6] {
-    std::array::from_fn(|i| Dual6::from_re(x[i]).derivative(i))
+/// The point `x` of any dimension `N` as dual numbers seeded with the unit directions: a
+/// function evaluated there carries its value in `.re` and its gradient in `.eps`.
+pub fn seeded<const N: usize>(x: &[f64; N]) -> [DualSVec64<N>; N] {
+    std::array::from_fn(|i| DualSVec64::from_re(x[i]).derivative(i))
 }
 
-/// The gradient part of a dual number computed at a [`seeded`] point.
-pub fn partials(v: &Dual6) -> [f64; 6] {
+/// The gradient part of a dual number computed at a [`seeded`] point (the derivatives it
+/// carries, zero for a constant).
+pub fn partials<const N: usize>(v: &DualSVec64<N>) -> [f64; N] {
     v.eps
-        .unwrap_generic(nalgebra::Const::<6>, nalgebra::Const::<1>)
+        .unwrap_generic(nalgebra::Const::<N>, nalgebra::Const::<1>)
         .into()
 }
 

@@ -20,6 +20,11 @@
 //! * [`Method`] names them, [`stepper`] builds the one chosen (and resolves `auto`);
 //! * [`brent`]: a bracketing scalar root finder; [`locate`]: the one event locator (the
 //!   crossings of several event functions on a step's dense output).
+//! * [`variational`]: the variational equations of a field written over
+//!   [`Scalar`](scalar::Scalar) (the tangent flow by automatic differentiation of the same
+//!   field), the monodromy matrix and Floquet multipliers of a periodic orbit.
+//! * [`lyapunov`]: Lyapunov spectra by the QR method on the variational equations, with
+//!   their convergence, the Kaplan–Yorke dimension and the average divergence of the field.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
@@ -29,12 +34,14 @@ pub mod control;
 pub mod differential;
 mod dop853;
 mod event;
+pub mod lyapunov;
 mod pair;
 mod rk4;
 pub mod sampling;
 pub mod scalar;
 pub mod tableau;
 pub mod taylor;
+pub mod variational;
 mod vern9;
 pub mod vern9_tableau;
 
@@ -482,6 +489,13 @@ pub enum IntegrateError {
         "method auto names no integrator until the model's table resolves it (Method::resolve_in)"
     )]
     UnresolvedAuto,
+    /// The tangent vectors of the Lyapunov exponents ([`lyapunov::spectrum`]) became linearly
+    /// dependent: more of them than the dimension of the space the projection leaves them.
+    #[error("the tangent vectors became linearly dependent at t = {t} (more vectors than the dimension of the projected tangent space?)")]
+    DependentTangents {
+        /// Time of the renormalisation that found them dependent.
+        t: f64,
+    },
     /// The method cannot integrate this system.
     #[error("method {method} cannot integrate this system: {reason}")]
     Unsupported {

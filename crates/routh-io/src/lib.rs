@@ -1,6 +1,7 @@
 //! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]) and their rows ([`row`]),
 //! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
-//! 3D viewer ([`animate`]) and sweeps ([`sweep`]). The command-line tool and the Python module
+//! 3D viewer ([`animate`]), sweeps ([`sweep`]) and the report of Lyapunov exponents
+//! ([`lyapunov`]). The command-line tool and the Python module
 //! are built on it; the model and the mathematics are the layers below (`routh-ball`,
 //! `routh-sphere`).
 #![warn(missing_docs)]
@@ -12,6 +13,7 @@ pub mod case;
 pub mod error;
 #[cfg(feature = "plot")]
 pub mod figure;
+pub mod lyapunov;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;

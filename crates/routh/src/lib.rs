@@ -50,6 +50,14 @@ pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
 
 pub use routh_sphere::{audit, poisson, quadrature, steady};
 
+/// Lyapunov exponents of a ball (`routh_ball::lyapunov`) and, with the feature `io`, their
+/// report of `routh lyapunov` (`routh_io::lyapunov`).
+pub mod lyapunov {
+    pub use routh_ball::lyapunov::*;
+    #[cfg(feature = "io")]
+    pub use routh_io::lyapunov::{report, report_case, History, Report};
+}
+
 /// The energy-momentum diagram (`routh-sphere`), and with the feature `plot` its figures
 /// (`routh-io`).
 pub mod diagram {

@@ -25,6 +25,7 @@ mod audit;
 mod diagram;
 mod exact;
 mod flow;
+mod lyapunov;
 mod plot;
 mod simulate;
 mod steady;
@@ -66,6 +67,9 @@ enum Command {
     /// The energy-momentum diagram of the case's body: critical curves, number of tori,
     /// focus-focus points and their monodromy, the sleeping tops (PNG, SVG, CSV).
     Diagram(diagram::Args),
+    /// The Lyapunov exponents of a case on |gamma| = 1 (QR method on the variational
+    /// equations): their convergence, the Kaplan–Yorke dimension, the divergence check.
+    Lyapunov(lyapunov::Args),
     /// Many runs of a case over the quantities of its [sweep] table (grid or random design),
     /// one row per run, written to CSV or Parquet.
     Sweep(sweep::Args),
@@ -171,6 +175,7 @@ pub fn main() -> ExitCode {
         Command::Steady(args) => steady::run(args),
         Command::Sweep(args) => sweep::run(args),
         Command::Diagram(args) => diagram::run(args),
+        Command::Lyapunov(args) => lyapunov::run(args),
     };
     let flushed = result.and_then(|()| {
         std::io::stdout()

@@ -7,7 +7,7 @@ use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::row::csv_line;
-use routh::simulate::{Settings, Summary};
+use routh::simulate::{Settings, SettingsBuilder, Summary};
 use routh::table::{sample_columns, simulate_samples};
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
@@ -66,21 +66,51 @@ pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
+/// The command-line overrides of a case's `[integration]` that every command integrating a
+/// case takes (`simulate`, `lyapunov`); `None` keeps the case's value.
+pub struct Overrides {
+    /// The integrator.
+    pub method: Method,
+    /// `--t-end`.
+    pub t_end: Option<f64>,
+    /// `--rtol`.
+    pub rtol: Option<f64>,
+    /// `--atol`.
+    pub atol: Option<f64>,
+    /// `--max-steps`.
+    pub max_steps: Option<usize>,
+}
+
+impl Overrides {
+    /// The case's settings with these overrides, to be completed and built ([`Settings`]:
+    /// the same rules and messages as the sweep's and Python's).
+    pub fn applied_to(&self, case: &Case) -> SettingsBuilder {
+        let base = case.integration;
+        base.to_builder()
+            .method(self.method)
+            .t_end(self.t_end.unwrap_or(base.t_end()))
+            .tolerances(
+                self.rtol.unwrap_or(base.rtol()),
+                self.atol.unwrap_or(base.atol()),
+            )
+            .max_steps(self.max_steps.unwrap_or(base.max_steps()))
+    }
+}
+
 /// The settings of a case with the command-line overrides applied, validated as they are
 /// built ([`Settings`]: the same rules and messages as the sweep's and Python's).
 pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
-    let base = case.integration;
-    Ok(base
-        .to_builder()
-        .method(args.method)
-        .t_end(args.t_end.unwrap_or(base.t_end()))
-        .tolerances(
-            args.rtol.unwrap_or(base.rtol()),
-            args.atol.unwrap_or(base.atol()),
-        )
+    let overrides = Overrides {
+        method: args.method,
+        t_end: args.t_end,
+        rtol: args.rtol,
+        atol: args.atol,
+        max_steps: args.max_steps,
+    };
+    Ok(overrides
+        .applied_to(case)
         .projection(args.project, args.project_every)
         .samples(samples)
-        .max_steps(args.max_steps.unwrap_or(base.max_steps()))
         .build()?)
 }
 

@@ -689,6 +689,152 @@ mod cli_overflow_and_pipes {
     }
 }
 
+mod cli_lyapunov {
+    //! `routh lyapunov`, run as a user would (issue 36): on the two integrable cases every
+    //! exponent is below 0.05 in absolute value at the case's own time, with the divergence
+    //! check; the JSON keys; bad options refused with exit code 2.
+
+    use crate::common;
+    use common::{assert_exit_2, json_of, routh};
+
+    /// The exponents of `routh lyapunov --json` with `args`, checked against the report's own
+    /// divergence and history.
+    fn exponents(args: &[&str]) -> (Vec<f64>, serde_json::Value) {
+        let mut all = vec!["lyapunov", "--json"];
+        all.extend_from_slice(args);
+        let v = json_of(&routh(&all));
+        let exponents: Vec<f64> = v["exponents"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
+        (exponents, v)
+    }
+
+    /// The default case (t = 100, measured largest |lambda| 0.026) and `cases/chaplygin.toml`
+    /// (t = 1000, measured 0.0026): the five exponents on |gamma| = 1 are below 0.05 (they
+    /// tend to 0 as ln T / T on the integrable motion); their sum equals the mean divergence to
+    /// 1e-10 (Liouville's formula; measured 1.5e-13 and 9e-12 at tolerances 1e-12), which is below
+    /// 1e-3 (the invariant measure: a bounded oscillation of ln rho over T). The history holds
+    /// the 100 renormalisations of the default schedule, the last one the exponents. Negative
+    /// control: over t = 5 the largest exponent is 0.087, above 0.05 (the check can fail).
+    #[test]
+    fn integrable_cases_have_every_exponent_below_0_05() {
+        for case in ["cases/default.toml", "cases/chaplygin.toml"] {
+            let (exponents, v) = exponents(&["--case", case]);
+            assert_eq!(exponents.len(), 5, "{v}");
+            assert!(
+                exponents.iter().all(|l| l.abs() < 0.05),
+                "{case}: {exponents:?}"
+            );
+            let sum = v["sum_of_exponents"].as_f64().unwrap();
+            let divergence = v["divergence_mean"].as_f64().unwrap();
+            assert!((sum - exponents.iter().sum::<f64>()).abs() < 1e-15);
+            assert!((sum - divergence).abs() < 1e-10, "{sum} {divergence}");
+            assert!(divergence.abs() < 1e-3, "{divergence}");
+            let times = v["history"]["times"].as_array().unwrap();
+            let estimates = v["history"]["exponents"].as_array().unwrap();
+            assert_eq!((times.len(), estimates.len()), (100, 100));
+            assert_eq!(times.last().unwrap(), &v["t_end"]);
+            assert_eq!(estimates.last().unwrap(), &v["exponents"]);
+            let dimension = v["kaplan_yorke_dimension"].as_f64().unwrap();
+            assert!((4.9..=5.0).contains(&dimension), "{dimension}");
+        }
+        let (short, _) = exponents(&["--t-end", "5"]);
+        assert!(short.iter().any(|l| l.abs() > 0.05), "{short:?}");
+    }
+
+    /// The settings come back in the JSON as given, with the command line's overrides.
+    #[test]
+    fn json_has_the_settings() {
+        let (_, v) = exponents(&[
+            "--t-end",
+            "4",
+            "--transient",
+            "1",
+            "--interval",
+            "0.5",
+            "--method",
+            "vern9",
+            "--rtol",
+            "1e-10",
+            "--atol",
+            "1e-11",
+        ]);
+        for (key, want) in [
+            ("t_end", 4.0),
+            ("transient", 1.0),
+            ("interval", 0.5),
+            ("rtol", 1e-10),
+            ("atol", 1e-11),
+        ] {
+            assert_eq!(v[key].as_f64(), Some(want), "{key}: {v}");
+        }
+        assert_eq!(v["method"], "vern9");
+        assert_eq!(v["history"]["times"].as_array().unwrap().len(), 6);
+        for key in ["steps", "rejected", "rhs_evals", "elapsed_s", "case"] {
+            assert!(v.get(key).is_some(), "JSON lacks {key}");
+        }
+        let text = routh(&["lyapunov", "--t-end", "2"]);
+        let text = String::from_utf8(text.stdout).unwrap();
+        for needle in [
+            "lambda5",
+            "Kaplan-Yorke",
+            "mean divergence",
+            "<built-in default>",
+        ] {
+            assert!(text.contains(needle), "{needle}: {text}");
+        }
+    }
+
+    /// Bad options: exit code 2 and a message naming the option and its rule.
+    #[test]
+    fn bad_options_are_refused_with_exit_2() {
+        assert_exit_2(
+            &["lyapunov", "--interval", "-1"],
+            "invalid option interval = -1: must be finite, > 0 and <= t_end - transient",
+        );
+        assert_exit_2(
+            &[
+                "lyapunov",
+                "--t-end",
+                "10",
+                "--transient",
+                "0",
+                "--interval",
+                "20",
+            ],
+            "invalid option interval = 20",
+        );
+        assert_exit_2(
+            &["lyapunov", "--interval", "NaN"],
+            "invalid option interval = NaN",
+        );
+        assert_exit_2(
+            &["lyapunov", "--t-end", "NaN"],
+            "invalid option t_end = NaN",
+        );
+        assert_exit_2(
+            &["lyapunov", "--transient", "100"],
+            "invalid option transient = 100: must be finite, >= 0 and < t_end",
+        );
+        assert_exit_2(
+            &["lyapunov", "--transient", "-1"],
+            "invalid option transient = -1",
+        );
+        assert_exit_2(
+            &["lyapunov", "--method", "taylor"],
+            "invalid option method = taylor: must be dop853, vern9 or rk4",
+        );
+        assert_exit_2(&["lyapunov", "--rtol", "1"], "invalid option rtol = 1");
+        assert_exit_2(
+            &["lyapunov", "--case", "no/such/case.toml"],
+            "no/such/case.toml",
+        );
+    }
+}
+
 mod cli_simulate {
     //! The `routh simulate` command, run as a user would: default case, JSON keys, CSV columns,
     //! overrides, and bad input (exit code 2, a message, no panic, no output file).
