@@ -2,8 +2,9 @@
 //!
 //! * `kernels`: writes `crates/routh-ball/src/kernels.rs`, the generated Taylor kernels of
 //!   the model families (`routh_ball::families`), from the tapes recorded through the one
-//!   generic field. The test `generated_kernels_are_up_to_date` of `routh-ball` fails while
-//!   the checked-in file differs from what this writes.
+//!   generic field. The test `kernels::generated_kernels_are_up_to_date` of the library's
+//!   suite (`cargo test -p routh --test suite kernels::`) fails while the checked-in file
+//!   differs from what this writes.
 
 use std::path::Path;
 use std::process::ExitCode;

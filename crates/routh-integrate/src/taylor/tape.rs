@@ -461,7 +461,8 @@ pub const PAD: usize = 4;
 /// run about 5 % faster, BENCHMARKS.md). Odd: with 32 places, slots 2 KiB apart in 8 lanes, the
 /// same order of every slot fell into the same few sets of the L1 cache (the lanes 20 % slower
 /// than with a variable stride). The places above a tape's order are never read; a tape of a
-/// higher order has the places it needs.
+/// higher order has the places it needs, and runs in the interpreter (the generated kernels
+/// are compiled for this stride alone: one copy of each, not two).
 pub const STRIDE: usize = 33;
 
 impl<const N: usize, K: Kernels> Tape<N, f64, K> {
@@ -620,8 +621,13 @@ impl<const N: usize, K: Kernels> Tape<N, f64, K> {
             kernels: PhantomData,
         };
         let hist = histories(&tape.code, (first_op * stride + PAD) as u32, stride);
+        // A kernel addresses its coefficients at the constant stride only: a tape of a higher
+        // order (above 24, tolerances below about 1e-20) runs in the interpreter, bitwise the
+        // same coefficients.
         let shape = tape.shape();
-        let kernel = K::SHAPES.iter().position(|(_, s)| *s == shape);
+        let kernel = (stride == STRIDE)
+            .then(|| K::SHAPES.iter().position(|(_, s)| *s == shape))
+            .flatten();
         let inline = tape.code.iter().filter_map(Instr::constant).collect();
         Tape {
             hist,
@@ -690,7 +696,8 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
     }
 
     /// The name of the generated kernel that runs this tape's passes (`taylor::codegen`),
-    /// `None` if the interpreter runs them.
+    /// `None` if the interpreter runs them (no kernel of the tape's shape, or an order above
+    /// the constant [`STRIDE`]'s).
     pub fn kernel(&self) -> Option<&'static str> {
         self.kernel.map(|i| K::SHAPES[i].0)
     }
@@ -884,7 +891,7 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
     #[inline(always)]
     fn order_zero(&mut self) {
         if let Some(kernel) = self.kernel {
-            K::zero(kernel, &mut self.coef, self.stride, &self.inline);
+            K::zero(kernel, &mut self.coef, STRIDE, &self.inline);
             return;
         }
         // Slices held in locals: the stores below cannot make the compiler reload them.
@@ -930,14 +937,9 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
         if let Some(kernel) = self.kernel {
             let (c, h, q) = (&mut self.coef[..], &mut self.hval[..], &self.inline[..]);
             let g = &mut self.hnext[..];
-            // Twice, so that one copy has the usual stride as a constant.
-            if stride == STRIDE {
-                K::histories::<T, FMA, WIDE>(kernel, c, STRIDE, k, h, g);
-                K::pass::<T, FMA>(kernel, c, STRIDE, k, h, q);
-            } else {
-                K::histories::<T, FMA, WIDE>(kernel, c, stride, k, h, g);
-                K::pass::<T, FMA>(kernel, c, stride, k, h, q);
-            }
+            // A tape with a kernel has the constant stride (`Tape::record`).
+            K::histories::<T, FMA, WIDE>(kernel, c, STRIDE, k, h, g);
+            K::pass::<T, FMA>(kernel, c, STRIDE, k, h, q);
             return;
         }
         convolution::histories::<T, FMA>(&self.coef, &self.hist, k, &mut self.hval);
