@@ -34,7 +34,11 @@ const TEMPLATE: &str = include_str!("animate.html");
 
 /// three.js r187 (npm `three@0.187.0`, MIT licence in `assets/viewer/three-LICENSE.txt`): the
 /// classes listed in `assets/viewer/three-entry.js`, bundled by `assets/viewer/build-three.sh`.
-const THREE_JS: &str = include_str!("../../../assets/viewer/three.min.js");
+pub(crate) const THREE_JS: &str = include_str!("../../../assets/viewer/three.min.js");
+
+/// The 3D view of the ball and its charts (`viewer.js`): the one script of this page and of
+/// the explorer's ([`crate::explore`]).
+pub(crate) const VIEWER_JS: &str = include_str!("viewer.js");
 
 /// The columns a frame needs, in the order of [`frame_rows`]: t, gamma and the columns of
 /// `routh simulate --full` ([`FULL_COLUMN_NAMES`]).
@@ -134,7 +138,7 @@ fn geometry(rows: &[[f64; FRAME_COLUMNS]], origin: &str) -> Result<(f64, f64)> {
 }
 
 /// Standard base64 (RFC 4648, with padding) of `bytes`.
-fn base64(bytes: &[u8]) -> String {
+pub(crate) fn base64(bytes: &[u8]) -> String {
     const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {
@@ -161,7 +165,7 @@ fn f32_column(values: impl Iterator<Item = f64>) -> String {
 
 /// Replace each `__KEY__` of `template` by its value, in one pass (a value that itself
 /// contains `__KEY__`, such as a file name, is left alone).
-fn fill(template: &str, values: &[(&str, &str)]) -> String {
+pub(crate) fn fill(template: &str, values: &[(&str, &str)]) -> String {
     let mut out =
         String::with_capacity(template.len() + values.iter().map(|v| v.1.len()).sum::<usize>());
     let mut rest = template;
@@ -228,6 +232,7 @@ pub fn html(table: &Table) -> Result<String> {
             ("RADIUS", &number(radius)),
             ("OFFSET", &number(a)),
             ("THREE", THREE_JS),
+            ("VIEWER", VIEWER_JS),
             ("DATA", &data),
         ],
     ))
