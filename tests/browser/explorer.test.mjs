@@ -89,7 +89,7 @@ test("the state from the URL; the final state equals `routh simulate --json`'s; 
   assert.deepEqual(log.errors, []);
   // Only the page itself is read (the worker's script is a blob: URL made from the page).
   assert.deepEqual(log.requests.filter(u => !u.startsWith("blob:") && !u.startsWith("data:")),
-                   ["file://" + explorer + "#tilt=0.7&spin=6&t_end=20"]);
+                   ["file://" + explorer]);
   await page.close();
 });
 

@@ -33,7 +33,13 @@ fn build_explorer(root: &Path) -> Result<Vec<u8>, String> {
     let status = Command::new(cargo)
         .current_dir(root)
         .env("CARGO_ENCODED_RUSTFLAGS", flags)
-        .args(["build", "--package", "routh-wasm", "--target", "wasm32-unknown-unknown"])
+        .args([
+            "build",
+            "--package",
+            "routh-wasm",
+            "--target",
+            "wasm32-unknown-unknown",
+        ])
         .args(["--profile", "wasm", "--target-dir"])
         .arg(&target_dir)
         .status()

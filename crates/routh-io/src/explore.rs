@@ -63,7 +63,12 @@ impl Defaults {
             .get("initial")
             .and_then(|initial| initial.get("omega"))
             .and_then(|omega| omega.as_array())
-            .and_then(|omega| omega.iter().map(|v| v.as_float()).collect::<Option<Vec<_>>>())
+            .and_then(|omega| {
+                omega
+                    .iter()
+                    .map(|v| v.as_float())
+                    .collect::<Option<Vec<_>>>()
+            })
             .and_then(|omega| omega.try_into().ok())
             .ok_or_else(|| refuse("omega = [x, y, z] in [initial]"))?;
         if gamma2 != 0.0 {
@@ -94,12 +99,11 @@ impl Defaults {
 
 /// The explorer page.
 pub fn html() -> Result<String> {
-    let defaults = serde_json::to_string(&Defaults::of_default_case()?).map_err(|e| {
-        FileError::Case {
+    let defaults =
+        serde_json::to_string(&Defaults::of_default_case()?).map_err(|e| FileError::Case {
             file: "<built-in default>".into(),
             message: format!("cannot embed the defaults: {e}"),
-        }
-    })?;
+        })?;
     Ok(fill(
         TEMPLATE,
         &[
@@ -130,7 +134,10 @@ mod tests {
     #[test]
     fn the_page_holds_the_webassembly_and_no_placeholder() {
         let page = html().unwrap();
-        assert!(page.contains(&base64(&WASM[..3000])[..4000]), "wasm inlined");
+        assert!(
+            page.contains(&base64(&WASM[..3000])[..4000]),
+            "wasm inlined"
+        );
         for key in ["__THREE__", "__VIEWER__", "__DEFAULTS__", "__WASM__"] {
             assert!(!page.contains(key), "{key} left in the page");
         }

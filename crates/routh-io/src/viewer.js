@@ -114,14 +114,15 @@ function chart(canvas, { title, xLabel = "t (s)", series, log = false, marks = [
     ctx.fillStyle = m.color; ctx.beginPath();
     ctx.arc(px(m.x), py(value(m.y)), 5, 0, 2 * Math.PI); ctx.fill();
   }
-  const named = series.concat(marks.map(m => ({ name: m.name, color: m.color })));
+  const named = series.map((s, j) => ({ name: s.name, color: colour(s, j) }))
+    .concat(marks.map(m => ({ name: m.name, color: m.color }))).filter(s => s.name);
   if (named.length > 1) {
     ctx.textAlign = "left"; ctx.textBaseline = "middle";
     const widths = named.map(s => 19 + ctx.measureText(s.name).width);
     let x = w - right - 4 - widths.reduce((a, b) => a + b, 0);
     named.forEach((s, j) => {    // bottom right: drift curves start at round-off, high up
       const y = h - bottom - 10;
-      ctx.fillStyle = colour(s, j); ctx.fillRect(x, y - 4, 8, 8);
+      ctx.fillStyle = s.color; ctx.fillRect(x, y - 4, 8, 8);
       ctx.fillStyle = "#222"; ctx.fillText(s.name, x + 11, y);
       x += widths[j];
     });
@@ -416,6 +417,14 @@ function create() {
 
   return {
     show: D => { lastShown = D; show(D); },
+    // More curves on the theta chart for the motion shown (D.thetaExtra), without building
+    // its 3D objects again.
+    setThetaExtra: extra => {
+      if (!C) return;
+      lastShown = Object.assign({}, lastShown, { thetaExtra: extra });
+      charts(lastShown);
+      dirty = true;
+    },
     setPlaying,
     seek,
     // For tests and the console: the current time, seeking, and where things are drawn.
