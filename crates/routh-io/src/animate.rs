@@ -34,11 +34,28 @@ const TEMPLATE: &str = include_str!("animate.html");
 
 /// three.js r187 (npm `three@0.187.0`, MIT licence in `assets/viewer/three-LICENSE.txt`): the
 /// classes listed in `assets/viewer/three-entry.js`, bundled by `assets/viewer/build-three.sh`.
-pub(crate) const THREE_JS: &str = include_str!("../../../assets/viewer/three.min.js");
+const THREE_JS: &str = include_str!("../../../assets/viewer/three.min.js");
 
 /// The 3D view of the ball and its charts (`viewer.js`): the one script of this page and of
 /// the explorer's ([`crate::explore`]).
-pub(crate) const VIEWER_JS: &str = include_str!("viewer.js");
+const VIEWER_JS: &str = include_str!("viewer.js");
+
+/// The parts of the page that the explorer's page shares, as the keys of [`fill`]:
+/// `VIEWER_STYLE` (`viewer.css`), `PLAYBACK` (play, speed, time, follow: `viewer-playback.html`)
+/// and `VIEWER_SCRIPTS` (three.js and `viewer.js`, in `viewer-scripts.html`).
+pub(crate) fn viewer_parts() -> [(&'static str, String); 3] {
+    [
+        ("VIEWER_STYLE", include_str!("viewer.css").to_string()),
+        ("PLAYBACK", include_str!("viewer-playback.html").to_string()),
+        (
+            "VIEWER_SCRIPTS",
+            fill(
+                include_str!("viewer-scripts.html"),
+                &[("THREE", THREE_JS), ("VIEWER", VIEWER_JS)],
+            ),
+        ),
+    ]
+}
 
 /// The columns a frame needs, in the order of [`frame_rows`]: t, gamma and the columns of
 /// `routh simulate --full` ([`FULL_COLUMN_NAMES`]).
@@ -222,20 +239,21 @@ pub fn html(table: &Table) -> Result<String> {
     })?;
     let number = |v: f64| format!("{}", (v * 1e6).round() / 1e6);
     let last = rows[rows.len() - 1][0];
-    Ok(fill(
-        TEMPLATE,
-        &[
-            ("SOURCE", &escape_html(&table.origin)),
-            ("SAMPLES", &rows.len().to_string()),
-            ("T0", &number(rows[0][0])),
-            ("T1", &number(last)),
-            ("RADIUS", &number(radius)),
-            ("OFFSET", &number(a)),
-            ("THREE", THREE_JS),
-            ("VIEWER", VIEWER_JS),
-            ("DATA", &data),
-        ],
-    ))
+    let parts = viewer_parts();
+    let values: Vec<(&str, &str)> = [
+        ("SOURCE", escape_html(&table.origin)),
+        ("SAMPLES", rows.len().to_string()),
+        ("T0", number(rows[0][0])),
+        ("T1", number(last)),
+        ("RADIUS", number(radius)),
+        ("OFFSET", number(a)),
+        ("DATA", data),
+    ]
+    .iter()
+    .chain(&parts)
+    .map(|(key, value)| (*key, value.as_str()))
+    .collect();
+    Ok(fill(TEMPLATE, &values))
 }
 
 fn escape_html(text: &str) -> String {

@@ -7,7 +7,7 @@
 //! The state is in the URL's hash (`explorer.html#tilt=0.7&spin=6&t_end=20`); a key that is
 //! missing takes the value of the built-in default case ([`Defaults`]).
 
-use crate::animate::{base64, fill, THREE_JS, VIEWER_JS};
+use crate::animate::{base64, fill, viewer_parts};
 use crate::case::Case;
 use crate::error::{AppResult as Result, FileError};
 use serde::Serialize;
@@ -104,15 +104,13 @@ pub fn html() -> Result<String> {
             file: "<built-in default>".into(),
             message: format!("cannot embed the defaults: {e}"),
         })?;
-    Ok(fill(
-        TEMPLATE,
-        &[
-            ("THREE", THREE_JS),
-            ("VIEWER", VIEWER_JS),
-            ("DEFAULTS", &defaults),
-            ("WASM", &base64(WASM)),
-        ],
-    ))
+    let parts = viewer_parts();
+    let values: Vec<(&str, &str)> = [("DEFAULTS", defaults), ("WASM", base64(WASM))]
+        .iter()
+        .chain(&parts)
+        .map(|(key, value)| (*key, value.as_str()))
+        .collect();
+    Ok(fill(TEMPLATE, &values))
 }
 
 #[cfg(test)]
@@ -138,7 +136,13 @@ mod tests {
             page.contains(&base64(&WASM[..3000])[..4000]),
             "wasm inlined"
         );
-        for key in ["__THREE__", "__VIEWER__", "__DEFAULTS__", "__WASM__"] {
+        for key in [
+            "__VIEWER_SCRIPTS__",
+            "__THREE__",
+            "__VIEWER__",
+            "__DEFAULTS__",
+            "__WASM__",
+        ] {
             assert!(!page.contains(key), "{key} left in the page");
         }
         // The WebAssembly magic number and version 1.

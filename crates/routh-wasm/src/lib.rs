@@ -432,8 +432,14 @@ mod tests {
         let got = call("simulate", "-1");
         assert!(got["error"].as_str().unwrap().contains("G"), "{got}");
         let got = call("teleport", "9.81");
-        assert!(got["error"].as_str().unwrap().contains("unknown command"), "{got}");
+        assert!(
+            got["error"].as_str().unwrap().contains("unknown command"),
+            "{got}"
+        );
         let got: Json = serde_json::from_str(&answer("{")).unwrap();
-        assert!(got["error"].as_str().unwrap().contains("invalid request"), "{got}");
+        assert!(
+            got["error"].as_str().unwrap().contains("invalid request"),
+            "{got}"
+        );
     }
 }
