@@ -43,7 +43,7 @@ const VIEWER_JS: &str = include_str!("viewer.js");
 /// The parts of the page that the explorer's page shares, as the keys of [`fill`]:
 /// `VIEWER_STYLE` (`viewer.css`), `PLAYBACK` (play, speed, time, follow: `viewer-playback.html`)
 /// and `VIEWER_SCRIPTS` (three.js and `viewer.js`, in `viewer-scripts.html`).
-pub(crate) fn viewer_parts() -> [(&'static str, String); 3] {
+fn viewer_parts() -> [(&'static str, String); 3] {
     [
         ("VIEWER_STYLE", include_str!("viewer.css").to_string()),
         ("PLAYBACK", include_str!("viewer-playback.html").to_string()),
@@ -180,9 +180,21 @@ fn f32_column(values: impl Iterator<Item = f64>) -> String {
     base64(&bytes)
 }
 
+/// `template` with its own `values` and the parts shared by the viewer's pages
+/// ([`viewer_parts`]) in place of their keys ([`fill`]).
+pub(crate) fn fill_viewer_page(template: &str, values: &[(&str, String)]) -> String {
+    let parts = viewer_parts();
+    let all: Vec<(&str, &str)> = values
+        .iter()
+        .chain(&parts)
+        .map(|(key, value)| (*key, value.as_str()))
+        .collect();
+    fill(template, &all)
+}
+
 /// Replace each `__KEY__` of `template` by its value, in one pass (a value that itself
 /// contains `__KEY__`, such as a file name, is left alone).
-pub(crate) fn fill(template: &str, values: &[(&str, &str)]) -> String {
+fn fill(template: &str, values: &[(&str, &str)]) -> String {
     let mut out =
         String::with_capacity(template.len() + values.iter().map(|v| v.1.len()).sum::<usize>());
     let mut rest = template;
@@ -239,21 +251,18 @@ pub fn html(table: &Table) -> Result<String> {
     })?;
     let number = |v: f64| format!("{}", (v * 1e6).round() / 1e6);
     let last = rows[rows.len() - 1][0];
-    let parts = viewer_parts();
-    let values: Vec<(&str, &str)> = [
-        ("SOURCE", escape_html(&table.origin)),
-        ("SAMPLES", rows.len().to_string()),
-        ("T0", number(rows[0][0])),
-        ("T1", number(last)),
-        ("RADIUS", number(radius)),
-        ("OFFSET", number(a)),
-        ("DATA", data),
-    ]
-    .iter()
-    .chain(&parts)
-    .map(|(key, value)| (*key, value.as_str()))
-    .collect();
-    Ok(fill(TEMPLATE, &values))
+    Ok(fill_viewer_page(
+        TEMPLATE,
+        &[
+            ("SOURCE", escape_html(&table.origin)),
+            ("SAMPLES", rows.len().to_string()),
+            ("T0", number(rows[0][0])),
+            ("T1", number(last)),
+            ("RADIUS", number(radius)),
+            ("OFFSET", number(a)),
+            ("DATA", data),
+        ],
+    ))
 }
 
 fn escape_html(text: &str) -> String {

@@ -7,7 +7,7 @@
 //! The state is in the URL's hash (`explorer.html#tilt=0.7&spin=6&t_end=20`); a key that is
 //! missing takes the value of the built-in default case ([`Defaults`]).
 
-use crate::animate::{base64, fill, viewer_parts};
+use crate::animate::{base64, fill_viewer_page};
 use crate::case::Case;
 use crate::error::{AppResult as Result, FileError};
 use serde::Serialize;
@@ -104,13 +104,10 @@ pub fn html() -> Result<String> {
             file: "<built-in default>".into(),
             message: format!("cannot embed the defaults: {e}"),
         })?;
-    let parts = viewer_parts();
-    let values: Vec<(&str, &str)> = [("DEFAULTS", defaults), ("WASM", base64(WASM))]
-        .iter()
-        .chain(&parts)
-        .map(|(key, value)| (*key, value.as_str()))
-        .collect();
-    Ok(fill(TEMPLATE, &values))
+    Ok(fill_viewer_page(
+        TEMPLATE,
+        &[("DEFAULTS", defaults), ("WASM", base64(WASM))],
+    ))
 }
 
 #[cfg(test)]
