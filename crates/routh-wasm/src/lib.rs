@@ -398,9 +398,11 @@ mod tests {
             &mut |_, _| Ok(()),
         )
         .unwrap();
-        // The same function and settings: the same numbers, to the bit (JSON keeps every bit).
-        let want = serde_json::to_value(summary.final_state).unwrap();
-        assert_eq!(got["summary"]["final_state"], want);
+        // The same function and settings: the same numbers, to the bit. Compared as the JSON
+        // text (serde_json's parser may move the last bit; the page's JSON.parse does not).
+        let text = answer(&request("simulate", "9.81"));
+        let want = serde_json::to_string(&summary.final_state).unwrap();
+        assert!(text.contains(&format!("\"final_state\":{want}")), "{want}");
         // The view: every column at the 101 samples, theta from 40.1 degrees (tilt 0.7 rad).
         let columns = got["view"]["columns"].as_object().unwrap();
         assert_eq!(columns.len(), 2 + FULL_COLUMN_NAMES.len());
@@ -416,14 +418,14 @@ mod tests {
             let got = call(command, "9.81");
             assert!(got.get("error").is_none(), "{command}: {got}");
         }
-        // The quadrature agrees with the integration at t_end: both within 1e-9 of the
-        // solution (the integration at 1e-12 over 20 s; the quadrature's own estimate is
-        // 2e-11), measured 1e-10 apart.
+        // The quadrature agrees with the integration at t_end within the integration's error:
+        // DOP853 at 1e-12 is 2.3e-9 off in gamma1 at t = 20 on this case (measured: the Taylor
+        // method at 3e-14 agrees with the quadrature to 7e-15, whose own estimate is 2e-11).
         let exact = call("exact", "9.81")["final_state"]["gamma"].clone();
         let integrated = call("simulate", "9.81")["summary"]["final_state"]["gamma"].clone();
         for i in 0..3 {
             let d = exact[i].as_f64().unwrap() - integrated[i].as_f64().unwrap();
-            assert!(d.abs() < 1e-9, "gamma{}: {d}", i + 1);
+            assert!(d.abs() < 1e-8, "gamma{}: {d}", i + 1);
         }
     }
 
