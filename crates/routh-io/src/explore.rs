@@ -133,9 +133,11 @@ mod tests {
             page.contains(&base64(&WASM[..3000])[..4000]),
             "wasm inlined"
         );
+        // (three.js itself names a global `__THREE__`, so that key is not looked for.)
         for key in [
+            "__VIEWER_STYLE__",
+            "__PLAYBACK__",
             "__VIEWER_SCRIPTS__",
-            "__THREE__",
             "__VIEWER__",
             "__DEFAULTS__",
             "__WASM__",
