@@ -16,7 +16,6 @@ use crate::state::State;
 use crate::units::Units;
 use serde::Serialize;
 use std::cell::RefCell;
-use std::time::Instant;
 
 /// Settings of one simulation, validated when built: a value of this type holds no invalid
 /// setting (the rules of [`SettingsBuilder::build`], the one check of settings of the
@@ -252,7 +251,33 @@ pub struct Summary {
     /// Wall time of the integration in seconds, measured with [`std::time::Instant`] inside
     /// [`run`]: the steps, the tracking of the integrals, the projections and the samples
     /// (including the time spent in `on_sample`), without process start-up or case parsing.
+    /// NaN (`null` in JSON) on wasm32, which has no clock ([`Stopwatch`]).
     pub elapsed_s: f64,
+}
+
+/// The wall clock of [`Summary::elapsed_s`]. WebAssembly without a host (wasm32-unknown-unknown,
+/// the explorer page's target) has no clock in `std`: `Instant::now` panics there, so a run
+/// compiled for it reports NaN and the page times it itself (`performance.now()`).
+struct Stopwatch {
+    #[cfg(not(target_arch = "wasm32"))]
+    start: std::time::Instant,
+}
+
+impl Stopwatch {
+    fn start() -> Self {
+        Stopwatch {
+            #[cfg(not(target_arch = "wasm32"))]
+            start: std::time::Instant::now(),
+        }
+    }
+
+    /// Seconds since [`Stopwatch::start`] (NaN on wasm32).
+    fn seconds(&self) -> f64 {
+        #[cfg(not(target_arch = "wasm32"))]
+        return self.start.elapsed().as_secs_f64();
+        #[cfg(target_arch = "wasm32")]
+        return f64::NAN;
+    }
 }
 
 /// The drift of the integrals along a run: their values at the start, at the last state seen,
@@ -558,7 +583,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
         .into());
     }
     check_samples(t0, t1, samples).map_err(RouthError::from)?;
-    let start = Instant::now();
+    let start = Stopwatch::start();
     let x0 = reduced(&y0);
     let level = settings.project.then(|| LevelSet::through(body, &x0));
     let project = |y: &mut [f64; N]| project_onto(level.as_ref(), y);
@@ -621,7 +646,7 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
             initial_state: State::from_array(&x0),
             final_state: State::from_array(&reduced(&outcome.y)),
             integrals: drift.report(),
-            elapsed_s: start.elapsed().as_secs_f64(),
+            elapsed_s: start.seconds(),
         },
         stop: outcome.stop,
         t: outcome.t,

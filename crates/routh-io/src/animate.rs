@@ -36,6 +36,27 @@ const TEMPLATE: &str = include_str!("animate.html");
 /// classes listed in `assets/viewer/three-entry.js`, bundled by `assets/viewer/build-three.sh`.
 const THREE_JS: &str = include_str!("../../../assets/viewer/three.min.js");
 
+/// The 3D view of the ball and its charts (`viewer.js`): the one script of this page and of
+/// the explorer's ([`crate::explore`]).
+const VIEWER_JS: &str = include_str!("viewer.js");
+
+/// The parts of the page that the explorer's page shares, as the keys of [`fill`]:
+/// `VIEWER_STYLE` (`viewer.css`), `PLAYBACK` (play, speed, time, follow: `viewer-playback.html`)
+/// and `VIEWER_SCRIPTS` (three.js and `viewer.js`, in `viewer-scripts.html`).
+fn viewer_parts() -> [(&'static str, String); 3] {
+    [
+        ("VIEWER_STYLE", include_str!("viewer.css").to_string()),
+        ("PLAYBACK", include_str!("viewer-playback.html").to_string()),
+        (
+            "VIEWER_SCRIPTS",
+            fill(
+                include_str!("viewer-scripts.html"),
+                &[("THREE", THREE_JS), ("VIEWER", VIEWER_JS)],
+            ),
+        ),
+    ]
+}
+
 /// The columns a frame needs, in the order of [`frame_rows`]: t, gamma and the columns of
 /// `routh simulate --full` ([`FULL_COLUMN_NAMES`]).
 const FRAME_COLUMNS: usize = 4 + FULL_COLUMN_NAMES.len();
@@ -134,7 +155,7 @@ fn geometry(rows: &[[f64; FRAME_COLUMNS]], origin: &str) -> Result<(f64, f64)> {
 }
 
 /// Standard base64 (RFC 4648, with padding) of `bytes`.
-fn base64(bytes: &[u8]) -> String {
+pub(crate) fn base64(bytes: &[u8]) -> String {
     const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {
@@ -157,6 +178,18 @@ fn base64(bytes: &[u8]) -> String {
 fn f32_column(values: impl Iterator<Item = f64>) -> String {
     let bytes: Vec<u8> = values.flat_map(|v| (v as f32).to_le_bytes()).collect();
     base64(&bytes)
+}
+
+/// `template` with its own `values` and the parts shared by the viewer's pages
+/// ([`viewer_parts`]) in place of their keys ([`fill`]).
+pub(crate) fn fill_viewer_page(template: &str, values: &[(&str, String)]) -> String {
+    let parts = viewer_parts();
+    let all: Vec<(&str, &str)> = values
+        .iter()
+        .chain(&parts)
+        .map(|(key, value)| (*key, value.as_str()))
+        .collect();
+    fill(template, &all)
 }
 
 /// Replace each `__KEY__` of `template` by its value, in one pass (a value that itself
@@ -218,17 +251,16 @@ pub fn html(table: &Table) -> Result<String> {
     })?;
     let number = |v: f64| format!("{}", (v * 1e6).round() / 1e6);
     let last = rows[rows.len() - 1][0];
-    Ok(fill(
+    Ok(fill_viewer_page(
         TEMPLATE,
         &[
-            ("SOURCE", &escape_html(&table.origin)),
-            ("SAMPLES", &rows.len().to_string()),
-            ("T0", &number(rows[0][0])),
-            ("T1", &number(last)),
-            ("RADIUS", &number(radius)),
-            ("OFFSET", &number(a)),
-            ("THREE", THREE_JS),
-            ("DATA", &data),
+            ("SOURCE", escape_html(&table.origin)),
+            ("SAMPLES", rows.len().to_string()),
+            ("T0", number(rows[0][0])),
+            ("T1", number(last)),
+            ("RADIUS", number(radius)),
+            ("OFFSET", number(a)),
+            ("DATA", data),
         ],
     ))
 }

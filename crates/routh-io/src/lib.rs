@@ -1,6 +1,6 @@
 //! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]) and their rows ([`row`]),
 //! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
-//! 3D viewer ([`animate`]), sweeps ([`sweep`]) and the report of Lyapunov exponents
+//! 3D viewer ([`animate`]), the explorer page computing in the browser ([`explore`]), sweeps ([`sweep`]) and the report of Lyapunov exponents
 //! ([`lyapunov`]). The command-line tool and the Python module
 //! are built on it; the model and the mathematics are the layers below (`routh-ball`,
 //! `routh-sphere`).
@@ -11,6 +11,7 @@
 pub mod animate;
 pub mod case;
 pub mod error;
+pub mod explore;
 #[cfg(feature = "plot")]
 pub mod figure;
 pub mod lyapunov;

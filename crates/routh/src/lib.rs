@@ -69,6 +69,6 @@ pub mod diagram {
 #[cfg(feature = "sweep")]
 pub use routh_io::sweep;
 #[cfg(feature = "io")]
-pub use routh_io::{animate, case, output, row, table, AppError, AppResult, FileError};
+pub use routh_io::{animate, case, explore, output, row, table, AppError, AppResult, FileError};
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};

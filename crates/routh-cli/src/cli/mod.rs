@@ -24,6 +24,7 @@ mod animate;
 mod audit;
 mod diagram;
 mod exact;
+mod explore;
 mod flow;
 mod lyapunov;
 mod plot;
@@ -58,6 +59,9 @@ enum Command {
     Plot(plot::Args),
     /// Write the 3D viewer of the rolling ball: one self-contained HTML page.
     Animate(animate::Args),
+    /// Write the explorer: one self-contained HTML page that computes in the browser (the
+    /// library compiled to WebAssembly), with sliders for the body and the initial state.
+    Explore(explore::Args),
     /// Check every computable claim of the paper's sections 2.1 to 4.
     Audit(audit::Args),
     /// The exact motion by quadrature: turning points, nutation period, state at any time.
@@ -167,6 +171,7 @@ pub fn main() -> ExitCode {
         Command::Simulate(args) => simulate::run_command(args),
         Command::Plot(args) => plot::run(args),
         Command::Animate(args) => animate::run(args),
+        Command::Explore(args) => explore::run(args),
         Command::Audit(args) => audit::run(args),
         Command::Exact(args) => match args.flow {
             Some(field) => flow::run(&args, field),
