@@ -139,7 +139,7 @@ pub fn lyapunov_spectrum(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::ball::Ball;
     use crate::body::Body;
@@ -147,7 +147,7 @@ mod tests {
     use crate::state::{Normalise, State};
 
     /// The default case's Routh sphere and state (`cases/default.toml`).
-    fn routh_sphere() -> (Body, [f64; 6]) {
+    pub(crate) fn routh_sphere() -> (Body, [f64; 6]) {
         let gamma = [0.3f64.sin(), 0.0, 0.3f64.cos()];
         let body = Body::default();
         let x = State::from_omega(&body, gamma, [0.5, 0.2, 8.0], Normalise::Reject).unwrap();

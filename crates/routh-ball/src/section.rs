@@ -165,15 +165,7 @@ pub fn ball_section(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::body::Body;
-
-    /// The default case's Routh sphere and state (`cases/default.toml`).
-    fn routh_sphere() -> (Body, [f64; 6]) {
-        let gamma = [0.3f64.sin(), 0.0, 0.3f64.cos()];
-        let body = Body::default();
-        let x = State::from_omega(&body, gamma, [0.5, 0.2, 8.0], Normalise::Reject).unwrap();
-        (body, x.to_array())
-    }
+    use crate::lyapunov::tests::routh_sphere;
 
     /// Every state of the family is on the level to 1e-13 relative (the rescaling's
     /// round-off), on `|gamma| = 1`, and the first is the case's; their tilts differ.

@@ -4,7 +4,7 @@
 
 use super::diagram::both_formats;
 use super::plot::create_dir;
-use super::simulate::{parse_method, Overrides};
+use super::simulate::{parse_method, Integration};
 use routh::case::Case;
 use routh::figure::SectionFigure;
 use routh::integrate::Method;
@@ -38,21 +38,12 @@ pub struct Args {
     /// the next of gamma3, M1, gamma2, M2 where one is the surface's component.
     #[arg(long)]
     pub axes: Option<String>,
-    /// Final time of each run (default: the case's t_end).
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_end: Option<f64>,
+    /// The final time of each run, tolerances and step limit.
+    #[command(flatten)]
+    pub integration: Integration,
     /// Integrator: `dop853` (in SIMD lanes), `vern9` or `rk4:<steps>` (one run at a time).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
     pub method: Method,
-    /// Relative tolerance.
-    #[arg(long, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// Absolute tolerance, in the motion's units (as `routh simulate --atol`).
-    #[arg(long, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
-    /// Most steps of each run (default: the case's max_steps).
-    #[arg(long)]
-    pub max_steps: Option<usize>,
     /// Directory of the files section.csv, section.png and section.svg (created if missing);
     /// default: `section` in the current directory.
     #[arg(long)]
@@ -103,14 +94,9 @@ pub fn run(args: Args) -> Result<()> {
     let direction = parse_direction(&args.direction, "direction")?;
     let [x_axis, y_axis] = axes(args.axes.as_deref(), crossing.component)?;
     let case = Case::load(args.case.as_deref())?;
-    let overrides = Overrides {
-        method: args.method,
-        t_end: args.t_end,
-        rtol: args.rtol,
-        atol: args.atol,
-        max_steps: args.max_steps,
-    };
-    let settings = overrides
+    let settings = args
+        .integration
+        .overrides(args.method)
         .applied_to(&case)
         .projection(false, 1)
         .samples(0)
