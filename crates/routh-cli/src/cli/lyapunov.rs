@@ -39,13 +39,7 @@ pub struct Args {
 /// Run the command.
 pub fn run(args: Args) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
-    let integration = args
-        .integration
-        .overrides(args.method)
-        .applied_to(&case)
-        .projection(false, 1)
-        .samples(0)
-        .build()?;
+    let integration = args.integration.settings(args.method, &case)?;
     let settings = LyapunovSettings::new(integration, args.transient, args.interval)?;
     let r = report_case(&case, &settings)?;
     if args.json {

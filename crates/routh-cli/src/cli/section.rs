@@ -5,6 +5,7 @@
 use super::diagram::both_formats;
 use super::plot::create_dir;
 use super::simulate::{parse_method, Integration};
+use super::Readable;
 use routh::case::Case;
 use routh::figure::SectionFigure;
 use routh::integrate::Method;
@@ -94,13 +95,7 @@ pub fn run(args: Args) -> Result<()> {
     let direction = parse_direction(&args.direction, "direction")?;
     let [x_axis, y_axis] = axes(args.axes.as_deref(), crossing.component)?;
     let case = Case::load(args.case.as_deref())?;
-    let settings = args
-        .integration
-        .overrides(args.method)
-        .applied_to(&case)
-        .projection(false, 1)
-        .samples(0)
-        .build()?;
+    let settings = args.integration.settings(args.method, &case)?;
     let x0 = case.initial.to_array();
     let (starts, found, mut report) = section(
         &case.ball,
@@ -155,10 +150,10 @@ pub fn run(args: Args) -> Result<()> {
         r.crossings,
         r.initial_states,
         r.energy,
-        r.t_end,
+        Readable(r.t_end),
         r.method,
-        r.rtol,
-        r.atol
+        Readable(r.rtol),
+        Readable(r.atol)
     )?;
     outln!(
         "  largest distance from the plane {:e} (unit {:e}), largest relative energy drift {:e}",

@@ -86,15 +86,21 @@ pub struct Integration {
 }
 
 impl Integration {
-    /// These options with the integrator `method`, as overrides of a case.
-    pub fn overrides(&self, method: Method) -> Overrides {
-        Overrides {
+    /// The settings of `case` with these options and the integrator `method`, unprojected and
+    /// without samples (the runs of `lyapunov` and `section`), validated as they are built.
+    pub fn settings(&self, method: Method, case: &Case) -> Result<Settings> {
+        let overrides = Overrides {
             method,
             t_end: self.t_end,
             rtol: self.rtol,
             atol: self.atol,
             max_steps: self.max_steps,
-        }
+        };
+        Ok(overrides
+            .applied_to(case)
+            .projection(false, 1)
+            .samples(0)
+            .build()?)
     }
 }
 
