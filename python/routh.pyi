@@ -14,7 +14,7 @@ import numpy.typing as npt
 
 __all__ = [
     "__version__", "MAX_VALUES", "Ball", "Body", "DenseOutput", "Event", "ExactSolution", "HamiltonianFlow", "Problem", "Solution",
-    "audit", "default_case", "diagram", "load_case", "lyapunov", "routh_threshold", "simulate", "steady_precessions",
+    "audit", "default_case", "diagram", "load_case", "lyapunov", "routh_threshold", "section", "simulate", "steady_precessions",
     "sleeping_tops", "sweep", "vertical_spin",
 ]
 __version__: str
@@ -282,6 +282,14 @@ def lyapunov(
     method: str = "dop853", rtol: float = 1e-12, atol: float = 1e-12,
 ) -> _Record:
     """The five Lyapunov exponents on |gamma| = 1 (the keys of `routh lyapunov --json`)."""
+def section(
+    body: Union[Body, Ball], x0: _ArrayLike, surface: str, t_end: float = 100.0, *,
+    direction: str = "up", initial: int = 20, method: str = "dop853",
+    rtol: float = 1e-12, atol: float = 1e-12,
+) -> _Record:
+    """The Poincaré section on the energy level of x0 through the plane `surface`
+    ("NAME = NUMBER"): the keys of `routh section --json` and the arrays `run`, `t`,
+    `x` (6, k) and `initial_states_x` (6, n)."""
 def sweep(
     path: Optional[Union[str, PathLike[str]]] = None,
     *,

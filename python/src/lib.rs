@@ -21,6 +21,7 @@ mod exact;
 mod flows;
 mod lyapunov;
 mod problem;
+mod section;
 mod solution;
 mod steady;
 mod sweep;
@@ -49,6 +50,7 @@ fn routh(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_function(wrap_pyfunction!(audit::audit, module)?)?;
     module.add_function(wrap_pyfunction!(sweep::sweep, module)?)?;
     module.add_function(wrap_pyfunction!(lyapunov::lyapunov, module)?)?;
+    module.add_function(wrap_pyfunction!(section::section, module)?)?;
     module.add_function(wrap_pyfunction!(diagram::diagram, module)?)?;
     module.add_function(wrap_pyfunction!(diagram::sleeping_tops, module)?)?;
     Ok(())

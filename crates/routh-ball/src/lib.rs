@@ -5,7 +5,8 @@
 //! invariant measure ([`integrals`]), the motion in space ([`motion`]), the validated states
 //! ([`state`]), the projection onto the level set of the integrals ([`projection`]) and runs
 //! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]; the method that
-//! `auto` runs: [`auto`]) and its Lyapunov exponents ([`lyapunov`]).
+//! `auto` runs: [`auto`]), its Lyapunov exponents ([`lyapunov`]) and Poincaré sections
+//! ([`section`]).
 //!
 //! Equation labels, such as (m-eq), are those of Bizyaev and Tsiganov, "On the Routh sphere
 //! problem".
@@ -27,6 +28,7 @@ pub mod motion;
 pub mod problem;
 pub mod projection;
 pub mod range;
+pub mod section;
 pub mod simulate;
 pub mod state;
 pub mod units;

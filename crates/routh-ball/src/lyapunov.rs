@@ -39,7 +39,7 @@ const VARIATIONAL: usize = 6 * (EXPONENTS + 1);
 /// The transient of the default schedule, as a fraction of `t_end`: the tangent vectors turn
 /// towards the directions that grow fastest before the averaging starts, which removes most of
 /// the `ln T / T` bias of an integrable motion (the default case over t = 100: the largest
-/// exponent 0.026 instead of 0.065).
+/// exponent 0.026 instead of 0.061).
 pub const DEFAULT_TRANSIENT_FRACTION: f64 = 0.1;
 
 /// The renormalisations of the default schedule over the averaging span `t_end - transient`
@@ -139,7 +139,7 @@ pub fn lyapunov_spectrum(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::ball::Ball;
     use crate::body::Body;
@@ -147,7 +147,7 @@ mod tests {
     use crate::state::{Normalise, State};
 
     /// The default case's Routh sphere and state (`cases/default.toml`).
-    fn routh_sphere() -> (Body, [f64; 6]) {
+    pub(crate) fn routh_sphere() -> (Body, [f64; 6]) {
         let gamma = [0.3f64.sin(), 0.0, 0.3f64.cos()];
         let body = Body::default();
         let x = State::from_omega(&body, gamma, [0.5, 0.2, 8.0], Normalise::Reject).unwrap();
@@ -177,10 +177,10 @@ mod tests {
     /// tangent vectors grow at most linearly (the shear between neighbouring tori), so the
     /// estimates tend to zero as `ln T / T`. At the default time t = 100 with the default
     /// schedule (transient 10, renormalised every 0.9), every exponent is below 0.05 in
-    /// absolute value (measured: the Routh sphere 0.026, the Chaplygin ball 0.035); at
-    /// t = 1000 without transient below 0.01 (measured 0.0087 and 0.0087: `ln T / T` gives a
-    /// factor 6.7 from 100 to 1000, measured 7.4 and 7.3). Negative control: at t = 100 without
-    /// the transient, the largest is 0.065 for both, above 0.05: the check can fail, and the
+    /// absolute value (measured: the Routh sphere 0.026, the Chaplygin ball 0.036); at
+    /// t = 1000 without transient below 0.01 (measured 0.0084 and 0.0083: `ln T / T` gives a
+    /// factor 6.7 from 100 to 1000, measured 7.3 and 7.2). Negative control: at t = 100 without
+    /// the transient, the largest is 0.061 and 0.060, above 0.05: the check can fail, and the
     /// transient is what brings it under.
     #[test]
     fn integrable_balls_have_zero_exponents() {
@@ -212,7 +212,7 @@ mod tests {
     }
 
     /// The sum of the five exponents is the average divergence of (mg-eq) (to 1e-10; measured
-    /// 1.5e-13 and 7.8e-13 over t = 100 at tolerances 1e-12), and the average divergence is
+    /// 5.2e-14 and 3.1e-12 over t = 100 at tolerances 1e-12), and the average divergence is
     /// that of the invariant measure, `(ln rho(x_0) - ln rho(x(T))) / T` with `rho = 1/g`
     /// (rho) for the Routh sphere and Chaplygin's density for his ball (to 1e-11: both are
     /// computed from the same orbit, the divergence by Gauss–Legendre on each step, the

@@ -23,6 +23,8 @@
 //! * [`variational`]: the variational equations of a field written over
 //!   [`Scalar`](scalar::Scalar) (the tangent flow by automatic differentiation of the same
 //!   field), the monodromy matrix and Floquet multipliers of a periodic orbit.
+//! * [`section`]: Poincaré sections, the crossings of many runs (in lanes) with a surface,
+//!   located by [`locate`];
 //! * [`lyapunov`]: Lyapunov spectra by the QR method on the variational equations, with
 //!   their convergence, the Kaplan–Yorke dimension and the average divergence of the field.
 //!
@@ -39,6 +41,7 @@ mod pair;
 mod rk4;
 pub mod sampling;
 pub mod scalar;
+pub mod section;
 pub mod tableau;
 pub mod taylor;
 pub mod variational;

@@ -22,6 +22,15 @@
 //! renormalisations at once; it vanishes where the field has an invariant measure and the orbit
 //! is recurrent.
 //!
+//! **Units.** The components of a state may have units of their own (the ball's gamma is
+//! dimensionless, its M an angular momentum): the Euclidean norm and the orthogonality of the
+//! QR step mix them unless the vectors are measured in the units of the run
+//! ([`Field::units`], as the steppers measure their errors: [`Scales`]). So the start vectors
+//! are generic in those units, and each renormalisation divides component `i` of every vector
+//! by its unit `u_i`, orthonormalises, and multiplies back: the exponents of a copy of the
+//! system in other units are those of the original divided by the unit of time (exponents are
+//! rates), and do not depend on how the components are written.
+//!
 //! On a level set of integrals (the ball's `|gamma| = 1`), the projection given to
 //! [`spectrum`] (after every step, as [`crate::drive`] applies it) moves the state onto the
 //! level set and the tangent vectors onto its tangent space
@@ -32,7 +41,8 @@
 use crate::batch::Field;
 use crate::variational::{divergence, Variational};
 use crate::{
-    drive, stepper, Control, Drive, IntegrateError, Method, Options, Projection, Stats, Stepper,
+    drive, stepper, Control, Drive, IntegrateError, Method, Options, Projection, Scales, Stats,
+    Stepper,
 };
 use nalgebra::DMatrix;
 use std::convert::Infallible;
@@ -161,33 +171,36 @@ pub fn kaplan_yorke_dimension(exponents: &[f64]) -> f64 {
     sorted.len() as f64
 }
 
-/// `K` generic directions of `R^N`: the fractional parts of multiples of the golden ratio
-/// (Weyl's sequence) less 1/2. Any fixed subspace of codimension `< K` (the tangent space of a
-/// level set) meets their span in `K - codimension` independent directions unless by
-/// coincidence; the unit vectors would not (the first three span the normal of
-/// `|gamma| = 1`).
-fn generic_directions<const N: usize, const K: usize>() -> [[f64; N]; K] {
+/// `K` generic directions of `R^N` in the units `scales` (component `i` of each is a number of
+/// units `1 / scales.of(i)`): the fractional parts of multiples of the golden ratio (Weyl's
+/// sequence) less 1/2. Any fixed subspace of codimension `< K` (the tangent space of a level
+/// set) meets their span in `K - codimension` independent directions unless by coincidence;
+/// the unit vectors would not (the first three span the normal of `|gamma| = 1`).
+fn generic_directions<const N: usize, const K: usize>(scales: &Scales<N>) -> [[f64; N]; K] {
     let golden = (5f64.sqrt() - 1.0) / 2.0;
     std::array::from_fn(|k| {
-        std::array::from_fn(|i| (((k * N + i + 1) as f64) * golden).fract() - 0.5)
+        std::array::from_fn(|i| ((((k * N + i + 1) as f64) * golden).fract() - 0.5) / scales.of(i))
     })
 }
 
-/// The tangent vectors of `z` replaced by `Q` of their Householder QR, and `ln |R_kk|`;
-/// [`IntegrateError::DependentTangents`] at `t` when a diagonal entry is zero or not finite.
+/// The tangent vectors of `z` replaced by `Q` of the Householder QR of their matrix in the
+/// units `scales` (row `i` multiplied by `scales.of(i)`, and `Q`'s divided by it), and
+/// `ln |R_kk|`; [`IntegrateError::DependentTangents`] at `t` when a diagonal entry is zero or
+/// not finite.
 fn renormalise<F: Field<N>, const N: usize, const K: usize, const M: usize>(
     system: &Variational<'_, F, N, K, M>,
+    scales: &Scales<N>,
     z: &[f64; M],
     t: f64,
 ) -> Result<([f64; M], [f64; K]), IntegrateError> {
     let y = system.matrix(z);
-    let qr = DMatrix::from_fn(N, K, |i, k| y[(i, k)]).qr();
+    let qr = DMatrix::from_fn(N, K, |i, k| y[(i, k)] * scales.of(i)).qr();
     let (q, r) = (qr.q(), qr.r());
     let logs: [f64; K] = std::array::from_fn(|k| r[(k, k)].abs().ln());
     if logs.iter().any(|l| !l.is_finite()) {
         return Err(IntegrateError::DependentTangents { t });
     }
-    let vectors = std::array::from_fn(|k| std::array::from_fn(|i| q[(i, k)]));
+    let vectors = std::array::from_fn(|k| std::array::from_fn(|i| q[(i, k)] / scales.of(i)));
     Ok((system.join(&system.state(z), &vectors), logs))
 }
 
@@ -210,7 +223,8 @@ fn divergence_on_step<F: Field<N>, const N: usize, const K: usize, const M: usiz
 /// The `K` largest Lyapunov exponents of `field` from `y0` (all of them with `K = N`) by the
 /// QR method on the schedule `schedule`, the tangent vectors starting along `K` generic
 /// directions (Weyl's sequence, `generic_directions`), projected by `project` and
-/// orthonormalised.
+/// orthonormalised, all in the units of the run from `y0` ([`Field::units`]: see the
+/// module's documentation).
 ///
 /// Each interval is one run of [`crate::drive`] with the stepper of `method` (DOP853, Vern9
 /// or RK4 with `steps` equal steps per interval; [`Method::Taylor`] and [`Method::Auto`] are
@@ -230,12 +244,13 @@ pub fn spectrum<F: Field<N>, const N: usize, const K: usize, const M: usize>(
     project: Option<Projection<'_, M>>,
 ) -> Result<Spectrum<N>, IntegrateError> {
     let system = Variational::<F, N, K, M>::new(field);
-    let mut z = system.join(y0, &generic_directions());
+    let scales = Scales::of_units(&field.units(y0));
+    let mut z = system.join(y0, &generic_directions(&scales));
     if let Some(p) = project {
         p(&mut z);
     }
     let mut t = 0.0;
-    z = renormalise(&system, &z, t)?.0;
+    z = renormalise(&system, &scales, &z, t)?.0;
     let mut sums = [0.0; K];
     let mut history = Vec::new();
     let mut divergence_integral = 0.0;
@@ -263,7 +278,7 @@ pub fn spectrum<F: Field<N>, const N: usize, const K: usize, const M: usize>(
         stats.rejected += outcome.stats.rejected;
         stats.rhs_evals += outcome.stats.rhs_evals;
         t = t_next;
-        let (renormalised, logs) = renormalise(&system, &outcome.y, t)?;
+        let (renormalised, logs) = renormalise(&system, &scales, &outcome.y, t)?;
         z = renormalised;
         if averaged {
             for (sum, log) in sums.iter_mut().zip(logs) {

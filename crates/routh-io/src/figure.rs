@@ -5,9 +5,13 @@
 //!   the monodromy loop and the marked values;
 //! * [`SleepingTopFigure`]: the plane (H3, K) with the lines of vertical spins, coloured where
 //!   they are stable and where not (Routh's criterion), the thresholds marked;
-//! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop.
+//! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop;
+//! * [`SectionFigure`]: a Poincaré section, the crossings of each run in a colour of its own.
 
-use crate::plot::{tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA, Y_LABEL_AREA};
+use crate::plot::{
+    bounds, chart_ranges, plotting_area, tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA,
+    Y_LABEL_AREA,
+};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -362,5 +366,44 @@ impl Figure for RotationNumberFigure<'_> {
             .label("Theta / (2 pi) from the quadrature, in [0, 1)")
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, orange.filled()));
         legend(&mut chart, SeriesLabelPosition::LowerLeft)
+    }
+}
+
+/// A Poincaré section: two components of the crossings, one dot each, coloured by run (the
+/// hue from red for the first run to violet for the last).
+pub struct SectionFigure<'a> {
+    /// The title above the chart.
+    pub title: String,
+    /// The names of the horizontal and vertical components.
+    pub labels: (&'a str, &'a str),
+    /// The crossings: `(run, x, y)`.
+    pub points: Vec<(usize, f64, f64)>,
+    /// The number of runs (for the colours).
+    pub runs: usize,
+}
+
+impl Figure for SectionFigure<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        let x = bounds(self.points.iter().map(|p| p.1));
+        let y = bounds(self.points.iter().map(|p| p.2));
+        let (xr, yr) = chart_ranges(x, y, false, plotting_area());
+        let mut chart = mesh(
+            root,
+            &self.title,
+            (xr.start, xr.end),
+            (yr.start, yr.end),
+            self.labels,
+        )?;
+        let runs = self.runs.max(1) as f64;
+        chart.draw_series(
+            self.points
+                .iter()
+                .filter(|p| p.1.is_finite() && p.2.is_finite())
+                .map(|&(run, x, y)| {
+                    let colour = HSLColor(0.8 * run as f64 / runs, 0.85, 0.42);
+                    Circle::new((x, y), 1, colour.filled())
+                }),
+        )?;
+        Ok(())
     }
 }

@@ -1,7 +1,8 @@
 //! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]) and their rows ([`row`]),
 //! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
-//! 3D viewer ([`animate`]), the explorer page computing in the browser ([`explore`]), sweeps ([`sweep`]) and the report of Lyapunov exponents
-//! ([`lyapunov`]). The command-line tool and the Python module
+//! 3D viewer ([`animate`]), the explorer page computing in the browser ([`explore`]), sweeps
+//! ([`sweep`]), the report of Lyapunov exponents ([`lyapunov`]) and Poincaré sections
+//! ([`section`], on the surfaces of [`surface`]). The command-line tool and the Python module
 //! are built on it; the model and the mathematics are the layers below (`routh-ball`,
 //! `routh-sphere`).
 #![warn(missing_docs)]
@@ -19,6 +20,8 @@ pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod row;
+pub mod section;
+pub mod surface;
 #[cfg(feature = "sweep")]
 pub mod sweep;
 pub mod table;

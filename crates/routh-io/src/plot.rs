@@ -321,7 +321,7 @@ pub fn standard_plots(table: &Table) -> Result<(Vec<Plot>, Vec<String>)> {
 }
 
 /// Bounds `(min, max)` of the finite values, widened when empty or degenerate.
-fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+pub(crate) fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values
         .filter(|v| v.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {

@@ -58,6 +58,14 @@ pub mod lyapunov {
     pub use routh_io::lyapunov::{report, report_case, History, Report};
 }
 
+/// Poincaré sections of a ball (`routh_ball::section`) and, with the feature `io`, the
+/// section of a case as `routh section` reports it (`routh_io::section`).
+pub mod section {
+    pub use routh_ball::section::*;
+    #[cfg(feature = "io")]
+    pub use routh_io::section::{cells, columns, section, surface_text, write_csv, Report};
+}
+
 /// The energy-momentum diagram (`routh-sphere`), and with the feature `plot` its figures
 /// (`routh-io`).
 pub mod diagram {
@@ -69,6 +77,8 @@ pub mod diagram {
 #[cfg(feature = "sweep")]
 pub use routh_io::sweep;
 #[cfg(feature = "io")]
-pub use routh_io::{animate, case, explore, output, row, table, AppError, AppResult, FileError};
+pub use routh_io::{
+    animate, case, explore, output, row, surface, table, AppError, AppResult, FileError,
+};
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};

@@ -160,8 +160,8 @@ fn tables(d: &Diagram, dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Render a figure in both formats.
-fn both_formats(figure: &impl Figure, dir: &Path, stem: &str) -> Result<Vec<PathBuf>> {
+/// Render a figure in both formats, `dir/stem.png` and `dir/stem.svg`.
+pub(super) fn both_formats(figure: &impl Figure, dir: &Path, stem: &str) -> Result<Vec<PathBuf>> {
     [Format::Png, Format::Svg]
         .into_iter()
         .map(|format| {

@@ -1,7 +1,7 @@
 //! `routh lyapunov`: the Lyapunov exponents of a case's motion on `|gamma| = 1`
 //! ([`routh::lyapunov::report_case`]), as text or JSON.
 
-use super::simulate::{parse_method, Overrides};
+use super::simulate::{parse_method, Integration};
 use super::{print_json, Readable};
 use routh::case::Case;
 use routh::integrate::Method;
@@ -15,9 +15,9 @@ pub struct Args {
     /// Case file (TOML); the built-in default case when omitted.
     #[arg(long)]
     pub case: Option<PathBuf>,
-    /// Final time (default: the case's t_end).
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_end: Option<f64>,
+    /// The final time, tolerances and step limit.
+    #[command(flatten)]
+    pub integration: Integration,
     /// The exponents are averaged over [transient, t_end] (default: t_end / 10; the tangent
     /// vectors are renormalised during the transient too).
     #[arg(long, allow_hyphen_values = true)]
@@ -31,15 +31,6 @@ pub struct Args {
     /// integrate the tangent flow.
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
     pub method: Method,
-    /// Relative tolerance.
-    #[arg(long, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// Absolute tolerance, in the motion's units (as `routh simulate --atol`).
-    #[arg(long, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
-    /// Most steps of each renormalisation interval's run (default: the case's max_steps).
-    #[arg(long)]
-    pub max_steps: Option<usize>,
     /// Print the report as JSON (with the history of the estimates).
     #[arg(long)]
     pub json: bool,
@@ -48,18 +39,7 @@ pub struct Args {
 /// Run the command.
 pub fn run(args: Args) -> Result<()> {
     let case = Case::load(args.case.as_deref())?;
-    let overrides = Overrides {
-        method: args.method,
-        t_end: args.t_end,
-        rtol: args.rtol,
-        atol: args.atol,
-        max_steps: args.max_steps,
-    };
-    let integration = overrides
-        .applied_to(&case)
-        .projection(false, 1)
-        .samples(0)
-        .build()?;
+    let integration = args.integration.settings(args.method, &case)?;
     let settings = LyapunovSettings::new(integration, args.transient, args.interval)?;
     let r = report_case(&case, &settings)?;
     if args.json {

@@ -28,6 +28,7 @@ mod explore;
 mod flow;
 mod lyapunov;
 mod plot;
+mod section;
 mod simulate;
 mod steady;
 mod sweep;
@@ -74,6 +75,9 @@ enum Command {
     /// The Lyapunov exponents of a case on |gamma| = 1 (QR method on the variational
     /// equations): their convergence, the Kaplan–Yorke dimension, the divergence check.
     Lyapunov(lyapunov::Args),
+    /// The Poincaré section of a case's motions on its energy level through a plane
+    /// `NAME = NUMBER` (CSV, PNG, SVG).
+    Section(section::Args),
     /// Many runs of a case over the quantities of its [sweep] table (grid or random design),
     /// one row per run, written to CSV or Parquet.
     Sweep(sweep::Args),
@@ -181,6 +185,7 @@ pub fn main() -> ExitCode {
         Command::Sweep(args) => sweep::run(args),
         Command::Diagram(args) => diagram::run(args),
         Command::Lyapunov(args) => lyapunov::run(args),
+        Command::Section(args) => section::run(args),
     };
     let flushed = result.and_then(|()| {
         std::io::stdout()

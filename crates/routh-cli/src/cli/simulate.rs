@@ -66,6 +66,44 @@ pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
         .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
 }
 
+/// The options of the integration that `lyapunov` and `section` take beside their method;
+/// each overrides the case's `[integration]` ([`Overrides`]).
+#[derive(clap::Args, Debug)]
+pub struct Integration {
+    /// Final time (default: the case's t_end).
+    #[arg(long, allow_hyphen_values = true)]
+    pub t_end: Option<f64>,
+    /// Relative tolerance.
+    #[arg(long, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance, in the motion's units (as `routh simulate --atol`).
+    #[arg(long, allow_hyphen_values = true)]
+    pub atol: Option<f64>,
+    /// Most steps of each run (`lyapunov`: of each renormalisation interval's run); default:
+    /// the case's max_steps.
+    #[arg(long)]
+    pub max_steps: Option<usize>,
+}
+
+impl Integration {
+    /// The settings of `case` with these options and the integrator `method`, unprojected and
+    /// without samples (the runs of `lyapunov` and `section`), validated as they are built.
+    pub fn settings(&self, method: Method, case: &Case) -> Result<Settings> {
+        let overrides = Overrides {
+            method,
+            t_end: self.t_end,
+            rtol: self.rtol,
+            atol: self.atol,
+            max_steps: self.max_steps,
+        };
+        Ok(overrides
+            .applied_to(case)
+            .projection(false, 1)
+            .samples(0)
+            .build()?)
+    }
+}
+
 /// The command-line overrides of a case's `[integration]` that every command integrating a
 /// case takes (`simulate`, `lyapunov`); `None` keeps the case's value.
 pub struct Overrides {

@@ -110,8 +110,9 @@ fn stages<F: Field<N>, T: Scalar, const N: usize>(
     })
 }
 
-/// The field on one lane in `f64`, as an [`OdeSystem`] (for the start of a run).
-struct OneLane<'f, F>(&'f F);
+/// The field on one lane in `f64`, as an [`OdeSystem`]: the start of a run in lanes, and the
+/// one-at-a-time runs of a field ([`crate::section`]).
+pub(crate) struct OneLane<'f, F>(pub(crate) &'f F);
 
 impl<F: Field<N>, const N: usize> OdeSystem<N> for OneLane<'_, F> {
     type Kernels = crate::taylor::Interpreted;

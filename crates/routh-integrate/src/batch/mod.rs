@@ -40,6 +40,7 @@ pub mod lanes;
 pub mod runs;
 pub mod taylor;
 
+pub(crate) use dop853::OneLane;
 pub use dop853::{integrate, integrate_in_lanes, integrate_on, lanes, LANES};
 pub use lanes::Lanes;
 pub use runs::{Job, Queue};

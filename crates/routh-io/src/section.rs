@@ -1,0 +1,144 @@
+//! The Poincaré section of a case as the front ends report it (`routh section`, Python's
+//! `routh.section`): the crossings of the runs from the case's state and from a family on its
+//! energy level ([`energy_family`]) with a plane `NAME = NUMBER` ([`crate::surface`]), by
+//! [`ball_section`]; their table (the run, then the columns of `routh simulate`'s CSV) and
+//! the summary (the number of crossings, how far they lie from the plane and from the
+//! energy level, the work).
+
+use crate::ball::Ball;
+use crate::error::{AppError, AppResult as Result};
+use crate::integrate::section::Point;
+use crate::integrate::Direction;
+use crate::output::write_atomic;
+use crate::problem::Crossing;
+use crate::row::{write_csv_line, Cell};
+use crate::simulate::Settings;
+use crate::surface::{component_names, direction_name};
+use crate::table::{sample_cells, sample_columns};
+use routh_ball::section::{ball_section, energy_family, BallSection};
+use serde::Serialize;
+use std::path::Path;
+use std::time::Instant;
+
+/// The summary of a section.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Report {
+    /// The case file (or `<built-in default>`); absent without a case (Python).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub case: Option<String>,
+    /// The plane, `NAME = NUMBER`.
+    pub surface: String,
+    /// The crossings that count: `up`, `down` or `both`.
+    pub direction: &'static str,
+    /// The integrator.
+    pub method: String,
+    /// The final time of each run.
+    pub t_end: f64,
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance.
+    pub atol: f64,
+    /// The initial states on the energy level (the case's first).
+    pub initial_states: usize,
+    /// The number of crossings of all the runs.
+    pub crossings: usize,
+    /// The energy H1 of the level.
+    pub energy: f64,
+    /// The largest `|NAME - NUMBER|` over the crossings.
+    pub max_surface_value: f64,
+    /// The unit of the plane's component (1 for gamma, the motion's unit of angular momentum
+    /// for M).
+    pub surface_unit: f64,
+    /// `max_surface_value / surface_unit`: the distance from the plane in the motion's units.
+    pub max_relative_surface_value: f64,
+    /// The largest relative drift of H1 from the level over the crossings.
+    pub max_energy_drift: f64,
+    /// Accepted steps of all the runs.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Field evaluations.
+    pub rhs_evals: usize,
+    /// Wall-clock time, in seconds.
+    pub elapsed_s: f64,
+}
+
+/// The plane as `NAME = NUMBER`.
+pub fn surface_text(crossing: &Crossing) -> String {
+    format!(
+        "{} = {}",
+        component_names()[crossing.component],
+        crossing.value
+    )
+}
+
+/// The section of the motions of `ball` on the energy level of `x0`: the runs from `initial`
+/// states ([`energy_family`]: `x0` first) with `settings`, crossing `crossing` in
+/// `direction` ([`ball_section`]); the initial states, the section and its summary.
+pub fn section(
+    ball: &Ball,
+    x0: &[f64; 6],
+    settings: &Settings,
+    crossing: &Crossing,
+    direction: Direction,
+    initial: usize,
+) -> Result<(Vec<[f64; 6]>, BallSection, Report)> {
+    let start = Instant::now();
+    let starts = energy_family(ball, x0, initial)?;
+    let s = ball_section(ball, &starts, settings, crossing, direction)?;
+    let report = Report {
+        case: None,
+        surface: surface_text(crossing),
+        direction: direction_name(direction),
+        method: settings.method().to_string(),
+        t_end: settings.t_end(),
+        rtol: settings.rtol(),
+        atol: settings.atol(),
+        initial_states: starts.len(),
+        crossings: s.points.len(),
+        energy: s.energy,
+        max_surface_value: s.max_surface_value,
+        surface_unit: s.surface_unit,
+        max_relative_surface_value: s.max_surface_value / s.surface_unit,
+        max_energy_drift: s.max_energy_drift,
+        steps: s.stats.steps,
+        rejected: s.stats.rejected,
+        rhs_evals: s.stats.rhs_evals,
+        elapsed_s: start.elapsed().as_secs_f64(),
+    };
+    Ok((starts, s, report))
+}
+
+/// The columns of the table of crossings: `run`, then those of `routh simulate`'s CSV
+/// ([`sample_columns`]: `t`, the state, omega, the integrals).
+pub fn columns() -> Vec<&'static str> {
+    std::iter::once("run")
+        .chain(sample_columns(false))
+        .collect()
+}
+
+/// The cells of one crossing, in the order of [`columns`].
+pub fn cells(ball: &Ball, point: &Point<6>) -> Vec<Cell> {
+    std::iter::once(Cell::Int(Some(point.run as u64)))
+        .chain(sample_cells(ball, point.t, &point.y))
+        .collect()
+}
+
+/// The table of the crossings `points` of `ball` as CSV into `path`, written whole or not
+/// at all ([`write_atomic`]).
+pub fn write_csv(path: &Path, ball: &Ball, points: &[Point<6>]) -> Result<()> {
+    write_atomic(path, |w| {
+        let io = AppError::io(path);
+        let mut line = columns().join(",");
+        line.push('\n');
+        for point in points {
+            write_csv_line(&cells(ball, point), &mut line);
+            line.push('\n');
+            if line.len() > 1 << 16 {
+                w.write_all(line.as_bytes()).map_err(&io)?;
+                line.clear();
+            }
+        }
+        w.write_all(line.as_bytes()).map_err(&io)
+    })
+}
