@@ -150,8 +150,11 @@ impl ContactTable {
     fn contact(&self) -> std::result::Result<Contact, String> {
         match (self.law.as_str(), &self.friction, self.mu) {
             ("rolling", None, None) => Ok(Contact::Rolling),
-            ("rolling", _, _) => Err("in [contact]: `friction` and `mu` belong to                                       law = \"sliding\"; the rolling law has no friction"
-                .into()),
+            ("rolling", _, _) => Err(
+                "in [contact]: `friction` and `mu` belong to law = \"sliding\"; \
+                                      the rolling law has no friction"
+                    .into(),
+            ),
             ("sliding", friction, mu) => {
                 if let Some(other) = friction.as_deref().filter(|f| *f != "viscous") {
                     return Err(format!(

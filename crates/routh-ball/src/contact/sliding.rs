@@ -436,7 +436,7 @@ pub struct SlidingSummary {
     pub rejected: usize,
     /// Evaluations of the field.
     pub rhs_evals: usize,
-    /// The contact.
+    /// The friction coefficient mu.
     pub mu: f64,
     /// The initial state.
     pub initial_state: Observation,
@@ -599,7 +599,7 @@ mod tests {
     /// both signs and a wobble, horizontal velocities of the centre of mass along and across.
     fn states(model: &Sliding) -> Vec<[f64; DIM]> {
         let mut out = Vec::new();
-        for tilt in [0.1, 1.0, 2.0, 3.0] {
+        for tilt in [0.1_f64, 1.0, 2.0, 3.0] {
             let gamma = [tilt.sin(), 0.0, -tilt.cos()];
             for omega in [[0.3, -0.7, 20.0], [1.5, 0.2, -6.0]] {
                 // Horizontal: orthogonal to gamma.
@@ -677,6 +677,48 @@ mod tests {
             .initial([0.6, 0.0, 0.8], [0.0; 3], [0.0; 3], Normalise::Reject)
             .unwrap();
         assert!((model.normal_force(&x) - 2.0 * 9.81).abs() <= 4.0 * f64::EPSILON * 19.62);
+    }
+
+    /// A ball that would leave the plane stops there, with that reason: the Routh sphere
+    /// (a = 0.3) on a frictionless plane (mu = 0), spun at 10 about a horizontal axis across
+    /// its symmetry axis, its centre of mass low, whirls its centre of mass up and over (its
+    /// kinetic energy 20 exceeds the rise of the potential, m G 2a = 5.9), where the
+    /// centripetal pull `a omega^2` exceeds G = 9.81 (over the top, N = m (G - a omega^2)):
+    /// the run ends as an event before t = 0.5 (half a turn at about 8 to 10 rad/s), where
+    /// N = 0 to 1e-9 of m G (the locator's zero, to about 2 ulp of t, times the rate of N,
+    /// of order m a omega^3). Control: spun at 3 (kinetic energy 1.8, it rocks back) it
+    /// reaches t_end.
+    #[test]
+    fn a_ball_that_would_leave_the_plane_stops_there() {
+        let body = Body::new(1.0, 1.0, 0.3, 0.4, 0.4, 0.5, 9.81).unwrap();
+        let model = Sliding::new(&body, 0.0).unwrap();
+        let settings = Settings::builder().t_end(1.0).build().unwrap();
+        let end = |spin: f64| {
+            let y0 = model
+                .initial(
+                    [0.0, 0.0, -1.0],
+                    [0.0, spin, 0.0],
+                    [0.0; 3],
+                    Normalise::Reject,
+                )
+                .unwrap();
+            run::<RouthError>(&model, y0, &settings, &mut |_, _| Ok(())).unwrap()
+        };
+        let s = end(10.0);
+        assert_eq!(s.status, "event", "{}", s.message);
+        assert!(
+            s.message.contains("the ball leaves the plane"),
+            "{}",
+            s.message
+        );
+        assert!(s.t < 0.5, "{}", s.t);
+        assert!(
+            s.final_state.normal_force.abs() < 1e-9 * 9.81,
+            "{:e}",
+            s.final_state.normal_force
+        );
+        let s = end(3.0);
+        assert_eq!((s.status, s.t), ("ok", 1.0), "{}", s.message);
     }
 
     /// Refused when built, with the reason: a friction coefficient that is not finite and
