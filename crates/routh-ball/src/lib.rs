@@ -6,7 +6,8 @@
 //! ([`state`]), the projection onto the level set of the integrals ([`projection`]) and runs
 //! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]; the method that
 //! `auto` runs: [`auto`]), its Lyapunov exponents ([`lyapunov`]) and Poincaré sections
-//! ([`section`]).
+//! ([`section`]); the same ball on other contacts with the plane ([`contact`]: the sliding
+//! ball with viscous friction, the tippe top).
 //!
 //! Equation labels, such as (m-eq), are those of Bizyaev and Tsiganov, "On the Routh sphere
 //! problem".
@@ -17,6 +18,7 @@
 pub mod auto;
 pub mod ball;
 pub mod body;
+pub mod contact;
 pub mod error;
 pub mod families;
 pub mod field;

@@ -89,6 +89,20 @@ impl Settings {
     pub fn max_steps(&self) -> usize {
         self.max_steps
     }
+
+    /// The times of the [`Settings::samples`]: equally spaced on `[0, t_end]`, the last one
+    /// `t_end` itself (none without samples).
+    pub fn sample_times(&self) -> Vec<f64> {
+        (0..self.samples)
+            .map(|i| {
+                if i + 1 == self.samples {
+                    self.t_end
+                } else {
+                    self.t_end * i as f64 / (self.samples - 1) as f64
+                }
+            })
+            .collect()
+    }
 }
 
 /// [`Settings`] being built: any values, checked once, by [`SettingsBuilder::build`].
@@ -513,15 +527,7 @@ pub fn integrate_observed<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
     on_sample: &mut OnSample<'_, E, N>,
     on_step: &mut dyn FnMut(&dyn Stepper<N>),
 ) -> std::result::Result<Observed<N>, E> {
-    let times: Vec<f64> = (0..settings.samples)
-        .map(|i| {
-            if i + 1 == settings.samples {
-                settings.t_end
-            } else {
-                settings.t_end * i as f64 / (settings.samples - 1) as f64
-            }
-        })
-        .collect();
+    let times = settings.sample_times();
     let span = Span {
         t0: 0.0,
         y0,

@@ -19,13 +19,25 @@
 //! rtol = 1e-12
 //! atol = 1e-12
 //! max_steps = 10000000
+//! [contact]         # optional: the contact law, rolling without slipping by default
+//! law = "sliding"   # "rolling" (the default: the paper's system) or "sliding"
+//! friction = "viscous"      # optional with "sliding" (the only friction so far)
+//! mu = 0.3                  # with "sliding": F = -mu N v_P
 //! ```
+//!
+//! With `law = "sliding"`, `[initial]` may give `velocity = [x, y, z]`, the horizontal velocity
+//! of the centre of mass in the body frame (default: at rest); the case then holds the
+//! sliding ball and its initial state ([`Case::sliding`], see
+//! `routh_ball::contact::sliding`). Only [`Case::load_any_contact`] (`routh simulate`) reads
+//! such a case; every other way of reading a case refuses it, naming the command that can.
 //!
 //! `G` is optional (default 9.81). Unknown keys and tables anywhere (at the top level, in a
 //! table) and missing fields are errors that name the key, the table and the file.
 
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
+use crate::contact::sliding::{Sliding, DIM};
+use crate::contact::Contact;
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::simulate::Settings;
 use crate::state::{Normalise, State};
@@ -96,6 +108,67 @@ pub struct Case {
     pub integration: Settings,
     /// The whole document, for command-specific tables.
     pub document: toml::Table,
+    /// The sliding ball and its initial state, with `[contact] law = "sliding"`; `None` for
+    /// the rolling law (the default).
+    pub sliding: Option<SlidingStart>,
+}
+
+/// A sliding ball and its state at t = 0, validated ([`Sliding::initial`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlidingStart {
+    /// The ball and its friction.
+    pub model: Sliding,
+    /// The state `(gamma, omega, v, W)` at t = 0.
+    pub y0: [f64; DIM],
+}
+
+/// Which contact laws the command reading a case integrates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Laws {
+    /// The rolling law only: a case of another law is refused.
+    Rolling,
+    /// Every law of [`Contact`].
+    Any,
+}
+
+/// The table `[contact]` as written.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ContactTable {
+    #[serde(default = "rolling")]
+    law: String,
+    friction: Option<String>,
+    mu: Option<f64>,
+}
+
+fn rolling() -> String {
+    "rolling".into()
+}
+
+impl ContactTable {
+    /// The contact law of the table, validated ([`Contact::sliding`]).
+    fn contact(&self) -> std::result::Result<Contact, String> {
+        match (self.law.as_str(), &self.friction, self.mu) {
+            ("rolling", None, None) => Ok(Contact::Rolling),
+            ("rolling", _, _) => Err(
+                "in [contact]: `friction` and `mu` belong to law = \"sliding\"; \
+                                      the rolling law has no friction"
+                    .into(),
+            ),
+            ("sliding", friction, mu) => {
+                if let Some(other) = friction.as_deref().filter(|f| *f != "viscous") {
+                    return Err(format!(
+                        "in [contact]: unknown friction = \"{other}\"; known: \"viscous\""
+                    ));
+                }
+                let mu = mu.ok_or("in [contact]: law = \"sliding\" needs `mu`")?;
+                Contact::sliding(mu).map_err(|e| format!("in [contact]: {e}"))
+            }
+            (other, _, _) => Err(format!(
+                "in [contact]: unknown law = \"{other}\"; known: \"rolling\", \"sliding\""
+            )),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
@@ -133,10 +206,11 @@ struct InitialTable {
     m: Option<[f64; 3]>,
     #[serde(default)]
     normalize: bool,
+    velocity: Option<[f64; 3]>,
 }
 
 /// The tables this module owns.
-const OWN_TABLES: [&str; 3] = ["body", "initial", "integration"];
+const OWN_TABLES: [&str; 4] = ["body", "initial", "integration", "contact"];
 
 /// Top-level tables of the commands that read their own (by [`Case::extra_table`]); any
 /// other top-level key or table is refused.
@@ -148,16 +222,22 @@ impl Case {
         Self::parse(DEFAULT_CASE, "<built-in default>")
     }
 
-    /// Read and validate a case file.
+    /// Read and validate a case file of the rolling law (a case of another contact law is
+    /// refused: [`Case::load_any_contact`] reads those).
     pub fn from_file(path: &Path) -> Result<Self> {
+        Self::read_file(path, Laws::Rolling)
+    }
+
+    fn read_file(path: &Path, laws: Laws) -> Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| FileError::Case {
             file: path.display().to_string(),
             message: format!("cannot read: {e}"),
         })?;
-        Self::parse(&text, &path.display().to_string())
+        Self::parse_in(&text, &path.display().to_string(), laws)
     }
 
-    /// The case in `path`, or the built-in default when `None`.
+    /// The case in `path`, or the built-in default when `None` (the rolling law only, as
+    /// [`Case::from_file`]).
     pub fn load(path: Option<&Path>) -> Result<Self> {
         match path {
             Some(p) => Self::from_file(p),
@@ -165,32 +245,91 @@ impl Case {
         }
     }
 
-    /// Parse and validate case text; `source` names the file in error messages.
+    /// [`Case::load`] for a command that integrates every contact law (`routh simulate`): a
+    /// case with `[contact] law = "sliding"` is read, its [`Case::sliding`] set.
+    pub fn load_any_contact(path: Option<&Path>) -> Result<Self> {
+        match path {
+            Some(p) => Self::read_file(p, Laws::Any),
+            None => Self::default_case(),
+        }
+    }
+
+    /// Parse and validate case text of the rolling law; `source` names the file in error
+    /// messages.
     pub fn parse(text: &str, source: &str) -> Result<Self> {
+        Self::parse_in(text, source, Laws::Rolling)
+    }
+
+    /// [`Case::parse`] for every contact law (as [`Case::load_any_contact`]).
+    pub fn parse_any_contact(text: &str, source: &str) -> Result<Self> {
+        Self::parse_in(text, source, Laws::Any)
+    }
+
+    fn parse_in(text: &str, source: &str, laws: Laws) -> Result<Self> {
         let document: toml::Table = text.parse().map_err(|e: toml::de::Error| FileError::Case {
             file: source.to_string(),
             message: format!("malformed TOML: {e}"),
         })?;
-        Self::from_document(document, source)
+        Self::from_document_unlabelled(document, source, laws).map_err(|e| labelled(e, source))
     }
 
-    /// Validate a parsed case document (as [`Case::parse`] does with text); `source` names
-    /// the file in error messages.
+    /// Validate a parsed case document of the rolling law (as [`Case::parse`] does with
+    /// text); `source` names the file in error messages.
     pub fn from_document(document: toml::Table, source: &str) -> Result<Self> {
-        Self::from_document_unlabelled(document, source).map_err(|e| labelled(e, source))
+        Self::from_document_unlabelled(document, source, Laws::Rolling)
+            .map_err(|e| labelled(e, source))
     }
 
-    fn from_document_unlabelled(document: toml::Table, source: &str) -> Result<Self> {
+    fn from_document_unlabelled(document: toml::Table, source: &str, laws: Laws) -> Result<Self> {
         let values = CaseValues::read(&document, source)?;
         let ball = values.ball(source)?;
         let initial = values.state(&ball, source)?;
         let integration = values.integration.settings()?;
+        let err = |message: String| FileError::Case {
+            file: source.to_string(),
+            message,
+        };
+        let contact = match document.get("contact") {
+            None => Contact::Rolling,
+            Some(_) => table::<ContactTable>(&document, "contact")
+                .and_then(|t| t.contact())
+                .map_err(err)?,
+        };
+        let velocity = values.initial.velocity;
+        let sliding = match contact {
+            Contact::Rolling if velocity.is_some() => {
+                return Err(err("in [initial]: `velocity` belongs to a sliding contact \
+                                ([contact] law = \"sliding\"); a rolling ball's velocity \
+                                follows from omega"
+                    .into())
+                .into());
+            }
+            Contact::Rolling => None,
+            Contact::Sliding { .. } if laws == Laws::Rolling => {
+                return Err(err("[contact] law = \"sliding\" is integrated by `routh \
+                                simulate` only (so far); this command integrates the rolling \
+                                law"
+                .into())
+                .into());
+            }
+            Contact::Sliding { mu, .. } => {
+                let model = Sliding::new(&ball, mu)?;
+                let y0 = model.initial(
+                    initial.gamma,
+                    initial.omega(&ball),
+                    velocity.unwrap_or([0.0; 3]),
+                    Normalise::Reject,
+                )?;
+                Some(SlidingStart { model, y0 })
+            }
+        };
         Ok(Case {
             source: source.to_string(),
             ball,
             initial,
             integration,
             document,
+            sliding,
         })
     }
 

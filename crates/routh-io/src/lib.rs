@@ -29,7 +29,7 @@ pub mod table;
 pub use error::{AppError, AppResult, FileError};
 
 pub(crate) use routh_ball::{
-    ball, body, integrals, motion, problem, range, simulate, state, Result,
+    ball, body, contact, integrals, motion, problem, range, simulate, state, Result,
 };
 pub(crate) use routh_integrate::{self as integrate, batch, sampling};
 pub(crate) use routh_sphere::quadrature;

@@ -4,7 +4,8 @@
 //! reads as NaN). The plots and the animation draw from a [`Table`].
 
 use crate::ball::Ball;
-use crate::case::Case;
+use crate::case::{Case, SlidingStart};
+use crate::contact::sliding::{run as run_sliding, SlidingSummary, DIM};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
 use crate::integrate::{Method, OdeSystem};
@@ -265,6 +266,30 @@ pub fn simulate_samples(
         let system = ReducedSystem(ball);
         samples(ball, &system, case.initial.to_array(), settings, on_row)
     }
+}
+
+/// Simulate the sliding ball `start` (`[contact] law = "sliding"`) with `settings` and hand the
+/// cells of each dense sample to `on_row`, in the columns of
+/// [`OBSERVATION_NAMES`](crate::contact::sliding::OBSERVATION_NAMES) (the state, the height of
+/// the centre of mass, the slip speed, the normal force, Jellett's integral, the energy and the
+/// work of friction): the samples of `routh simulate` for that contact. Returns the run's
+/// summary.
+pub fn sliding_samples(
+    start: &SlidingStart,
+    settings: &Settings,
+    on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
+) -> Result<SlidingSummary> {
+    let model = &start.model;
+    let mut on_sample = |t: f64, y: &[f64; DIM]| {
+        let cells: Vec<Cell> = model
+            .observe(t, y)
+            .values()
+            .into_iter()
+            .map(|v| Cell::Float(Some(v)))
+            .collect();
+        on_row(&cells)
+    };
+    run_sliding(model, start.y0, settings, &mut on_sample)
 }
 
 /// Simulate `case` with the full motion (`method` at the case's tolerances) and tabulate

@@ -43,8 +43,8 @@ pub use routh_integrate as integrate;
 pub use routh_integrate::{batch, differential, sampling, scalar};
 
 pub use routh_ball::{
-    auto, ball, body, error, families, field, integrals, kernels, motion, problem, projection,
-    range, simulate, state, units,
+    auto, ball, body, contact, error, families, field, integrals, kernels, motion, problem,
+    projection, range, simulate, state, units,
 };
 pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
 

@@ -2,13 +2,14 @@
 //! dense-output samples to CSV.
 
 use super::{Readable, ReportStream};
-use routh::case::Case;
+use routh::case::{Case, SlidingStart};
+use routh::contact::sliding::{SlidingSummary, OBSERVATION_NAMES};
 use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
-use routh::row::csv_line;
+use routh::row::{csv_line, Cell};
 use routh::simulate::{Settings, SettingsBuilder, Summary};
-use routh::table::{sample_columns, simulate_samples};
+use routh::table::{sample_columns, simulate_samples, sliding_samples};
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
 
@@ -163,7 +164,7 @@ fn csv_destination(args: &Args) -> Option<PathBuf> {
 
 /// Run the command.
 pub fn run_command(args: Args) -> Result<()> {
-    let case = Case::load(args.case.as_deref())?;
+    let case = Case::load_any_contact(args.case.as_deref())?;
     let out = csv_destination(&args);
     let samples = match (args.samples, &out) {
         (Some(n), _) if n < 2 => {
@@ -180,50 +181,133 @@ pub fn run_command(args: Args) -> Result<()> {
     };
     let settings = settings(&case, &args, samples)?;
     let stream = ReportStream::beside([out.as_deref()]);
-    let summary = execute(&case, out.as_deref(), &settings, args.full)?;
+    if let Some(start) = &case.sliding {
+        if args.full {
+            return Err(RouthError::Option {
+                name: "full",
+                value: "true".into(),
+                rule: "is not available for [contact] law = \"sliding\" (so far)",
+            }
+            .into());
+        }
+        let summary = execute(out.as_deref(), &OBSERVATION_NAMES, |on_row| {
+            sliding_samples(start, &settings, on_row)
+        })?;
+        return stream.print(&summary, args.json, |s| {
+            sliding_text(&case, start, s, out.as_deref())
+        });
+    }
+    let full = args.full;
+    let summary = execute(out.as_deref(), &sample_columns(full), |on_row| {
+        simulate_samples(&case, &settings, full, on_row)
+    })?;
     stream.print(&summary, args.json, |s| {
         summary_text(&case, s, out.as_deref())
     })
 }
 
-/// Run the simulation (of the full motion when `full`), writing the CSV of its samples
-/// ([`routh::table::sample_columns`]) to `out` when given.
-fn execute(case: &Case, out: Option<&Path>, settings: &Settings, full: bool) -> Result<Summary> {
+/// The receiver of the cells of each sample of a run.
+type OnRow<'a> = &'a mut dyn FnMut(&[Cell]) -> Result<()>;
+
+/// Run `simulation`, which hands the cells of each sample to its argument, writing them as
+/// CSV under the header `columns` to `out` when given (whole or not at all).
+fn execute<S>(
+    out: Option<&Path>,
+    columns: &[&str],
+    simulation: impl FnOnce(OnRow<'_>) -> Result<S>,
+) -> Result<S> {
     let Some(path) = out else {
-        return simulate_samples(case, settings, full, &mut |_| Ok(()));
+        return simulation(&mut |_| Ok(()));
     };
     let mut summary = None;
     write_atomic(path, |w| {
         let io = AppError::io(path);
-        writeln!(w, "{}", sample_columns(full).join(",")).map_err(&io)?;
-        let mut on_row =
-            |cells: &[routh::row::Cell]| writeln!(w, "{}", csv_line(cells)).map_err(&io);
-        summary = Some(simulate_samples(case, settings, full, &mut on_row)?);
+        writeln!(w, "{}", columns.join(",")).map_err(&io)?;
+        let mut on_row = |cells: &[Cell]| writeln!(w, "{}", csv_line(cells)).map_err(&io);
+        summary = Some(simulation(&mut on_row)?);
         Ok(())
     })?;
     Ok(summary.expect("the run returned a summary"))
 }
 
-/// The summary as lines of text.
-fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
+/// Where the samples went, as the last line of a summary.
+fn samples_line(text: &mut String, out: Option<&Path>) {
+    use std::fmt::Write;
+    let _ = match out {
+        Some(path) if path == Path::new("-") => {
+            writeln!(text, "  samples written to standard output")
+        }
+        Some(path) => writeln!(text, "  samples written to {}", path.display()),
+        None => Ok(()),
+    };
+}
+
+/// The summary of a sliding run as lines of text.
+fn sliding_text(
+    case: &Case,
+    start: &SlidingStart,
+    s: &SlidingSummary,
+    out: Option<&Path>,
+) -> String {
     use std::fmt::Write;
     let mut text = String::new();
+    let _ = writeln!(text, "routh simulate: {}", case.source);
+    let _ = writeln!(text, "{}", body_line(case));
+    let _ = writeln!(
+        text,
+        "  contact  sliding, viscous friction F = -mu N v_P, mu = {}",
+        Readable(start.model.mu())
+    );
+    let _ = writeln!(text, "  method   {}", s.method);
+    let _ = writeln!(text, "  end      {}: {}", s.status, s.message);
+    let _ = writeln!(
+        text,
+        "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
+        s.steps, s.rejected, s.rhs_evals, s.elapsed_s
+    );
+    let (a, b) = (&s.initial_state, &s.final_state);
+    let _ = writeln!(text, "                    initial                 final");
+    for (name, x, y) in [
+        ("height", a.height, b.height),
+        ("slip speed", a.slip_speed, b.slip_speed),
+        ("normal force", a.normal_force, b.normal_force),
+        ("Jellett (L, r)", a.jellett, b.jellett),
+        ("H1", a.energy, b.energy),
+        ("friction work", a.work, b.work),
+    ] {
+        let _ = writeln!(text, "  {name:<15} {x:>22.15e}  {y:>22.15e}");
+    }
+    let balance = &s.balance;
+    let jellett = match balance.jellett {
+        Some(d) => format!("{d:.3e}"),
+        None => "- (not an integral: I1 != I2 or com off the axis)".into(),
+    };
+    let _ = writeln!(text, "  Jellett max relative drift       {jellett}");
+    let _ = writeln!(
+        text,
+        "  H1 + work max relative drift     {:.3e}",
+        balance.energy_balance
+    );
+    let _ = writeln!(
+        text,
+        "  height range                     [{}, {}]",
+        balance.height_range[0], balance.height_range[1]
+    );
+    samples_line(&mut text, out);
+    text
+}
+
+/// The body, as a line of a summary.
+fn body_line(case: &Case) -> String {
     let b = &case.ball;
     let [i1, i2, i3] = b.inertia();
-    let projected = match (s.projected, s.project_every) {
-        (false, _) => String::new(),
-        (true, 1) => " with projection onto the integrals".to_string(),
-        (true, n) => format!(" with projection onto the integrals every {n} steps"),
-    };
-    let _ = writeln!(text, "routh simulate: {}", case.source);
     // The offset a of a Routh sphere, else the centre of mass.
     let centre = if b.is_axial() {
         format!("a = {}", Readable(-b.com()[2]))
     } else {
         format!("com = {:?}", b.com())
     };
-    let _ = writeln!(
-        text,
+    format!(
         "  body     m = {}, R = {}, {centre}, I = ({}, {}, {}), G = {}",
         Readable(b.m()),
         Readable(b.radius()),
@@ -231,7 +315,20 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
         Readable(i2),
         Readable(i3),
         Readable(b.gravity())
-    );
+    )
+}
+
+/// The summary as lines of text.
+fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
+    use std::fmt::Write;
+    let mut text = String::new();
+    let projected = match (s.projected, s.project_every) {
+        (false, _) => String::new(),
+        (true, 1) => " with projection onto the integrals".to_string(),
+        (true, n) => format!(" with projection onto the integrals every {n} steps"),
+    };
+    let _ = writeln!(text, "routh simulate: {}", case.source);
+    let _ = writeln!(text, "{}", body_line(case));
     let _ = writeln!(text, "  method   {}{projected}", s.method);
     let _ = writeln!(text, "  t_end    {}", s.t_end);
     let _ = writeln!(
@@ -258,12 +355,6 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
             ),
         };
     }
-    let _ = match out {
-        Some(path) if path == Path::new("-") => {
-            writeln!(text, "  samples written to standard output")
-        }
-        Some(path) => writeln!(text, "  samples written to {}", path.display()),
-        None => Ok(()),
-    };
+    samples_line(&mut text, out);
     text
 }

@@ -6,6 +6,7 @@ mod common;
 
 mod bounds;
 mod cli;
+mod contact;
 mod exact_scaling;
 mod messages;
 mod reliability;

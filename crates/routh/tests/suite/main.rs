@@ -7,6 +7,7 @@ mod properties;
 #[path = "../support/exact_sweep.rs"]
 mod sweep_cases;
 
+mod contact;
 mod geometry;
 mod integrators;
 mod model;
