@@ -193,9 +193,37 @@ done
 try csv ok plot --csv "$DIR/good.csv" --out "$DIR/plots"
 try csv ok animate --csv "$DIR/good.csv" --out "$DIR/plots"
 
+# The newer commands and the contact law (issues 35, 36, 37): sections, spectra, the explorer
+# page, and case files of the sliding ball.
+for args in "--surface gamma7=0" "--surface gamma1" "--surface gamma1=nan" "--surface =0" \
+            "--surface gamma1=0 --direction sideways" "--surface gamma1=0 --initial 0" \
+            "--surface gamma1=0 --method taylor" "--surface gamma1=0 --t-end -1" \
+            "--surface gamma1=0 --axes gamma3" "--surface gamma1=0 --rtol 1"; do
+  try new refused section $args --out "$DIR/sec"
+done
+try new ok section --surface "gamma1 = 0" --t-end 5 --initial 3 --out "$DIR/sec" --json
+for args in "--t-end 0" "--t-end nan" "--transient -1" "--interval 0" "--method taylor" "--rtol 1e-20"; do
+  try new refused lyapunov $args
+done
+try new ok lyapunov --t-end 5 --json
+try new ok explore --out "$DIR/page" --json
+# A directory of figures or pages that does not exist is made, as `plot` and `animate` do.
+try new ok explore --out "$DIR/no/such/dir" --json
+try new ok section --surface "gamma1 = 0" --t-end 5 --initial 3 --out "$DIR/no/such/dir" --json
+try new refused explore --out ""
+TIPPE=cases/tippe_top.toml
+tippe() { sed "s|$1|$2|" "$TIPPE" > "$DIR/t.toml"; echo "$DIR/t.toml"; }
+for kv in "mu = 0.3|mu = -1" "mu = 0.3|mu = nan" "mu = 0.3|mu = inf" "law = \"sliding\"|law = \"glue\"" \
+          "friction = \"viscous\"|friction = \"honey\"" "velocity = \[0.0, 0.0, 0.0\]|velocity = [0.0, 0.0, 1.0]" \
+          "velocity = \[0.0, 0.0, 0.0\]|velocity = [nan, 0.0, 0.0]" "mu = 0.3|mu = 0.3\nstiffness = 2"; do
+  try new refused simulate --case "$(tippe "${kv%%|*}" "${kv##*|}")" --t-end 1
+done
+try new ok simulate --case "$TIPPE" --t-end 1 --json
+for cmd in exact steady sweep lyapunov; do try new refused $cmd --case "$TIPPE"; done
+
 printf '| class | tried | refused (exit 2, message) | ok (exit 0, no NaN) | wrong |\n|---|---|---|---|---|\n'
 total=0
-for class in body state schema optional options output csv sizes signals; do
+for class in body state schema optional options output csv sizes signals new; do
   r=${REFUSED[$class]:-0}; o=${OK[$class]:-0}; w=${WRONG[$class]:-0}
   total=$((total + r + o + w))
   printf '| %s | %d | %d | %d | %d |\n' "$class" $((r + o + w)) "$r" "$o" "$w"
