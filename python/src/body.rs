@@ -187,7 +187,7 @@ macro_rules! rolling_methods {
             ) -> PyResult<Bound<'py, PyAny>> {
                 let inner = self.inner;
                 $crate::body::map_points(py, x, unit_tolerance, |p| {
-                    routh_core::state::State::from_array(p).omega(&inner)
+                    routh_core::state::Point::from_array(p).omega(&inner)
                 })
             }
         }

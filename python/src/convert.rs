@@ -152,10 +152,8 @@ pub fn states<const N: usize>(
 }
 
 /// A phase-space point `(gamma, M)` checked as the library checks states: finite, |gamma| = 1.
-pub fn phase_point(name: &str, x: &[f64; 6]) -> PyResult<[f64; 6]> {
-    State::new([x[0], x[1], x[2]], [x[3], x[4], x[5]], Normalise::Reject)
-        .map(|s| s.to_array())
-        .map_err(|e| bad_argument(name, e))
+pub fn phase_point(name: &str, x: &[f64; 6]) -> PyResult<State> {
+    State::of_array(x, Normalise::Reject).map_err(|e| bad_argument(name, e))
 }
 
 /// Times: a number or a 1-D array, all finite. Returns them and whether a number was given.

@@ -24,7 +24,7 @@ const CHUNK: usize = 1 << 16;
 /// `body` and `x0`).
 #[pyclass(name = "ExactSolution", module = "routh", frozen)]
 pub struct PyExact {
-    x0: [f64; 6],
+    x0: State,
     inner: ExactSolution,
 }
 
@@ -35,7 +35,7 @@ impl PyExact {
         let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?;
         let body = body.inner;
         let inner = py
-            .detach(|| ExactSolution::new(&body, &State::from_array(&x0)))
+            .detach(|| ExactSolution::new(&body, &x0))
             .map_err(python_error)?;
         Ok(PyExact { x0, inner })
     }
@@ -49,7 +49,7 @@ impl PyExact {
             PyBody {
                 inner: e.inner.body,
             },
-            e.x0.to_vec(),
+            e.x0.to_array().to_vec(),
         );
         Ok((slf.get_type().into_any(), args.into_pyobject(slf.py())?))
     }
@@ -77,7 +77,7 @@ impl PyExact {
     /// The initial state.
     #[getter]
     fn x0<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.x0)
+        PyArray1::from_slice(py, &self.x0.to_array())
     }
 
     /// `"steady"` (constant tilt, a double root of Q, or the vertical spin) or `"nutation"`.

@@ -39,7 +39,7 @@ impl PyFlow {
         condition: &str,
         alpha: f64,
     ) -> PyResult<Self> {
-        let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?;
+        let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?.to_array();
         let field: Field = flow.parse().map_err(|e| bad_argument("flow", e))?;
         let condition: Condition = condition
             .parse()

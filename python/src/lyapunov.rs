@@ -32,7 +32,7 @@ pub fn lyapunov<'py>(
     atol: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let body = Rolling::extract("body", body)?;
-    let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?;
+    let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?.to_array();
     let method: Method = method
         .parse()
         .map_err(|e: ParseMethodError| PyValueError::new_err(e.to_string()))?;

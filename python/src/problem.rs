@@ -219,7 +219,7 @@ fn read_events(py: Python<'_>, events: Option<&Bound<'_, PyAny>>) -> PyResult<Ve
 #[pyclass(name = "Problem", module = "routh", frozen)]
 pub struct PyProblem {
     body: Rolling,
-    x0: [f64; 6],
+    x0: State,
     t_span: (f64, f64),
     /// The method, the tolerances and the projection (t_end the length of `t_span`),
     /// validated when the problem was made.
@@ -428,7 +428,7 @@ impl PyProblem {
             .map_err(python_error)?;
         Ok(PyProblem {
             body: Rolling::of_case(&case, "a Python Problem"),
-            x0: case.initial.to_array(),
+            x0: case.initial,
             t_span: (0.0, i.t_end()),
             settings,
             full,
@@ -444,7 +444,7 @@ impl PyProblem {
     /// The initial state `(gamma, M)`.
     #[getter]
     fn x0<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.x0)
+        PyArray1::from_slice(py, &self.x0.to_array())
     }
 
     /// The time span `(t0, t1)`.
@@ -498,7 +498,7 @@ impl PyProblem {
         let py = slf.py();
         let args = (
             p.body.to_object(py)?,
-            p.x0.to_vec(),
+            p.x0.to_array().to_vec(),
             p.t_span,
             p.settings.rtol(),
             p.settings.atol(),
@@ -514,7 +514,7 @@ impl PyProblem {
         format!(
             "Problem(body={}, x0={:?}, t_span={:?}, rtol={:?}, atol={:?}, method={:?}, project={}, full={}, project_every={})",
             self.body.repr(),
-            self.x0,
+            self.x0.to_array(),
             self.t_span,
             self.settings.rtol(),
             self.settings.atol(),
@@ -545,7 +545,7 @@ impl PyProblem {
         };
         let body = self.body.ball();
         if self.full {
-            let y0 = initial_full(&State::from_array(&self.x0));
+            let y0 = initial_full(&self.x0);
             self.solve_with(
                 py,
                 &FullMotion { body: &body },
@@ -559,7 +559,7 @@ impl PyProblem {
             self.solve_with(
                 py,
                 &ReducedSystem(&body),
-                self.x0,
+                self.x0.to_array(),
                 out,
                 use_steps,
                 &events,

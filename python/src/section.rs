@@ -38,7 +38,7 @@ pub fn section<'py>(
     atol: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let ball = Rolling::extract("body", body)?.ball();
-    let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?;
+    let x0 = phase_point("x0", &vector::<6>("x0", x0)?)?.to_array();
     let crossing = parse_surface(surface, "surface").map_err(python_error)?;
     let direction = parse_direction(direction, "direction").map_err(python_error)?;
     let method: Method = method

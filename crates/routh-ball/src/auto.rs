@@ -7,7 +7,7 @@ use crate::integrate::Method;
 
 /// What `auto` picks: `(tol_min, method)` rows, the first with `tol >= tol_min` wins.
 ///
-/// From the work–precision benchmark (BENCHMARKS.md, section "Work-precision", run of
+/// From the work–precision benchmark (docs/benchmarks-history.md, section "Work-precision", run of
 /// 2026-11-24 09:59 UTC, three cases to t = 1000, plain integration): at each tolerance, the
 /// method that reaches the error the other reaches there in less time. At tol 1e-12 and below
 /// the Taylor method is both faster and 7 to 20x more accurate than Vern9 (default: 12.2 ms

@@ -461,7 +461,7 @@ impl Ball {
     /// component one product and one quotient: on the Routh sphere's tape 14 products and
     /// quotients of series in 12 convolutions (`r_1^2 + r_2^2` and `r_1 M_1 + r_2 M_2` fused
     /// in pairs), against 17 in 15 for the quotients of `(r, A^{-1} r)` and `(r, A^{-1} M)` by
-    /// each group's `A_G` (the form before, BENCHMARKS.md, "Omega by the determinant"). In `f64` its
+    /// each group's `A_G` (the form before, docs/benchmarks-history.md, "Omega by the determinant"). In `f64` its
     /// divisions cost more than the cofactors' one, hence two forms ([`crate::field`]); they
     /// agree to round-off (`tests/field_identities.rs`).
     ///

@@ -34,7 +34,7 @@
 //! round-off only (`tests/field_identities.rs` compares them, values and dual-number
 //! Jacobians). The short form has fewer operations: the Taylor method's tape of the default
 //! case has 42 instead of 56, 32 instead of 40 of them products (its steps 16 % cheaper); in
-//! the `f64` code the latency is unchanged (BENCHMARKS.md, "The field by exact identities").
+//! the `f64` code the latency is unchanged (docs/benchmarks-history.md, "The field by exact identities").
 //!
 //! # Omega in two forms
 //!
@@ -43,7 +43,7 @@
 //! by the coupling `q = N / D` of Sherman-Morrison as two polynomials in `m r^2` and a quotient
 //! by each `I_i + m r^2` ([`Ball::angular_velocity_by_determinant`], for the Taylor method's
 //! tape, where a quotient of series costs one convolution as a product does). The tape of the
-//! default case then has 29 convolutions instead of 44 (BENCHMARKS.md, "Omega by quotients"
+//! default case then has 29 convolutions instead of 44 (docs/benchmarks-history.md, "Omega by quotients"
 //! and "Omega by the determinant"; DOP853 keeps the cofactors, with which it is 12 % faster one
 //! run at a time: "Omega by reciprocals"). The two agree to round-off, values and Jacobians
 //! (`tests/field_identities.rs`); each integrator's numbers are those of its own form, bit for

@@ -40,4 +40,4 @@ pub(crate) use routh_integrate::{self as integrate, batch, differential, scalar}
 pub use ball::{AsBall, Ball, Model};
 pub use body::Body;
 pub use error::{Result, RouthError};
-pub use state::State;
+pub use state::{Point, State};

@@ -35,7 +35,7 @@ use crate::body::Body;
 use crate::field::vector_field;
 use crate::integrate::{OdeSystem, RunUnits};
 use crate::scalar::cross;
-use crate::state::State;
+use crate::state::{Point, State};
 use crate::units::Units;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
@@ -81,7 +81,7 @@ impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
     fn rhs(&self, _t: f64, y: &[f64; FULL_DIM]) -> [f64; FULL_DIM] {
         let x: [f64; 6] = std::array::from_fn(|i| y[i]);
         let reduced = vector_field(self.body, &x);
-        let state = State::from_array(&x);
+        let state = Point::from_array(&x);
         let omega = state.omega(self.body);
         let q = quaternion(y);
         let k = QUATERNION_RESTORING_FRACTION / Units::of(self.body, &omega).binary().time();
@@ -144,7 +144,7 @@ pub fn orientation_for(gamma: &[f64; 3]) -> UnitQuaternion<f64> {
 /// The extended initial state of a reduced state: the orientation of [`orientation_for`]
 /// and the centre of mass above the origin of the plane.
 pub fn initial_full(state: &State) -> [f64; FULL_DIM] {
-    let q = orientation_for(&state.gamma);
+    let q = orientation_for(&state.gamma());
     let mut y = [0.0; FULL_DIM];
     y[..6].copy_from_slice(&state.to_array());
     y[6..10].copy_from_slice(&[q.w, q.i, q.j, q.k]);

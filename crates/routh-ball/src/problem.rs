@@ -6,21 +6,52 @@
 //! thousands of them can be built, sent to threads and written out.
 
 use crate::ball::Ball;
-use crate::error::{Result, RouthError};
+use crate::error::{Number, Result, RouthError};
 use crate::integrate::{Stats, Stepper, Stop};
 use crate::simulate::{integrate_observed, Drift, ReducedSystem, Settings};
-use crate::state::State;
+use crate::state::{Point, State};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-/// An event: the run stops where the component `component` of `x = (gamma, M)` crosses
-/// `value` (a sign change of `x[component] - value`, located on the dense output).
+/// A plane `x[component] = value` of the reduced phase space `x = (gamma, M)`: the event of
+/// a [`Problem`] (the run stops at the first sign change of `x[component] - value`, located
+/// on the dense output) and the surface of a Poincaré section ([`crate::section`]). Validated
+/// when built ([`Plane::new`]): its fields are private, so no plane names a component outside
+/// (gamma, M) or a level that is not finite.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Crossing {
-    /// Index into `x = (gamma1, gamma2, gamma3, M1, M2, M3)`, 0 to 5.
-    pub component: usize,
+pub struct Plane {
+    component: usize,
+    value: f64,
+}
+
+impl Plane {
+    /// The plane `x[component] = value`: `component` 0 to 5 (gamma1, gamma2, gamma3, M1, M2,
+    /// M3), `value` finite, else [`RouthError::Option`] naming the plane.
+    pub fn new(component: usize, value: f64) -> Result<Self> {
+        if component > 5 || !value.is_finite() {
+            return Err(RouthError::Option {
+                name: "plane",
+                value: format!("x[{component}] = {}", Number(value)),
+                rule: "must be a component 0 to 5 of (gamma, M) equal to a finite number",
+            });
+        }
+        Ok(Plane { component, value })
+    }
+
+    /// The index into `x = (gamma1, gamma2, gamma3, M1, M2, M3)`, 0 to 5.
+    pub fn component(&self) -> usize {
+        self.component
+    }
+
     /// The level crossed.
-    pub value: f64,
+    pub fn value(&self) -> f64 {
+        self.value
+    }
+
+    /// `x[component] - value`: the function whose sign changes where a run crosses the plane.
+    pub fn level(&self, x: &[f64; 6]) -> f64 {
+        x[self.component] - self.value
+    }
 }
 
 /// A problem: integrate the field (mg-eq) of `ball` from `initial` over `[0, settings.t_end()]`.
@@ -33,7 +64,7 @@ pub struct Problem {
     /// Method, tolerances, time span, projection, samples.
     pub settings: Settings,
     /// Stop at the first crossing, if given.
-    pub event: Option<Crossing>,
+    pub event: Option<Plane>,
 }
 
 /// How a run ended, as its user sees it: the one status of a [`Solution`], a row of the
@@ -65,7 +96,7 @@ pub struct Sample {
     /// The time.
     pub t: f64,
     /// The state there.
-    pub state: State,
+    pub state: Point,
 }
 
 /// The solution of a [`Problem`].
@@ -80,7 +111,7 @@ pub struct Solution {
     /// The samples of the settings (equally spaced on [0, t_end], both ends included).
     pub samples: Vec<Sample>,
     /// The state at the end.
-    pub final_state: State,
+    pub final_state: Point,
     /// Work counters.
     pub stats: Stats,
     /// The integrals of the ball's model and their drift over step ends and samples.
@@ -202,18 +233,9 @@ impl Problem {
     }
 
     fn run(&self, mut dense: Option<&mut DenseSolution>) -> Result<Solution> {
-        if let Some(c) = self.event {
-            if c.component >= 6 || !c.value.is_finite() {
-                return Err(RouthError::Option {
-                    name: "event",
-                    value: format!("{c:?}"),
-                    rule: "component must be 0 to 5 and value finite",
-                });
-            }
-        }
         let event = self
             .event
-            .map(|c| move |_: f64, x: &[f64; 6]| x[c.component] - c.value);
+            .map(|plane| move |_: f64, x: &[f64; 6]| plane.level(x));
         let event_ref = event.as_ref().map(|g| g as &dyn Fn(f64, &[f64; 6]) -> f64);
         let mut samples = Vec::new();
         let run = integrate_observed::<_, RouthError, 6>(
@@ -225,7 +247,7 @@ impl Problem {
             &mut |t, x| {
                 samples.push(Sample {
                     t,
-                    state: State::from_array(x),
+                    state: Point::from_array(x),
                 });
                 Ok(())
             },
@@ -242,7 +264,7 @@ impl Problem {
                 format!("the event was found at t = {}", run.t),
                 vec![Sample {
                     t: run.t,
-                    state: State::from_array(&run.y),
+                    state: Point::from_array(&run.y),
                 }],
             ),
             Stop::Reached | Stop::Stopped => (

@@ -103,7 +103,7 @@ pub fn check_state(body: &impl AsBall, state: &State) -> Result<()> {
     let body = &body.ball();
     let omega = state.omega(body);
     let spin = norm(&omega);
-    let momentum = norm(&state.m);
+    let momentum = norm(&state.m());
     let cause = || {
         if spin.is_finite() {
             format!("the spin |omega| = {spin:.3e}")
@@ -124,7 +124,7 @@ pub fn check_state(body: &impl AsBall, state: &State) -> Result<()> {
     // The same state turning at a unit spin: an integral that overflows there too does so
     // because of the body's size (H2 grows as the square of its inertia), not of the spin.
     let at_unit_spin = (spin > 0.0).then(|| {
-        let m = state.m.map(|c| c / spin);
+        let m = state.m().map(|c| c / spin);
         Integrals::at(body, &[x[0], x[1], x[2], m[0], m[1], m[2]]).values()
     });
     for (i, (name, value)) in crate::integrals::INTEGRAL_NAMES

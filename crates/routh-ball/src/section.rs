@@ -9,11 +9,11 @@
 //! report says how well each crossing lies on both.
 
 use crate::ball::AsBall;
-use crate::error::{Number, Result, RouthError};
+use crate::error::{Result, RouthError};
 use crate::integrals::energy;
 use crate::integrate::section::{section, Point, Surface};
 use crate::integrate::{Direction, Method, Options, Stats};
-use crate::problem::Crossing;
+use crate::problem::Plane;
 use crate::simulate::{ReducedSystem, Settings};
 use crate::state::{Normalise, State};
 use crate::units::Units;
@@ -41,7 +41,7 @@ pub fn energy_family(ball: &impl AsBall, x0: &[f64; 6], count: usize) -> Result<
             rule: "must be from 1 to 10000",
         });
     }
-    let start = State::from_array(x0);
+    let start = crate::state::Point::from_array(x0);
     let level = energy(ball, x0);
     let omega = start.omega(ball);
     let [g1, g2, g3] = start.gamma;
@@ -60,11 +60,7 @@ pub fn energy_family(ball: &impl AsBall, x0: &[f64; 6], count: usize) -> Result<
             theta.cos(),
         ];
         let spun = State::from_omega(ball, gamma, omega, Normalise::Rescale)?.to_array();
-        let at_rest = State {
-            gamma: [spun[0], spun[1], spun[2]],
-            m: [0.0; 3],
-        }
-        .to_array();
+        let at_rest = [spun[0], spun[1], spun[2], 0.0, 0.0, 0.0];
         let potential = energy(ball, &at_rest);
         let kinetic = energy(ball, &spun) - potential;
         let s = ((level - potential) / kinetic).sqrt();
@@ -101,16 +97,16 @@ pub struct BallSection {
 }
 
 /// The crossings of the runs of `ball` from each of `starts` (the first one's energy the
-/// level) with the plane `crossing` in `direction`, over `[0, settings.t_end()]` with the
+/// level) with the `plane` in `direction`, over `[0, settings.t_end()]` with the
 /// method, tolerances and step limit of `settings` (its samples and projection not used).
-/// Refused by name ([`RouthError::Option`]): no initial state, a component outside 0 to 5 or a
-/// value that is not finite, a method other than DOP853, Vern9 or RK4 (the Taylor method and
+/// Refused by name ([`RouthError::Option`]): no initial state, a method other than DOP853,
+/// Vern9 or RK4 (the Taylor method and
 /// `auto`: the section runs the field as written, not its recorded tape).
 pub fn ball_section(
     ball: &impl AsBall,
     starts: &[[f64; 6]],
     settings: &Settings,
-    crossing: &Crossing,
+    plane: &Plane,
     direction: Direction,
 ) -> Result<BallSection> {
     let Some(first) = starts.first() else {
@@ -120,13 +116,6 @@ pub fn ball_section(
             rule: "a section needs one initial state at least",
         });
     };
-    if crossing.component > 5 || !crossing.value.is_finite() {
-        return Err(RouthError::Option {
-            name: "surface",
-            value: format!("x[{}] = {}", crossing.component, Number(crossing.value)),
-            rule: "must be a component 0 to 5 of (gamma, M) equal to a finite number",
-        });
-    }
     if !matches!(
         settings.method(),
         Method::Dop853 | Method::Vern9 | Method::Rk4 { .. }
@@ -139,8 +128,8 @@ pub fn ball_section(
     }
     let opts =
         Options::new(settings.rtol(), settings.atol())?.with_max_steps(settings.max_steps())?;
-    let (i, c) = (crossing.component, crossing.value);
-    let g = move |x: &[f64; 6]| x[i] - c;
+    let plane = *plane;
+    let g = move |x: &[f64; 6]| plane.level(x);
     let surface = Surface { g: &g, direction };
     let found = section(
         &ReducedSystem(ball),
@@ -155,7 +144,7 @@ pub fn ball_section(
     Ok(BallSection {
         max_energy_drift: largest(&|p| ((energy(ball, &p.y) - level) / level).abs()),
         max_surface_value: largest(&|p| g(&p.y).abs()),
-        surface_unit: Units::of_reduced(ball, first).components[i],
+        surface_unit: Units::of_reduced(ball, first).components[plane.component()],
         energy: level,
         points: found.points,
         stats: found.stats,

@@ -12,7 +12,7 @@ use crate::integrate::{
     Projection, Stepper, Stop,
 };
 use crate::projection::LevelSet;
-use crate::state::State;
+use crate::state::Point;
 use crate::units::Units;
 use serde::Serialize;
 use std::cell::RefCell;
@@ -256,9 +256,9 @@ pub struct Summary {
     /// Projected after every how many steps ([`Settings::project_every`]).
     pub project_every: usize,
     /// The initial state.
-    pub initial_state: State,
-    /// The state at t_end.
-    pub final_state: State,
+    pub initial_state: Point,
+    /// The state reached at t_end (or where the run ended).
+    pub final_state: Point,
     /// Drift of each integral of the ball's model, by name (H1, H2, H3, H4, K, MM, Mgamma;
     /// see [`Integrals`]).
     pub integrals: std::collections::BTreeMap<&'static str, Drift>,
@@ -649,8 +649,8 @@ pub fn integrate_span<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
             rhs_evals: stats.rhs_evals,
             projected: settings.project,
             project_every: settings.project_every,
-            initial_state: State::from_array(&x0),
-            final_state: State::from_array(&reduced(&outcome.y)),
+            initial_state: Point::from_array(&x0),
+            final_state: Point::from_array(&reduced(&outcome.y)),
             integrals: drift.report(),
             elapsed_s: start.seconds(),
         },

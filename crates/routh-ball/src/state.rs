@@ -7,15 +7,75 @@ use serde::Serialize;
 /// How far from 1 the length of gamma may be before it is rejected (unless normalised).
 pub const UNIT_TOLERANCE: f64 = 1e-12;
 
-/// A state of the reduced system: the unit normal `gamma` (pointing into the plane, body
-/// frame) and the angular momentum `M` about the contact point (body frame).
+/// A state of the reduced system, validated when it is built: the unit normal `gamma`
+/// (pointing into the plane, body frame) and the angular momentum `M` about the contact point
+/// (body frame), all finite, |gamma| = 1 within [`UNIT_TOLERANCE`]. Its fields are private,
+/// so that no `State` breaks these rules: it is what a run, a quadrature or a steady motion
+/// starts from. A point that a computation reached (an integrator's step, a sample of a
+/// quadrature), which keeps |gamma| = 1 only to its own accuracy, is a [`Point`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct State {
-    /// The unit normal of the plane in the body frame.
+    gamma: [f64; 3],
+    #[serde(rename = "M")]
+    m: [f64; 3],
+}
+
+/// A point of the reduced phase space as a computation reached it (the end of a run, a
+/// sample of an integrator's dense output or of the exact solution): `gamma` and `M` as they
+/// were computed, with no rule of their own (|gamma| = 1 holds to the computation's accuracy).
+/// [`State::of_point`] validates one as a start.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Point {
+    /// The normal of the plane in the body frame.
     pub gamma: [f64; 3],
     /// The angular momentum about the contact point, (om-m).
     #[serde(rename = "M")]
     pub m: [f64; 3],
+}
+
+impl Point {
+    /// The point of a phase-space array `[gamma1, gamma2, gamma3, M1, M2, M3]`.
+    pub fn from_array(x: &[f64; 6]) -> Self {
+        Point {
+            gamma: [x[0], x[1], x[2]],
+            m: [x[3], x[4], x[5]],
+        }
+    }
+
+    /// The phase-space point as `[gamma1, gamma2, gamma3, M1, M2, M3]`.
+    pub fn to_array(&self) -> [f64; 6] {
+        [
+            self.gamma[0],
+            self.gamma[1],
+            self.gamma[2],
+            self.m[0],
+            self.m[1],
+            self.m[2],
+        ]
+    }
+
+    /// The angular velocity `omega = I_Q^{-1} M` (om-m).
+    pub fn omega(&self, body: &impl AsBall) -> [f64; 3] {
+        body.ball().angular_velocity(&self.gamma, &self.m)
+    }
+
+    /// The time-reversed point (gamma, -M): the field (mg-eq) is reversible under
+    /// `(gamma, M, t) -> (gamma, -M, -t)`.
+    pub fn reversed(&self) -> Self {
+        Point {
+            gamma: self.gamma,
+            m: self.m.map(|v| -v),
+        }
+    }
+}
+
+impl From<State> for Point {
+    fn from(state: State) -> Point {
+        Point {
+            gamma: state.gamma,
+            m: state.m,
+        }
+    }
 }
 
 /// Whether to accept a gamma whose length is not 1 by rescaling it.
@@ -53,38 +113,40 @@ impl State {
         })
     }
 
-    /// The phase-space point as `[gamma1, gamma2, gamma3, M1, M2, M3]`.
-    pub fn to_array(&self) -> [f64; 6] {
-        [
-            self.gamma[0],
-            self.gamma[1],
-            self.gamma[2],
-            self.m[0],
-            self.m[1],
-            self.m[2],
-        ]
+    /// A reached point validated as a state: [`State::new`] of its gamma and M.
+    pub fn of_point(point: &Point, normalise: Normalise) -> Result<Self> {
+        State::new(point.gamma, point.m, normalise)
     }
 
-    /// The state of a phase-space array (no validation: integrator output).
-    pub fn from_array(x: &[f64; 6]) -> Self {
-        State {
-            gamma: [x[0], x[1], x[2]],
-            m: [x[3], x[4], x[5]],
-        }
+    /// A state of a phase-space array `[gamma1, gamma2, gamma3, M1, M2, M3]`, validated
+    /// ([`State::new`]).
+    pub fn of_array(x: &[f64; 6], normalise: Normalise) -> Result<Self> {
+        State::of_point(&Point::from_array(x), normalise)
+    }
+
+    /// The unit normal of the plane in the body frame.
+    pub fn gamma(&self) -> [f64; 3] {
+        self.gamma
+    }
+
+    /// The angular momentum about the contact point, (om-m).
+    pub fn m(&self) -> [f64; 3] {
+        self.m
+    }
+
+    /// The same state as a [`Point`] (a record with public fields).
+    pub fn point(&self) -> Point {
+        Point::from(*self)
+    }
+
+    /// The phase-space point as `[gamma1, gamma2, gamma3, M1, M2, M3]`.
+    pub fn to_array(&self) -> [f64; 6] {
+        self.point().to_array()
     }
 
     /// The angular velocity `omega = I_Q^{-1} M`.
     pub fn omega(&self, body: &impl AsBall) -> [f64; 3] {
-        body.ball().angular_velocity(&self.gamma, &self.m)
-    }
-
-    /// The time-reversed state (gamma, -M): the field (mg-eq) is reversible under
-    /// `(gamma, M, t) -> (gamma, -M, -t)`.
-    pub fn reversed(&self) -> Self {
-        State {
-            gamma: self.gamma,
-            m: self.m.map(|v| -v),
-        }
+        self.point().omega(body)
     }
 }
 
@@ -137,11 +199,11 @@ mod tests {
         let half = std::f64::consts::FRAC_1_SQRT_2;
         for size in [1e200, 1e-200, f64::MAX, 5e-324] {
             let state = State::new([size, size, 0.0], [0.0; 3], Normalise::Rescale).unwrap();
-            for (got, want) in state.gamma.iter().zip([half, half, 0.0]) {
+            for (got, want) in state.gamma().iter().zip([half, half, 0.0]) {
                 assert!(
                     (got - want).abs() <= f64::EPSILON,
                     "{size}: {:?}",
-                    state.gamma
+                    state.gamma()
                 );
             }
         }
@@ -150,13 +212,13 @@ mod tests {
         assert_eq!(
             State::new(unit, [0.0; 3], Normalise::Rescale)
                 .unwrap()
-                .gamma,
+                .gamma(),
             unit
         );
         let unit = [0.6, 0.0, 0.8];
         let kept = State::new(unit, [0.0; 3], Normalise::Rescale)
             .unwrap()
-            .gamma;
+            .gamma();
         assert!(
             (0..3).all(|i| (kept[i] - unit[i]).abs() <= f64::EPSILON),
             "{kept:?}"
@@ -190,5 +252,41 @@ mod tests {
             e.contains("not a unit vector: |gamma| - 1 = 1.414e200"),
             "{e}"
         );
+    }
+
+    /// A reached point becomes a state only by the rules of a state: a gamma 1e-9 off unit
+    /// length is refused (naming the rule) unless rescaled, and then only gamma changes; a
+    /// non-finite M is refused either way. The state's point is the point, to the bit.
+    #[test]
+    fn a_point_is_a_state_only_within_the_rules() {
+        let point = Point {
+            gamma: [0.0, 0.0, 1.0 + 1e-9],
+            m: [1.0, -2.0, 3.0],
+        };
+        let e = State::of_point(&point, Normalise::Reject)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("not a unit vector"), "{e}");
+        let state = State::of_point(&point, Normalise::Rescale).unwrap();
+        assert_eq!(state.gamma(), [0.0, 0.0, 1.0]);
+        assert_eq!(state.m(), point.m);
+        let unit = Point {
+            gamma: [0.6, 0.0, 0.8],
+            ..point
+        };
+        assert_eq!(
+            State::of_point(&unit, Normalise::Reject).unwrap().point(),
+            unit
+        );
+        let infinite = Point {
+            m: [f64::INFINITY, 0.0, 0.0],
+            ..unit
+        };
+        for normalise in [Normalise::Reject, Normalise::Rescale] {
+            let e = State::of_point(&infinite, normalise)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("M = [inf, 0.0, 0.0] has a non-finite"), "{e}");
+        }
     }
 }

@@ -21,7 +21,7 @@ use crate::ball::{AsBall, Ball};
 use crate::body::Body;
 use crate::error::Result;
 use crate::integrate::RunUnits;
-use crate::state::State;
+use crate::state::{Normalise, Point, State};
 
 /// The units of length, mass and time of a problem (see the module's documentation).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -150,12 +150,17 @@ impl Units {
         )
     }
 
-    /// A state in these units: gamma as it is, `M T / (m R^2)`.
-    pub fn state(&self, state: &State) -> State {
-        State {
-            gamma: state.gamma,
-            m: state.m.map(|v| self.moment(v) * self.time),
+    /// A point in these units: gamma as it is, `M T / (m R^2)`.
+    pub fn point(&self, point: &Point) -> Point {
+        Point {
+            gamma: point.gamma,
+            m: point.m.map(|v| self.moment(v) * self.time),
         }
+    }
+
+    /// A state in these units ([`Units::point`]; an error only where M leaves f64's range).
+    pub fn state(&self, state: &State) -> Result<State> {
+        State::of_point(&self.point(&state.point()), Normalise::Reject)
     }
 
     /// The units of a run of `ball` from the reduced state `x = (gamma, M)`, in which an
@@ -166,8 +171,7 @@ impl Units {
     ///
     /// [`OdeSystem::units`]: crate::integrate::OdeSystem::units
     pub fn of_reduced(ball: &impl AsBall, x: &[f64; 6]) -> RunUnits<6> {
-        let state = State::from_array(x);
-        let units = Units::of(ball, &state.omega(ball)).binary();
+        let units = Units::of(ball, &Point::from_array(x).omega(ball)).binary();
         let p = units.momentum();
         RunUnits {
             time: units.time(),
@@ -175,12 +179,18 @@ impl Units {
         }
     }
 
-    /// A state of these units back in the problem's units: `M (m R^2 / T)`.
-    pub fn state_back(&self, state: &State) -> State {
+    /// A state of these units back in the problem's units ([`Units::point_back`]; an error
+    /// only where M leaves f64's range).
+    pub fn state_back(&self, state: &State) -> Result<State> {
+        State::of_point(&self.point_back(&state.point()), Normalise::Reject)
+    }
+
+    /// A point of these units back in the problem's units: `M (m R^2 / T)`.
+    pub fn point_back(&self, point: &Point) -> Point {
         let unit = self.momentum();
-        State {
-            gamma: state.gamma,
-            m: state.m.map(|v| v * unit),
+        Point {
+            gamma: point.gamma,
+            m: point.m.map(|v| v * unit),
         }
     }
 }
@@ -201,10 +211,15 @@ pub fn scaled_body(body: &Body, [k, l, s]: [f64; 3]) -> Result<Body> {
 
 /// `state` scaled in mass by `k`, in length by `l` and in time by `s`: gamma as it is,
 /// `M -> k l^2 M / s`.
-pub fn scaled_state(state: &State, [k, l, s]: [f64; 3]) -> State {
-    State {
-        gamma: state.gamma,
-        m: state.m.map(|v| k * l * l / s * v),
+pub fn scaled_state(state: &State, factors: [f64; 3]) -> Result<State> {
+    State::of_point(&scaled_point(&state.point(), factors), Normalise::Reject)
+}
+
+/// `point` scaled as [`scaled_state`] scales a state.
+pub fn scaled_point(point: &Point, [k, l, s]: [f64; 3]) -> Point {
+    Point {
+        gamma: point.gamma,
+        m: point.m.map(|v| k * l * l / s * v),
     }
 }
 
@@ -218,7 +233,7 @@ mod tests {
     fn scaled(body: &Body, state: &State, factors: [f64; 3]) -> (Body, State) {
         (
             scaled_body(body, factors).unwrap(),
-            scaled_state(state, factors),
+            scaled_state(state, factors).unwrap(),
         )
     }
 
@@ -249,7 +264,7 @@ mod tests {
                 body.without_gravity()
             };
             let units = Units::of(&body, &state.omega(&body));
-            let (b0, x0) = (units.body(&body).unwrap(), units.state(&state));
+            let (b0, x0) = (units.body(&body).unwrap(), units.state(&state).unwrap());
             assert_eq!((b0.m(), b0.radius()), (1.0, 1.0));
             let f0 = vector_field(&b0, &x0.to_array());
             let f = vector_field(&body, &state.to_array());
@@ -272,7 +287,7 @@ mod tests {
             ] {
                 let (b, x) = scaled(&body, &state, factors);
                 let u = Units::of(&b, &x.omega(&b));
-                let (b1, x1) = (u.body(&b).unwrap(), u.state(&x));
+                let (b1, x1) = (u.body(&b).unwrap(), u.state(&x).unwrap());
                 let p = |b: &Body| {
                     [
                         b.m(),
@@ -286,7 +301,11 @@ mod tests {
                 };
                 assert!(close(&p(&b1), &p(&b0), 1e-14), "{factors:?}: {b1:?} {b0:?}");
                 assert!(close(&x1.to_array(), &x0.to_array(), 1e-14), "{factors:?}");
-                assert!(close(&u.state_back(&x1).to_array(), &x.to_array(), 1e-14));
+                assert!(close(
+                    &u.state_back(&x1).unwrap().to_array(),
+                    &x.to_array(),
+                    1e-14
+                ));
             }
         }
     }
@@ -314,8 +333,31 @@ mod tests {
             assert_eq!(b, 2f64.powi(b.log2() as i32), "{b}");
             assert!((b / a).log2().abs() <= 0.5, "{a} {b}");
         }
-        assert_eq!(binary.state_back(&binary.state(&state)), state);
-        assert_ne!(units.state_back(&units.state(&state)), state);
+        let there_and_back = |u: &Units| u.state_back(&u.state(&state).unwrap()).unwrap();
+        assert_eq!(there_and_back(&binary), state);
+        assert_ne!(there_and_back(&units), state);
+    }
+
+    /// A state whose M leaves f64's range in other units is refused, not made infinite: the
+    /// default state scaled in mass by 1e300 and in time by 1e-10 (M x 1e310). Control: by
+    /// 1e290 it is a state, M multiplied by the factor.
+    #[test]
+    fn a_state_out_of_range_in_other_units_is_refused() {
+        let body = Body::default();
+        let state = State::from_omega(
+            &body,
+            [0.6, 0.0, 0.8],
+            [0.5, 0.2, 8.0],
+            crate::state::Normalise::Reject,
+        )
+        .unwrap();
+        let e = scaled_state(&state, [1e300, 1.0, 1e-10])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("non-finite"), "{e}");
+        let fine = scaled_state(&state, [1e290, 1.0, 1e-10]).unwrap();
+        assert_eq!(fine.gamma(), state.gamma());
+        assert!((fine.m()[2] / state.m()[2] / 1e300 - 1.0).abs() < 1e-15);
     }
 
     /// The time unit is the faster of the fall and the spin, finite and positive for every

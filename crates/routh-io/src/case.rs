@@ -315,7 +315,7 @@ impl Case {
             Contact::Sliding { mu, .. } => {
                 let model = Sliding::new(&ball, mu)?;
                 let y0 = model.initial(
-                    initial.gamma,
+                    initial.gamma(),
                     initial.omega(&ball),
                     velocity.unwrap_or([0.0; 3]),
                     Normalise::Reject,

@@ -52,7 +52,7 @@ impl Defaults {
     pub fn of_default_case() -> Result<Self> {
         let case = Case::default_case()?;
         let body = case.body("routh explore")?;
-        let [gamma1, gamma2, gamma3] = case.initial.gamma;
+        let [gamma1, gamma2, gamma3] = case.initial.gamma();
         let refuse = |message: &str| FileError::Case {
             file: case.source.clone(),
             message: format!("routh explore needs {message}"),

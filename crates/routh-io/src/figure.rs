@@ -212,7 +212,7 @@ impl Figure for EnergyMomentum<'_> {
             } else {
                 format!("vertical spin ({})", spin.stability.name())
             };
-            let label = format!("{name}, gamma3 = {:+}", spin.state.gamma[2].round());
+            let label = format!("{name}, gamma3 = {:+}", spin.state.gamma()[2].round());
             // Labels of points in the right half go to their left.
             let right = spin.value.k > 0.5 * (d.window.k.0 + d.window.k.1);
             let offset = if right {

@@ -10,7 +10,7 @@ use crate::error::{AppError, AppResult as Result};
 use crate::integrate::section::Point;
 use crate::integrate::Direction;
 use crate::output::write_atomic;
-use crate::problem::Crossing;
+use crate::problem::Plane;
 use crate::row::{write_csv_line, Cell};
 use crate::simulate::Settings;
 use crate::surface::{component_names, direction_name};
@@ -64,31 +64,31 @@ pub struct Report {
 }
 
 /// The plane as `NAME = NUMBER`.
-pub fn surface_text(crossing: &Crossing) -> String {
+pub fn surface_text(plane: &Plane) -> String {
     format!(
         "{} = {}",
-        component_names()[crossing.component],
-        crossing.value
+        component_names()[plane.component()],
+        plane.value()
     )
 }
 
 /// The section of the motions of `ball` on the energy level of `x0`: the runs from `initial`
-/// states ([`energy_family`]: `x0` first) with `settings`, crossing `crossing` in
+/// states ([`energy_family`]: `x0` first) with `settings`, crossing `plane` in
 /// `direction` ([`ball_section`]); the initial states, the section and its summary.
 pub fn section(
     ball: &Ball,
     x0: &[f64; 6],
     settings: &Settings,
-    crossing: &Crossing,
+    plane: &Plane,
     direction: Direction,
     initial: usize,
 ) -> Result<(Vec<[f64; 6]>, BallSection, Report)> {
     let start = Instant::now();
     let starts = energy_family(ball, x0, initial)?;
-    let s = ball_section(ball, &starts, settings, crossing, direction)?;
+    let s = ball_section(ball, &starts, settings, plane, direction)?;
     let report = Report {
         case: None,
-        surface: surface_text(crossing),
+        surface: surface_text(plane),
         direction: direction_name(direction),
         method: settings.method().to_string(),
         t_end: settings.t_end(),

@@ -5,7 +5,7 @@
 
 use crate::error::AppResult as Result;
 use crate::integrate::Direction;
-use crate::problem::Crossing;
+use crate::problem::Plane;
 use crate::table::STATE_COLUMN_NAMES;
 use routh_ball::RouthError;
 
@@ -24,7 +24,7 @@ pub fn component(name: &str) -> Option<usize> {
 /// The plane `NAME = NUMBER` of `text` (spaces around the parts allowed): the component and
 /// the value. Refused ([`RouthError::Option`] naming `what`): no `=`, an unknown name, a
 /// number that does not parse or is not finite.
-pub fn parse_surface(text: &str, what: &'static str) -> Result<Crossing> {
+pub fn parse_surface(text: &str, what: &'static str) -> Result<Plane> {
     let refused = || RouthError::Option {
         name: what,
         value: format!("{text:?}"),
@@ -34,10 +34,7 @@ pub fn parse_surface(text: &str, what: &'static str) -> Result<Crossing> {
     let (name, value) = text.split_once('=').ok_or_else(refused)?;
     let component = component(name.trim()).ok_or_else(refused)?;
     let value: f64 = value.trim().parse().map_err(|_| refused())?;
-    if !value.is_finite() {
-        return Err(refused().into());
-    }
-    Ok(Crossing { component, value })
+    Ok(Plane::new(component, value).map_err(|_| refused())?)
 }
 
 /// The direction of crossing named `text`: `up` (the component increasing through the
@@ -74,17 +71,11 @@ mod tests {
     fn surfaces_and_directions_parse_and_malformed_ones_are_refused() {
         assert_eq!(
             parse_surface("gamma1 = 0", "surface").unwrap(),
-            Crossing {
-                component: 0,
-                value: 0.0
-            }
+            Plane::new(0, 0.0).unwrap()
         );
         assert_eq!(
             parse_surface(" M3=-2.5e1 ", "surface").unwrap(),
-            Crossing {
-                component: 5,
-                value: -25.0
-            }
+            Plane::new(5, -25.0).unwrap()
         );
         for bad in [
             "",

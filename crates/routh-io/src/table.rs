@@ -12,7 +12,7 @@ use crate::integrate::{Method, OdeSystem};
 use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES, FULL_DIM};
 use crate::row::Cell;
 use crate::simulate::{integrate_observed, ReducedSystem, Settings, Summary};
-use crate::state::State;
+use crate::state::Point;
 use std::path::Path;
 
 /// Names of the reduced-state columns of `routh simulate`, after `t` and before the integrals.
@@ -215,7 +215,7 @@ pub fn sample_columns(full: bool) -> Vec<&'static str> {
 /// and, when `y` holds the motion in space (`FullMotion`'s state), its [`full_columns`].
 pub fn sample_cells(ball: &Ball, t: f64, y: &[f64]) -> Vec<Cell> {
     let x: [f64; 6] = std::array::from_fn(|i| y[i]);
-    let omega = State::from_array(&x).omega(ball);
+    let omega = Point::from_array(&x).omega(ball);
     let space = <&[f64; FULL_DIM]>::try_from(y)
         .ok()
         .map(|y| full_columns(ball, y));

@@ -251,7 +251,7 @@ pub fn rotation_generator() -> SMatrix<f64, 6, 6> {
 pub fn max_real_eigenvalue(body: &Body, state: &State, precession: f64) -> Result<(f64, f64)> {
     let units = Units::of(body, &state.omega(body));
     let t = units.time();
-    let (max, norm) = spectrum(&units.body(body)?, &units.state(state), precession * t)?;
+    let (max, norm) = spectrum(&units.body(body)?, &units.state(state)?, precession * t)?;
     Ok((max / t, norm / t))
 }
 
@@ -410,7 +410,7 @@ fn motion_units(body: &Body, spin: f64) -> Result<Units> {
 /// m = R = 1) to 7.5e-12, which moved Q'' = 1.75e-3 of a steady precession 0.01 from a pole by
 /// 2.6e-12 between copies in other units, 30 times the round-off of its terms.
 pub fn curvature_accuracy(red: &Reduction, body: &Body, state: &State) -> f64 {
-    let u = state.gamma[2];
+    let u = state.gamma()[2];
     let (_, errors) = red.frames_of_state(state, omega_round_off(body, state));
     CURVATURE_EPSILONS * f64::EPSILON * red.q_curvature_scale(u) + red.q_curvature_moved(u, errors)
 }
@@ -419,7 +419,7 @@ pub fn curvature_accuracy(red: &Reduction, body: &Body, state: &State) -> f64 {
 /// `precession` (0 for a vertical spin), in the units of `body`, and its verdict.
 fn stability(body: &Body, state: &State, precession: f64) -> Result<(Stability, Verdict)> {
     let spin = state.omega(body)[2];
-    let u = state.gamma[2];
+    let u = state.gamma()[2];
     let red = Reduction::of_state(body, state)?;
     let (_, _, q2) = red.q_derivatives(u);
     if !q2.is_finite() {
@@ -540,7 +540,7 @@ pub fn vertical_spin(body: &Body, pole: f64, spin: f64) -> Result<VerticalSpin> 
         no_threshold,
         stability,
         verdict,
-        state: units.state_back(&state),
+        state: units.state_back(&state)?,
     })
 }
 
@@ -715,7 +715,7 @@ pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPre
             let (omega_t, omega_t_accuracy) = (omega_t / t, omega_t_accuracy / t);
             let state = tilted_state(body, theta, omega_t, spin)?;
             let precession = u * omega_t / theta.sin() - spin;
-            let judged = stability(&scaled, &units.state(&state), precession * t)?;
+            let judged = stability(&scaled, &units.state(&state)?, precession * t)?;
             let (stability, verdict) = stability_back(judged, &units);
             Ok(SteadyPrecession {
                 theta,

@@ -31,7 +31,7 @@ use routh_ball::integrals::INTEGRAL_NAMES;
 use routh_ball::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES};
 use routh_ball::range::{check_body, check_state};
 use routh_ball::simulate::{reduced, run, DriftTracker, ReducedSystem, Settings, Summary};
-use routh_ball::state::{Normalise, State};
+use routh_ball::state::{Normalise, Point, State};
 use routh_ball::{AsBall, Ball, RouthError};
 use routh_integrate::Method;
 use routh_sphere::diagram::{Diagram, Resolution, Value};
@@ -187,7 +187,7 @@ fn simulate(request: &Request) -> Result<Simulation, String> {
         view: View {
             radius: p.radius,
             a: p.a,
-            gamma0: state.gamma,
+            gamma0: state.gamma(),
             columns,
             drift,
         },
@@ -201,7 +201,7 @@ struct Exact {
     /// theta in degrees at the samples' times.
     theta: Vec<f64>,
     /// The state at t_end.
-    final_state: State,
+    final_state: Point,
     /// The estimated relative error at t_end.
     estimated_error: f64,
 }
@@ -250,7 +250,7 @@ fn steady(request: &Request) -> Result<Steady, String> {
         .map(|pole| vertical_spin(&body, pole, spin))
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| e.to_string())?;
-    let theta = state.gamma[2].clamp(-1.0, 1.0).acos();
+    let theta = state.gamma()[2].clamp(-1.0, 1.0).acos();
     let precessions = if theta > 0.0 && theta < std::f64::consts::PI {
         precessions_at_tilt(&body, theta, spin)
             .map_err(|e| e.to_string())?

@@ -46,7 +46,7 @@ pub use routh_ball::{
     auto, ball, body, contact, error, families, field, integrals, kernels, motion, problem,
     projection, range, simulate, state, units,
 };
-pub use routh_ball::{AsBall, Ball, Body, Model, Result, RouthError, State};
+pub use routh_ball::{AsBall, Ball, Body, Model, Point, Result, RouthError, State};
 
 pub use routh_sphere::{audit, poisson, quadrature, steady};
 

@@ -241,7 +241,7 @@ impl Sliding {
         velocity: [f64; 3],
         normalise: Normalise,
     ) -> Result<[f64; DIM]> {
-        let gamma = State::from_omega(&self.ball, gamma, omega, normalise)?.gamma;
+        let gamma = State::from_omega(&self.ball, gamma, omega, normalise)?.gamma();
         if velocity.iter().any(|c| !c.is_finite()) {
             return Err(RouthError::State(format!(
                 "velocity = {velocity:?}: must be finite"

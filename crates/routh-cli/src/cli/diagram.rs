@@ -114,7 +114,7 @@ fn tables(d: &Diagram, dir: &Path) -> Result<Vec<PathBuf>> {
         d.vertical_spins.iter().map(|p| {
             format!(
                 "vertical-spin,{},{},{},{},{}",
-                p.state.gamma[2],
+                p.state.gamma()[2],
                 p.stability.name(),
                 p.value.k,
                 p.value.h1,
@@ -179,7 +179,7 @@ fn print_text(r: &Report) -> Result<()> {
     for v in &d.vertical_spins {
         outln!(
             "vertical spin gamma3 = {:+}: K = {}, H1 = {}, {}",
-            v.state.gamma[2].round(),
+            v.state.gamma()[2].round(),
             v.value.k,
             v.value.h1,
             v.stability.name()

@@ -11,7 +11,7 @@ use routh::quadrature::{Accuracy, ExactSolution, Motion};
 use routh::row::{csv_line, Cell};
 use routh::simulate::MAX_SAMPLES;
 use routh::table::csv_header;
-use routh::{AppError, AppResult as Result, Body, State};
+use routh::{AppError, AppResult as Result, Body, Point};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::io::Write;
@@ -208,7 +208,7 @@ pub(super) struct Sample {
 
 impl Sample {
     /// The state `state` at time `t`, with its angular velocity.
-    pub(super) fn new(body: &Body, t: f64, state: &State) -> Self {
+    pub(super) fn new(body: &Body, t: f64, state: &Point) -> Self {
         Sample {
             t,
             gamma: state.gamma,
@@ -222,7 +222,7 @@ impl Sample {
 const EXACT_COLUMNS: [&str; 4] = ["theta", "H1", "H3", "K"];
 
 /// The cells of a sample: t, the state, omega and the [`EXACT_COLUMNS`].
-fn csv_cells(body: &Body, t: f64, state: &State) -> Vec<Cell> {
+fn csv_cells(body: &Body, t: f64, state: &Point) -> Vec<Cell> {
     let x = state.to_array();
     let omega = state.omega(body);
     std::iter::once(t)
@@ -454,7 +454,7 @@ pub(super) fn write_samples(
     body: &Body,
     t: f64,
     n: usize,
-    state_at: impl Fn(f64) -> State,
+    state_at: impl Fn(f64) -> Point,
 ) -> Result<()> {
     let path = out.unwrap_or(Path::new(super::STANDARD_OUTPUT));
     let write_rows = |w: &mut dyn Write| -> Result<()> {

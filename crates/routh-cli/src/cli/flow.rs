@@ -6,7 +6,7 @@ use super::exact::{integrals_text, state_text, tilt_text, write_samples, Args, S
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
-use routh::{AppResult as Result, State};
+use routh::{AppResult as Result, Point};
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -42,7 +42,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
     let bracket = args.condition.bracket(body, args.alpha);
     let x0 = case.initial.to_array();
     let flow = Flow::new(bracket, field, &x0)?;
-    let state_at = |ti: f64| State::from_array(&flow.state_at(ti));
+    let state_at = |ti: f64| Point::from_array(&flow.state_at(ti));
     let stream = args.report_stream();
     if let Some(n) = args.csv_samples() {
         write_samples(args.out.as_deref(), &body, t, n, state_at)?;
@@ -56,7 +56,7 @@ pub fn run(args: &Args, field: Field) -> Result<()> {
         case: case.source.clone(),
         flow: field.name(),
         condition: args.condition.name(),
-        alpha: bracket.alpha.at(&case.initial.gamma),
+        alpha: bracket.alpha.at(&case.initial.gamma()),
         tilt: Tilt {
             motion: if shape.period.is_some() {
                 "nutation"

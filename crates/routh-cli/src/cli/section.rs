@@ -93,7 +93,7 @@ fn axes(text: Option<&str>, surface: usize) -> Result<[usize; 2]> {
 pub fn run(args: Args) -> Result<()> {
     let crossing = parse_surface(&args.surface, "surface")?;
     let direction = parse_direction(&args.direction, "direction")?;
-    let [x_axis, y_axis] = axes(args.axes.as_deref(), crossing.component)?;
+    let [x_axis, y_axis] = axes(args.axes.as_deref(), crossing.component())?;
     let case = Case::load(args.case.as_deref())?;
     let settings = args.integration.settings(args.method, &case)?;
     let x0 = case.initial.to_array();

@@ -72,7 +72,7 @@ pub const JORBA_ZOU_BELOW: f64 = 1e-12;
 /// step `h = rho e^(-u)`, `rho` the radius of convergence, and the order `p = -ln(eps) / u`,
 /// so that the last term `(h / rho)^p = eps`; if a step of order `p` costs `c2 p^2`, the cost
 /// per unit time `e^u p^2 / rho` is smallest at `u = 2`. Our step costs more per order at
-/// low orders: in time per step at t = 1000 (default case, BENCHMARKS.md, "Cost of a
+/// low orders: in time per step at t = 1000 (default case, docs/benchmarks-history.md, "Cost of a
 /// Taylor step against its order"), `c0 + c1 p + c2 p^2` with `c0 = 0.105 us`,
 /// `c1 = 0.046 us`, `c2 = 0.0024 us` (1.02 us at p = 12, 1.46 us at p = 16, 1.98 us at p = 20;
 /// the same proportions as before the histories of `tape`, at less than half the cost).
@@ -185,7 +185,7 @@ impl SeriesRule {
 
 /// How the order and step are chosen.
 #[derive(Debug, Clone, Copy)]
-enum Control {
+enum Regime {
     /// Jorba–Zou with the tolerances of this rule.
     Adaptive(SeriesRule),
     /// A fixed order and a fixed step (convergence studies).
@@ -202,7 +202,7 @@ pub struct Taylor<const N: usize, K = Interpreted> {
     carry: [f64; N],
     /// Order of the last accepted step.
     p_last: usize,
-    control: Control,
+    control: Regime,
     compensated: bool,
     /// The scales of the components ([`OdeSystem::units`] at `y0`), in which the state and
     /// the series are sized.
@@ -223,7 +223,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
         let max_order = taylor_order(opts.rtol().min(opts.atol()));
-        let control = Control::Adaptive(SeriesRule::new(opts.rtol(), opts.atol(), max_order));
+        let control = Regime::Adaptive(SeriesRule::new(opts.rtol(), opts.atol(), max_order));
         Self::build(sys, t0, y0, t_end, control, max_order, opts)
     }
 
@@ -246,7 +246,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
                 });
             }
         }
-        let control = Control::Fixed {
+        let control = Regime::Fixed {
             order,
             h: (t_end - t0) / steps as f64,
         };
@@ -259,7 +259,7 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
         t0: f64,
         y0: [f64; N],
         t_end: f64,
-        control: Control,
+        control: Regime,
         max_order: usize,
         opts: &Options,
     ) -> Result<Self, IntegrateError> {
@@ -297,8 +297,8 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
     /// The order for the current state.
     fn order(&self) -> usize {
         match self.control {
-            Control::Fixed { order, .. } => order,
-            Control::Adaptive(rule) => rule.order(self.scales.max_norm(self.y.iter().copied())),
+            Regime::Fixed { order, .. } => order,
+            Regime::Adaptive(rule) => rule.order(self.scales.max_norm(self.y.iter().copied())),
         }
     }
 
@@ -313,8 +313,8 @@ impl<const N: usize, K: Kernels> Taylor<N, K> {
         self.tape.expand(self.ctl.t(), &self.y, p);
         self.ctl.count_evals(p);
         let h = self.ctl.series_step(match self.control {
-            Control::Fixed { h, .. } => h.abs(),
-            Control::Adaptive(rule) => self.step_size(p, &rule),
+            Regime::Fixed { h, .. } => h.abs(),
+            Regime::Adaptive(rule) => self.step_size(p, &rule),
         })?;
         let mut delta = [0.0; N];
         for (i, d) in delta.iter_mut().enumerate() {

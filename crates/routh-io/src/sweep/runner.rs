@@ -19,7 +19,7 @@ use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::ExactSolution;
 use crate::row::Kind;
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
-use crate::state::State;
+use crate::state::{Point, State};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -182,8 +182,8 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                     rhs_evals: end.stats.rhs_evals,
                     projected: false,
                     project_every: 1,
-                    initial_state: State::from_array(&run.x0),
-                    final_state: State::from_array(&end.y),
+                    initial_state: Point::from_array(&run.x0),
+                    final_state: Point::from_array(&end.y),
                     integrals: done.drift.map(|d| d.report()).unwrap_or_default(),
                     elapsed_s: done.start.elapsed().as_secs_f64(),
                 };

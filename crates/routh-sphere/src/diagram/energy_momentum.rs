@@ -255,14 +255,18 @@ impl Diagram {
                 .vertical_spins
                 .iter()
                 .map(|v| v.back(&units))
-                .collect(),
+                .collect::<Result<_>>()?,
             critical_curves: scaled
                 .critical_curves
                 .iter()
                 .map(|c| c.back(&units))
-                .collect(),
-            focus_focus: scaled.focus_focus.iter().map(|v| v.back(&units)).collect(),
-            monodromy: scaled.monodromy.map(|m| m.back(&units)),
+                .collect::<Result<_>>()?,
+            focus_focus: scaled
+                .focus_focus
+                .iter()
+                .map(|v| v.back(&units))
+                .collect::<Result<_>>()?,
+            monodromy: scaled.monodromy.map(|m| m.back(&units)).transpose()?,
             tori: scaled.tori.back(&units),
         })
     }
@@ -406,14 +410,18 @@ pub struct SleepingTop {
 
 impl SleepingTop {
     /// This line computed in `units`, in the body's units.
-    pub fn back(&self, units: &Units) -> Self {
-        SleepingTop {
+    pub fn back(&self, units: &Units) -> Result<Self> {
+        Ok(SleepingTop {
             pole: self.pole,
-            spins: self.spins.iter().map(|v| v.back(units)).collect(),
+            spins: self
+                .spins
+                .iter()
+                .map(|v| v.back(units))
+                .collect::<Result<_>>()?,
             threshold_h3: self
                 .threshold_h3
                 .map(|h3| h3 * units.momentum() * units.length()),
-        }
+        })
     }
 }
 
@@ -458,7 +466,7 @@ pub fn sleeping_tops(body: &Body, h3_max: f64, samples: usize) -> Result<Vec<Sle
                 spins,
                 threshold_h3: threshold_h3(&scaled, pole)?,
             };
-            Ok(line.back(&units))
+            line.back(&units)
         })
         .collect()
 }

@@ -115,9 +115,9 @@ impl LoopPoint {
 
 impl Monodromy {
     /// This monodromy computed in `units`, in the body's units.
-    pub fn back(&self, units: &Units) -> Self {
-        Monodromy {
-            centre: self.centre.back(units),
+    pub fn back(&self, units: &Units) -> Result<Self> {
+        Ok(Monodromy {
+            centre: self.centre.back(units)?,
             radii: (
                 self.radii.0 * units.momentum(),
                 self.radii.1 * units.energy(),
@@ -129,7 +129,7 @@ impl Monodromy {
             basis: self.basis,
             convention: self.convention,
             orientation: self.orientation,
-        }
+        })
     }
 }
 

@@ -77,11 +77,11 @@ impl RelativeEquilibrium {
     pub fn new(body: &Body, theta: f64, state: State, precession: f64) -> Result<Self> {
         let units = Units::of(body, &state.omega(body));
         let scaled = units.body(body)?;
-        let motion = units.state(&state);
+        let motion = units.state(&state)?;
         let inner = Self::in_units(&scaled, theta, motion, precession * units.time())?;
         Ok(RelativeEquilibrium {
             state,
-            ..inner.back(&units)
+            ..inner.back(&units)?
         })
     }
 
@@ -90,10 +90,10 @@ impl RelativeEquilibrium {
         let value = Value::of_state(body, &state);
         let lin = linearise(body, &state, precession)?;
         let omega = state.omega(body);
-        let horizontal = state.gamma[0].hypot(state.gamma[1]);
-        let omega_t = (omega[0] * state.gamma[0] + omega[1] * state.gamma[1]) / horizontal;
+        let horizontal = state.gamma()[0].hypot(state.gamma()[1]);
+        let omega_t = (omega[0] * state.gamma()[0] + omega[1] * state.gamma()[1]) / horizontal;
         let red = value.reduction(body)?;
-        let u = state.gamma[2];
+        let u = state.gamma()[2];
         let q_second_derivative = red.q_derivatives(u).2;
         let q_accuracy = curvature_accuracy(&red, body, &state);
         Ok(RelativeEquilibrium {
@@ -111,15 +111,16 @@ impl RelativeEquilibrium {
         })
     }
 
-    /// This relative equilibrium computed in `units`, in the body's units.
-    pub fn back(&self, units: &Units) -> Self {
+    /// This relative equilibrium computed in `units`, in the body's units (an error only
+    /// where its M leaves f64's range there, [`Units::state_back`]).
+    pub fn back(&self, units: &Units) -> Result<Self> {
         let rate = 1.0 / units.time();
         let eigenvalues: Vec<(f64, f64)> = self
             .eigenvalues
             .iter()
             .map(|&(re, im)| (re * rate, im * rate))
             .collect();
-        RelativeEquilibrium {
+        Ok(RelativeEquilibrium {
             theta: self.theta,
             value: self.value.back(units),
             precession: self.precession * rate,
@@ -130,8 +131,8 @@ impl RelativeEquilibrium {
             spectrum: labelled(&eigenvalues),
             eigenvalues,
             rank_residual: self.rank_residual,
-            state: units.state_back(&self.state),
-        }
+            state: units.state_back(&self.state)?,
+        })
     }
 }
 
@@ -242,12 +243,16 @@ pub struct CriticalCurve {
 
 impl CriticalCurve {
     /// This curve computed in `units`, in the body's units.
-    pub fn back(&self, units: &Units) -> Self {
-        CriticalCurve {
+    pub fn back(&self, units: &Units) -> Result<Self> {
+        Ok(CriticalCurve {
             branch: self.branch,
             stability: self.stability,
-            points: self.points.iter().map(|p| p.back(units)).collect(),
-        }
+            points: self
+                .points
+                .iter()
+                .map(|p| p.back(units))
+                .collect::<Result<_>>()?,
+        })
     }
 }
 

@@ -272,7 +272,7 @@ pub fn confirmed(kind: StabilityType, q_second_derivative: f64, q_accuracy: f64)
 pub fn linearise(body: &Body, state: &State, precession: f64) -> Result<Linearisation> {
     let units = Units::of(body, &state.omega(body));
     let t = units.time();
-    let lin = linearise_in_units(&units.body(body)?, &units.state(state), precession * t)?;
+    let lin = linearise_in_units(&units.body(body)?, &units.state(state)?, precession * t)?;
     Ok(Linearisation {
         eigenvalues: lin
             .eigenvalues

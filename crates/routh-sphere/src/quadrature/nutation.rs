@@ -27,7 +27,7 @@ use crate::field::vector_field;
 use crate::integrate::brent;
 use crate::quadrature::panels::{Piecewise, Sample};
 use crate::quadrature::reduction::{frame_index, omega_round_off, Reduction};
-use crate::state::State;
+use crate::state::{Point, State};
 use crate::steady::{max_real_eigenvalue, require_finite_inertia, EIGENVALUE_TOLERANCE};
 use crate::units::Units;
 use std::f64::consts::{PI, TAU};
@@ -313,12 +313,12 @@ impl Accuracy {
 }
 
 /// Rotation of a state about e3 by `angle` (a symmetry of (mg-eq) when I1 = I2).
-fn rotated(state: &State, angle: f64) -> State {
+fn rotated(state: &State, angle: f64) -> Point {
     let (s, c) = angle.sin_cos();
     let rot = |v: [f64; 3]| [c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]];
-    State {
-        gamma: rot(state.gamma),
-        m: rot(state.m),
+    Point {
+        gamma: rot(state.gamma()),
+        m: rot(state.m()),
     }
 }
 
@@ -326,7 +326,7 @@ fn rotated(state: &State, angle: f64) -> State {
 /// `dphi/dt = -(omega1 gamma1 + omega2 gamma2) / (gamma1^2 + gamma2^2)` (docs/quadrature.md,
 /// section 3); `None` on the axis (gamma = +-e3), where e3 is vertical.
 fn axis_rate(body: &Body, state: &State) -> Option<f64> {
-    let (gamma, omega) = (state.gamma, state.omega(body));
+    let (gamma, omega) = (state.gamma(), state.omega(body));
     let horizontal = gamma[0] * gamma[0] + gamma[1] * gamma[1];
     (horizontal > 0.0).then(|| -(omega[0] * gamma[0] + omega[1] * gamma[1]) / horizontal)
 }
@@ -542,7 +542,7 @@ impl ExactSolution {
     pub fn new(body: &Body, initial: &State) -> Result<Self> {
         require_finite_inertia(body)?;
         let units = Units::of(body, &initial.omega(body)).binary();
-        let (motion, accuracy) = Self::solve(&units.body(body)?, &units.state(initial), units)?;
+        let (motion, accuracy) = Self::solve(&units.body(body)?, &units.state(initial)?, units)?;
         let reduction = Reduction::of_state(body, initial)?;
         let motion = match motion {
             Motion::Steady { u, precession, .. } => Motion::Steady {
@@ -573,7 +573,7 @@ impl ExactSolution {
     pub fn nutation_numbers(body: &Body, initial: &State) -> Result<NutationNumbers> {
         require_finite_inertia(body)?;
         let units = Units::of(body, &initial.omega(body)).binary();
-        let decision = Self::decide(&units.body(body)?, &units.state(initial), units)?;
+        let decision = Self::decide(&units.body(body)?, &units.state(initial)?, units)?;
         // `new` builds this too, and refuses what it refuses.
         Reduction::of_state(body, initial)?;
         Ok(match decision {
@@ -673,23 +673,23 @@ impl ExactSolution {
         let red = Reduction::of_state(body, initial)?;
         // Its error of omega (`conditioning`) is counted in the drift of the estimate.
         let (_, errors) = red.frames_of_state(initial, 0.0);
-        let u0 = initial.gamma[2];
+        let u0 = initial.gamma()[2];
         let steady = |u: f64, precession: f64, accuracy: Accuracy| Decision::Steady {
             u,
             precession,
             accuracy,
         };
         let omega = initial.omega(body);
-        let udot0 = initial.gamma[0] * omega[1] - initial.gamma[1] * omega[0];
+        let udot0 = initial.gamma()[0] * omega[1] - initial.gamma()[1] * omega[0];
         // A nutation within the round-off `noise` of Q whose turning points the search did not
         // separate beyond `searched`: steady, with the error of `unresolved_nutation`. du/dt at
         // the start is bounded with its round-off: that of its two products, and the error of
         // omega.
         let unresolved = |searched: f64, noise: f64| {
-            let horizontal = initial.gamma[0].hypot(initial.gamma[1]);
+            let horizontal = initial.gamma()[0].hypot(initial.gamma()[1]);
             let udot_bound = udot0.abs()
-                + f64::EPSILON * (initial.gamma[0] * omega[1]).abs()
-                + f64::EPSILON * (initial.gamma[1] * omega[0]).abs()
+                + f64::EPSILON * (initial.gamma()[0] * omega[1]).abs()
+                + f64::EPSILON * (initial.gamma()[1] * omega[0]).abs()
                 + conditioning * horizontal * omega[0].hypot(omega[1]).hypot(omega[2]);
             Self::unresolved_nutation(
                 &red,
@@ -733,8 +733,8 @@ impl ExactSolution {
             };
             return Ok(steady(u0, omega_fit, accuracy));
         }
-        let pole = pole_of_hemisphere(&initial.gamma);
-        let x0 = distance_from_pole(&initial.gamma, pole);
+        let pole = pole_of_hemisphere(&initial.gamma());
+        let x0 = distance_from_pole(&initial.gamma(), pole);
         let turnings = turning_points(&red, pole, x0)?;
         let (u1, u2, width) = (turnings.lower.u, turnings.upper.u, turnings.width);
         let mid = 0.5 * (u1 + u2);
@@ -901,7 +901,7 @@ impl ExactSolution {
     }
 
     /// The state at time `t` (any real t; the cost does not depend on t).
-    pub fn state_at(&self, t: f64) -> State {
+    pub fn state_at(&self, t: f64) -> Point {
         match &self.motion {
             Motion::Steady {
                 precession,
@@ -1131,13 +1131,13 @@ impl Nutation {
         // The distances of u0 from the turning points, from that of u0 from the pole of its
         // hemisphere (taken from the horizontal part of gamma) less the gap of the turning
         // point on that side, and the width.
-        let pole = pole_of_hemisphere(&initial.gamma);
+        let pole = pole_of_hemisphere(&initial.gamma());
         let gap = if pole > 0.0 {
             nut.gap_top
         } else {
             nut.gap_bottom
         };
-        let near = (distance_from_pole(&initial.gamma, pole) - gap).clamp(0.0, nut.width);
+        let near = (distance_from_pole(&initial.gamma(), pole) - gap).clamp(0.0, nut.width);
         let (above, below) = if pole > 0.0 {
             (near, nut.width - near)
         } else {
@@ -1162,7 +1162,7 @@ impl Nutation {
             .iter()
             .map(|x| norm(&x[3..]))
             .fold(0.0, f64::max);
-        let start = norm(&initial.m);
+        let start = norm(&initial.m());
         let at_rest = !(start > f64::EPSILON * largest);
         nut.momentum_scale = if at_rest { largest } else { start };
         // psi_ref: the rotation about e3 that takes the state of phase sigma0 at psi = 0 to
@@ -1173,7 +1173,7 @@ impl Nutation {
         let (model_gamma, model_omega) = nut.gamma_omega(nut.sigma0, 0.0);
         let cross_dot =
             |a: [f64; 3], b: [f64; 3]| (a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
-        let (y1, x1) = cross_dot(model_gamma, initial.gamma);
+        let (y1, x1) = cross_dot(model_gamma, initial.gamma());
         let (y2, x2) = if at_rest {
             (0.0, 0.0)
         } else {
@@ -1195,7 +1195,7 @@ impl Nutation {
             .acos();
         [0.0, 0.5 * PI, PI, 1.5 * PI, widest, self.sigma0].map(|sigma| {
             let (gamma, omega) = self.gamma_omega(sigma, 0.0);
-            State {
+            Point {
                 gamma,
                 m: self.reduction.body().angular_momentum(&gamma, &omega),
             }
@@ -1474,7 +1474,7 @@ impl Nutation {
     }
 
     /// The state at time t (in the problem's units) after the initial state.
-    pub fn state_at(&self, t: f64) -> State {
+    pub fn state_at(&self, t: f64) -> Point {
         let period = self.cycle();
         let (_, t0) = self.series.value_and_integral(0, self.sigma0);
         let total = t0 + t / self.units.time();
@@ -1482,7 +1482,7 @@ impl Nutation {
         let tau = (total - turns * period).clamp(0.0, period);
         let sigma = self.series.invert_time(tau) + turns * TAU;
         let (gamma, omega) = self.gamma_omega(sigma, self.psi_ref);
-        self.units.state_back(&State {
+        self.units.point_back(&Point {
             gamma,
             m: self.reduction.body().angular_momentum(&gamma, &omega),
         })

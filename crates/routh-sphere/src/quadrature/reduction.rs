@@ -70,7 +70,7 @@ pub const INTEGRAL_EPSILONS: f64 = 2.0;
 /// `m |r|^2 |omega|`), and more than 1 with m = 1e30, where omega computed from M came out
 /// [-1.62, 0.2, -1.01] for the case's (0.5, 0.2, 8).
 pub fn omega_round_off(body: &Body, state: &State) -> f64 {
-    let r = body.contact_vector(&state.gamma);
+    let r = body.contact_vector(&state.gamma());
     let r2: f64 = r.iter().map(|c| c * c).sum();
     let (smallest, largest) = (body.i1().min(body.i3()), body.i1().max(body.i3()));
     f64::EPSILON * (largest + body.m() * r2) / smallest
@@ -323,7 +323,7 @@ impl Reduction {
     /// omega (the kinetic and spin terms of `e_p`) by twice it.
     pub fn frames_of_state(&self, state: &State, omega_error: f64) -> ([PoleFrame; 2], [f64; 5]) {
         let b = &self.body;
-        let gamma = state.gamma;
+        let gamma = state.gamma();
         let omega = state.omega(b);
         let r = b.contact_vector(&gamma);
         let norm = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();

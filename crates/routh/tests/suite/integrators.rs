@@ -2032,7 +2032,7 @@ mod units {
                         let [k, l, s] = factors;
                         let (b, y) = (
                             scaled_body(&body, factors).unwrap(),
-                            scaled_state(&x, factors),
+                            scaled_state(&x, factors).unwrap(),
                         );
                         let copy = simulated(&b, &y, s * t_end, method);
                         let context = format!(
@@ -2098,7 +2098,7 @@ mod units {
         let [k, l, s] = factors;
         let (b, y) = (
             scaled_body(body, factors).unwrap(),
-            scaled_state(x, factors),
+            scaled_state(x, factors).unwrap(),
         );
         let copy = simulated(&b, &y, s * t_end, method);
         let context = format!("{method} {body:?} factors {factors:?}");
@@ -2127,7 +2127,7 @@ mod units {
         let x = state(&body, 0.3, [0.5, 0.2, 8.0]);
         let factors = BINARY[0];
         let b = scaled_body(&body, factors).unwrap();
-        let y = scaled_state(&x, factors);
+        let y = scaled_state(&x, factors).unwrap();
         let opts = Options::new(1e-10, 1e-10).unwrap();
         let steps = |body: &Body, x: &State| -> Stats {
             let field = |_t: f64, y: &[f64; 6]| routh::field::vector_field(body, y);
@@ -2179,7 +2179,7 @@ mod units {
                 let [k, l, s] = factors;
                 let (b, y) = (
                     scaled_body(&body, factors).unwrap(),
-                    scaled_state(&x, factors),
+                    scaled_state(&x, factors).unwrap(),
                 );
                 let copy = simulated(&b, &y, s * t_end, method);
                 let context = format!("{method} factors {factors:?}");

@@ -485,7 +485,7 @@ mod case_file {
             "x",
         )
         .unwrap();
-        assert_eq!(ok.initial.gamma, [0.0, 0.0, 1.0]);
+        assert_eq!(ok.initial.gamma(), [0.0, 0.0, 1.0]);
     }
 
     #[test]
@@ -1390,7 +1390,7 @@ mod motion {
     };
     use routh::scalar::cross;
     use routh::state::Normalise;
-    use routh::{Body, State};
+    use routh::{Body, Point, State};
 
     type Sample = (f64, [f64; FULL_DIM]);
 
@@ -1536,14 +1536,14 @@ mod motion {
         let omega0 = [1.0, -2.0, 3.0];
         let state = State::from_omega(&body, [0.6, 0.0, 0.8], omega0, Normalise::Reject).unwrap();
         let y0 = initial_full(&state);
-        let r0 = body.contact_vector(&state.gamma);
+        let r0 = body.contact_vector(&state.gamma());
         let velocity = rotate(&quaternion(&y0), &cross(&r0, &omega0));
         assert!(velocity[2].abs() < 1e-15, "the velocity is horizontal");
         let speed = norm(&cross(&omega0, &r0));
         let times: Vec<f64> = (0..=100).map(|k| k as f64 * 0.1).collect();
         let samples = samples_of(&FullMotion { body: &body }, y0, &times);
         for (t, y) in &samples {
-            let omega = State::from_array(&std::array::from_fn(|i| y[i])).omega(&body);
+            let omega = Point::from_array(&std::array::from_fn(|i| y[i])).omega(&body);
             assert!(
                 norm(&[
                     omega[0] - omega0[0],
@@ -1648,7 +1648,7 @@ mod problem {
 
     use routh::case::Case;
     use routh::integrate::Method;
-    use routh::problem::{Crossing, DenseSolution, Problem, Solution, Status};
+    use routh::problem::{DenseSolution, Plane, Problem, Solution, Status};
     use routh::simulate::{run, ReducedSystem, Settings};
 
     fn plain_value<T: Clone + Send + Sync + serde::Serialize>() {}
@@ -1763,21 +1763,18 @@ mod problem {
         assert!(s.message.contains("non-finite"), "{}", s.message);
         // An event: gamma1 crosses 0 (the tilt turns), located to round-off.
         let mut p = default_problem(10.0, 0);
-        p.event = Some(Crossing {
-            component: 0,
-            value: 0.0,
-        });
+        p.event = Some(Plane::new(0, 0.0).unwrap());
         let s = p.solve().unwrap();
         assert_eq!(s.status, Status::Event, "{}", s.message);
         let e = s.events[0];
         assert!(e.t > 0.0 && e.t < 10.0);
         assert!(e.state.gamma[0].abs() < 1e-12, "{:?}", e.state);
-        // Negative control: invalid event component is an error, not a status.
-        p.event = Some(Crossing {
-            component: 6,
-            value: 0.0,
-        });
-        assert!(p.solve().is_err());
+        // Negative control: a plane outside (gamma, M), or at a level that is not finite,
+        // cannot be built, named in the error.
+        for (component, value) in [(6, 0.0), (0, f64::NAN), (5, f64::INFINITY)] {
+            let e = Plane::new(component, value).unwrap_err().to_string();
+            assert!(e.contains("plane") && e.contains("0 to 5"), "{e}");
+        }
     }
 }
 
@@ -1791,7 +1788,7 @@ mod simulate {
     use routh::case::Case;
     use routh::integrate::Method;
     use routh::simulate::{run, ReducedSystem, Settings, Summary};
-    use routh::State;
+    use routh::{Point, State};
 
     fn simulate(case: &Case, x0: [f64; 6], t_end: f64, project: bool) -> Summary {
         let settings = Settings::builder()
@@ -1984,7 +1981,7 @@ mod simulate {
         .unwrap();
         let times: Vec<f64> = seen.iter().map(|s| s.0).collect();
         assert_eq!(times, vec![0.0, 0.5, 1.0, 1.5, 2.0]);
-        assert_eq!(State::from_array(&seen[4].1), summary.final_state);
+        assert_eq!(Point::from_array(&seen[4].1), summary.final_state);
     }
 
     #[test]
@@ -2244,7 +2241,7 @@ mod inertia_unit {
         .unwrap();
         let omega = state.omega(&body);
         let by_determinant =
-            |b: &Body, y: &State| b.ball().angular_velocity_by_determinant(&y.gamma, &y.m);
+            |b: &Body, y: &State| b.ball().angular_velocity_by_determinant(&y.gamma(), &y.m());
         let reference = by_determinant(&body, &state);
         for factors in [
             [2f64.powi(-997), 1.0, 1.0],
@@ -2252,7 +2249,7 @@ mod inertia_unit {
             [2f64.powi(997), 2f64.powi(-332), 1.0],
         ] {
             let copy = scaled_body(&body, factors).unwrap();
-            let y = scaled_state(&state, factors);
+            let y = scaled_state(&state, factors).unwrap();
             routh::range::check_body(&copy).unwrap();
             assert_eq!(bits(y.omega(&copy)), bits(omega), "{factors:?}");
             assert_eq!(
@@ -2264,14 +2261,14 @@ mod inertia_unit {
             // k l^2, to the bit; in the problem's units (the formula before) g^2, of the size
             // of k^2 = 2^-1994 or 2^1994, left f64 (g = 0 or inf, and K = g omega3 with it).
             let [k, l, _] = factors;
-            let g = copy.routh_g(&y.gamma);
+            let g = copy.routh_g(&y.gamma());
             assert_eq!(
                 g.to_bits(),
-                (body.routh_g(&state.gamma) * k * l * l).to_bits()
+                (body.routh_g(&state.gamma()) * k * l * l).to_bits()
             );
-            let horizontal = y.gamma[0] * y.gamma[0] + y.gamma[1] * y.gamma[1];
+            let horizontal = y.gamma()[0] * y.gamma()[0] + y.gamma()[1] * y.gamma()[1];
             let (m, radius, i1, i3) = (copy.m(), copy.radius(), copy.i1(), copy.i3());
-            let h = y.gamma[2] * radius + copy.a();
+            let h = y.gamma()[2] * radius + copy.a();
             let old_g =
                 (horizontal * (i1 * m * radius * radius) + h * h * (i3 * m) + i1 * i3).sqrt();
             if l == 1.0 {
@@ -2282,12 +2279,12 @@ mod inertia_unit {
             }
             let ball = copy.ball();
             let old = ball.inertia_in(1.0);
-            let before = ball.angular_velocity_in(&old, &y.gamma, &y.m);
+            let before = ball.angular_velocity_in(&old, &y.gamma(), &y.m());
             assert!(
                 before.iter().any(|w| !w.is_finite()),
                 "{factors:?}: {before:?}"
             );
-            assert!(old_cofactors(&ball, &y.gamma, &y.m)
+            assert!(old_cofactors(&ball, &y.gamma(), &y.m())
                 .iter()
                 .any(|w| !w.is_finite()));
         }
@@ -2295,7 +2292,7 @@ mod inertia_unit {
         // (measured: 1.4e-15 / 8.0 = 1.7e-16 in omega1).
         let factors = [1e-300, 1.0, 1.0];
         let copy = scaled_body(&body, factors).unwrap();
-        let y = scaled_state(&state, factors);
+        let y = scaled_state(&state, factors).unwrap();
         let w = y.omega(&copy);
         let size = omega.iter().map(|v| v * v).sum::<f64>().sqrt();
         for i in 0..3 {

@@ -15,14 +15,14 @@ mod exact_decisions {
     use exact_sweep::{distance, dop853_at};
     use routh::body::Body;
     use routh::quadrature::{ExactSolution, Motion};
-    use routh::state::{Normalise, State};
+    use routh::state::{Normalise, Point, State};
     use routh::steady::routh_threshold;
     use routh::RouthError;
 
     /// DOP853 at rtol 1e-13 (atol 1e-15) from `x0` to `t`: at t = 10 its global error on these
     /// motions is below 1e-9 (at most 4.6e-10 on the random states of the property test, against
     /// rtol 3e-16; docs/quadrature.md, section 7), below the 1e-8 compared here.
-    fn dop853(body: &Body, x0: &State, t: f64) -> State {
+    fn dop853(body: &Body, x0: &State, t: f64) -> Point {
         dop853_at(body, x0, t, 1e-13)
     }
 
@@ -80,9 +80,9 @@ mod exact_decisions {
         let Motion::Nutation(_) = exact.motion else {
             unreachable!()
         };
-        let rate = exact.reduction.precession_rate(x0.gamma[2]);
+        let rate = exact.reduction.precession_rate(x0.gamma()[2]);
         let (s, c) = (10.0 * rate).sin_cos();
-        let g = x0.gamma;
+        let g = x0.gamma();
         let rotated = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
         let steady_error = (0..3).fold(0.0_f64, |m, i| {
             m.max((rotated[i] - dop853(&body, &x0, 10.0).gamma[i]).abs())
@@ -316,9 +316,9 @@ mod exact_decisions {
                             worst = worst.max(d);
                             // Negative control: the old verdict, a uniform rotation at the
                             // precession rate of the start, is far off.
-                            let rate = exact.reduction.precession_rate(x0.gamma[2]);
+                            let rate = exact.reduction.precession_rate(x0.gamma()[2]);
                             let (s, c) = (10.0 * rate).sin_cos();
-                            let g = x0.gamma;
+                            let g = x0.gamma();
                             let turned = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
                             let steady_error = (0..3).fold(0.0_f64, |m, i| {
                                 m.max((turned[i] - reference.gamma[i]).abs())
@@ -380,12 +380,12 @@ mod solutions {
     use routh::field::vector_field;
     use routh::integrate::{solve, Options, Stop};
     use routh::quadrature::{ExactSolution, Motion, Reduction};
-    use routh::state::{Normalise, State};
+    use routh::state::{Normalise, Point, State};
     use routh::RouthError;
     use std::f64::consts::PI;
 
     /// Largest difference of the components of two states, relative to the size of each half.
-    fn distance(a: &State, b: &State) -> f64 {
+    fn distance(a: &Point, b: &Point) -> f64 {
         let rel = |x: &[f64; 3], y: &[f64; 3]| {
             let scale = x.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(1e-300);
             x.iter()
@@ -405,7 +405,7 @@ mod solutions {
     fn state_at_zero_is_the_initial_state() {
         let (body, x0) = default_case();
         let exact = ExactSolution::new(&body, &x0).unwrap();
-        let d = distance(&exact.state_at(0.0), &x0);
+        let d = distance(&exact.state_at(0.0), &x0.point());
         assert!(d < 1e-12, "{d:e}");
     }
 
@@ -477,7 +477,9 @@ mod solutions {
         // Negative control: the same comparison fails for a quadrature of a perturbed state.
         let (body, x0) = default_case();
         let mut perturbed = x0;
-        perturbed.m[2] *= 1.0 + 1e-7;
+        let mut moved = perturbed.point();
+        moved.m[2] *= 1.0 + 1e-7;
+        perturbed = State::of_point(&moved, Normalise::Reject).unwrap();
         let exact = ExactSolution::new(&body, &perturbed).unwrap();
         let d = distance(&exact.state_at(100.0), &dop853_at(&body, &x0, 100.0, 1e-13));
         assert!(d > 1e-7, "{d:e}");
@@ -584,7 +586,7 @@ mod solutions {
                 .unwrap();
             let exact = ExactSolution::new(&body, &x0).unwrap();
             assert!(matches!(exact.motion, Motion::Steady { u, .. } if u == 1.0));
-            assert_eq!(exact.state_at(123.4), x0);
+            assert_eq!(exact.state_at(123.4), x0.point());
         }
     }
 
@@ -601,7 +603,7 @@ mod solutions {
             panic!("a nutation expected");
         };
         assert!(nut.through_top && nut.u2 == 1.0);
-        assert!(distance(&exact.state_at(0.0), &x0) < 1e-13);
+        assert!(distance(&exact.state_at(0.0), &x0.point()) < 1e-13);
         for t in [0.3, nut.period, 10.0 * nut.period + 0.1, 100.0] {
             let q = exact.state_at(t);
             assert!(q.gamma.iter().chain(&q.m).all(|v| v.is_finite()));
@@ -644,7 +646,9 @@ mod solutions {
         let body = Body::default();
         let spin = 0.5 * routh::steady::routh_threshold(&body, 1.0);
         let mut x0 = on_separatrix(&body, spin, 0.9);
-        x0.m[0] *= 1.2;
+        let mut moved = x0.point();
+        moved.m[0] *= 1.2;
+        x0 = State::of_point(&moved, Normalise::Reject).unwrap();
         let exact = ExactSolution::new(&body, &x0).unwrap();
         let period = exact.period().unwrap();
         let separated = ExactSolution::new(&body, &on_separatrix(&body, spin, 0.5));
@@ -823,7 +827,9 @@ mod quadrature_reference {
                 let on = state(&body, gamma, omega);
                 for off in [0.0, 1e-12, 1e-8, 1e-4, 1e-1] {
                     let mut x = on;
-                    x.m[0] *= 1.0 + off;
+                    let mut moved = x.point();
+                    moved.m[0] *= 1.0 + off;
+                    x = State::of_point(&moved, Normalise::Reject).unwrap();
                     out.push((format!("separatrix spin {spin} u {u} off {off:e}"), body, x));
                 }
             }
@@ -836,7 +842,9 @@ mod quadrature_reference {
             {
                 for off in [0.0, 1e-13, 1e-10, 1e-7, 1e-4, 1e-2] {
                     let mut x = p.state;
-                    x.m[0] += off * (1.0 + x.m[0].abs());
+                    let mut moved = x.point();
+                    moved.m[0] += off * (1.0 + moved.m[0].abs());
+                    x = State::of_point(&moved, Normalise::Reject).unwrap();
                     out.push((format!("steady {theta} {spin} {k} off {off:e}"), body, x));
                 }
             }
@@ -938,8 +946,9 @@ mod quadrature_reference {
             .take(20)
             .filter(|(_, old)| old.starts_with("nutation"))
             .filter(|((_, body, x), old)| {
-                let mut x = *x;
-                x.m = x.m.map(|m| m * (1.0 + 1e-11));
+                let mut moved = x.point();
+                moved.m = moved.m.map(|m| m * (1.0 + 1e-11));
+                let x = State::of_point(&moved, Normalise::Reject).unwrap();
                 let (_, new) = parse(&outcome(body, &x));
                 let (values, _) = differences(new, parse(old).1);
                 values[0].max(values[1]) > AGREEMENT
@@ -968,9 +977,9 @@ mod exact_in_any_units {
     use routh::integrate::{solve_dense, Options};
     use routh::motion::{initial_full, quaternion, rotate, FullMotion, FULL_DIM};
     use routh::quadrature::{ExactSolution, Motion};
-    use routh::state::{Normalise, State};
+    use routh::state::{Normalise, Point, State};
     use routh::steady::{routh_threshold, steady_precessions};
-    use routh::units::{scaled_body, scaled_state, Units};
+    use routh::units::{scaled_body, scaled_point, scaled_state, Units};
     use routh::RouthError;
     use std::f64::consts::{PI, TAU};
 
@@ -983,7 +992,7 @@ mod exact_in_any_units {
     pub(super) fn scaled(body: &Body, x: &State, factors: [f64; 3]) -> (Body, State) {
         (
             scaled_body(body, factors).unwrap(),
-            scaled_state(x, factors),
+            scaled_state(x, factors).unwrap(),
         )
     }
 
@@ -1032,7 +1041,7 @@ mod exact_in_any_units {
         }
         let period = original.period().unwrap_or(1.0);
         for t in [0.0, 0.37 * period, 2.9 * period] {
-            let converted = scaled_state(&original.state_at(t), factors);
+            let converted = scaled_point(&original.state_at(t), factors);
             worst = worst.max(distance(&copy.state_at(s * t), &converted));
         }
         Ok(worst)
@@ -1196,7 +1205,9 @@ mod exact_in_any_units {
         let x0 = default_state(&body);
         let factors = [1e20, 1e-7, 3e3];
         let (copy_body, mut copy_x0) = scaled(&body, &x0, factors);
-        copy_x0.m[0] *= 1.0 + 1e-6;
+        let mut moved = copy_x0.point();
+        moved.m[0] *= 1.0 + 1e-6;
+        copy_x0 = State::of_point(&moved, Normalise::Reject).unwrap();
         let (original, copy) = (
             ExactSolution::new(&body, &x0).unwrap(),
             ExactSolution::new(&copy_body, &copy_x0).unwrap(),
@@ -1360,18 +1371,18 @@ mod exact_in_any_units {
         // psi at the start, is far from DOP853.
         let exact = ExactSolution::new(&scaled, &default_state(&scaled)).unwrap();
         let x0 = default_state(&scaled);
-        let rate = exact.reduction.precession_rate(x0.gamma[2]);
+        let rate = exact.reduction.precession_rate(x0.gamma()[2]);
         let (s, c) = (2.0 * rate).sin_cos();
-        let turned = State {
+        let turned = Point {
             gamma: [
-                c * x0.gamma[0] - s * x0.gamma[1],
-                s * x0.gamma[0] + c * x0.gamma[1],
-                x0.gamma[2],
+                c * x0.gamma()[0] - s * x0.gamma()[1],
+                s * x0.gamma()[0] + c * x0.gamma()[1],
+                x0.gamma()[2],
             ],
             m: [
-                c * x0.m[0] - s * x0.m[1],
-                s * x0.m[0] + c * x0.m[1],
-                x0.m[2],
+                c * x0.m()[0] - s * x0.m()[1],
+                s * x0.m()[0] + c * x0.m()[1],
+                x0.m()[2],
             ],
         };
         assert!(distance(&turned, &dop853_at(&scaled, &x0, 2.0, 1e-13)) > 1e-3);
@@ -1523,8 +1534,8 @@ mod exact_near_rest {
     use exact_sweep::{against_dop853, distance, dop853_at};
     use routh::body::Body;
     use routh::quadrature::{ExactSolution, Motion};
-    use routh::state::{Normalise, State};
-    use routh::units::{scaled_body, scaled_state};
+    use routh::state::{Normalise, Point, State};
+    use routh::units::{scaled_body, scaled_point, scaled_state};
 
     /// The fuzzer's body: m = R = 0.1, a = 0.0609375, I1 = I2 = I3 = G = 607.84 (its moments
     /// 6e5 times m R^2: the motion is slow, the period 47.5).
@@ -1573,11 +1584,11 @@ mod exact_near_rest {
         let m_scale = later.m.iter().fold(0.0_f64, |s, v| s.max(v.abs()));
         for i in 0..3 {
             assert!(
-                (at_zero.gamma[i] - x0.gamma[i]).abs() <= 4.0 * f64::EPSILON,
+                (at_zero.gamma[i] - x0.gamma()[i]).abs() <= 4.0 * f64::EPSILON,
                 "{at_zero:?}"
             );
             assert!(
-                (at_zero.m[i] - x0.m[i]).abs() <= 4.0 * f64::EPSILON * m_scale,
+                (at_zero.m[i] - x0.m()[i]).abs() <= 4.0 * f64::EPSILON * m_scale,
                 "{at_zero:?} against {m_scale:e}"
             );
         }
@@ -1600,10 +1611,10 @@ mod exact_near_rest {
         ] {
             let [_, _, s] = factors;
             let copy = scaled_body(&body, factors).unwrap();
-            let x = scaled_state(&x0, factors);
+            let x = scaled_state(&x0, factors).unwrap();
             let other = ExactSolution::new(&copy, &x).unwrap();
             for t in [0.0, 10.0] {
-                let back = scaled_state(&other.state_at(s * t), factors.map(f64::recip));
+                let back = scaled_point(&other.state_at(s * t), factors.map(f64::recip));
                 let d = distance(&back, &exact.state_at(t));
                 assert!(d <= tolerance, "{factors:?}, t = {t}: {d:e}");
             }
@@ -1611,7 +1622,7 @@ mod exact_near_rest {
         // Negative control: the state of the same phase a quarter turn about e3 away is far
         // from DOP853.
         let turned = exact.state_at(10.0);
-        let turned = State {
+        let turned = Point {
             gamma: [-turned.gamma[1], turned.gamma[0], turned.gamma[2]],
             m: [-turned.m[1], turned.m[0], turned.m[2]],
         };
@@ -1654,7 +1665,7 @@ mod exact_near_rest {
         let at_zero = exact.state_at(0.0);
         for i in 0..3 {
             assert!(
-                (at_zero.gamma[i] - x0.gamma[i]).abs() <= 16.0 * f64::EPSILON,
+                (at_zero.gamma[i] - x0.gamma()[i]).abs() <= 16.0 * f64::EPSILON,
                 "{at_zero:?}"
             );
         }
@@ -1904,7 +1915,7 @@ mod exact_numbers {
                 let omega = steady.state.omega(&body);
                 let size = omega.iter().fold(0.0f64, |m, w| m.max(w.abs()));
                 let moved = std::array::from_fn(|i| omega[i] + off * size * dir[i]);
-                Some((body, state(&body, steady.state.gamma, moved)))
+                Some((body, state(&body, steady.state.gamma(), moved)))
             })
     }
 
@@ -1940,7 +1951,7 @@ mod exact_numbers {
                 let omega = on.omega(&body);
                 let size = omega.iter().fold(0.0f64, |m, w| m.max(w.abs()));
                 let moved = std::array::from_fn(|i| omega[i] + off * size * dir[i]);
-                Some((body, state(&body, on.gamma, moved)))
+                Some((body, state(&body, on.gamma(), moved)))
             })
     }
 
@@ -2078,7 +2089,9 @@ mod exact_numbers {
         assert_eq!(difference(&ExactSolution::new(&body, &x0), &numbers), None);
         for moved in [f64::EPSILON, 1e-12] {
             let mut other = x0;
-            other.m[0] *= 1.0 + moved;
+            let mut point = other.point();
+            point.m[0] *= 1.0 + moved;
+            other = State::of_point(&point, Normalise::Reject).unwrap();
             let found = difference(&ExactSolution::new(&body, &other), &numbers);
             println!("M1 moved by {moved:e}: {found:?}");
             assert!(found.is_some(), "M1 moved by {moved:e}");

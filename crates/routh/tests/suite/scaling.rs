@@ -23,7 +23,7 @@ use routh::integrals::jellett;
 use routh::integrate::{solve, Method, Options};
 use routh::quadrature::Reduction;
 use routh::simulate::{run, ReducedSystem, Settings};
-use routh::state::{Normalise, State};
+use routh::state::{Normalise, Point, State};
 use routh::steady::{
     routh_threshold, steady_precessions, vertical_spin, Decision, CURVATURE_EPSILONS,
 };
@@ -178,7 +178,7 @@ fn largest_departure(body: &Body, x0: [f64; 6], t_end: f64, precession: f64) -> 
 /// `state` tilted by `angle` about e1 (gamma only: M kept), in the dimensionless units.
 fn tilted(body: &Body, state: &State, angle: f64) -> State {
     let (s, c) = angle.sin_cos();
-    let g = state.gamma;
+    let g = state.gamma();
     State::from_omega(
         body,
         [g[0], c * g[1] - s * g[2], s * g[1] + c * g[2]],
@@ -241,7 +241,7 @@ proptest! {
         }
         // Independently: DOP853 from the tilted spin, in the units of the motion.
         let units = Units::of(&b1, &v1.state.omega(&b1));
-        let (body, state) = (units.body(&b1).unwrap(), units.state(&v1.state));
+        let (body, state) = (units.body(&b1).unwrap(), units.state(&v1.state).unwrap());
         let tilt = 1e-7;
         let start = tilted(&body, &state, tilt).to_array();
         // Routh's criterion: below the centre of mass, or without gravity, stable at every
@@ -341,7 +341,7 @@ proptest! {
             let body = units.body(&b1).unwrap();
             let growth = p1.stability.max_real_eigenvalue.max(0.0) * units.time();
             let horizon = if growth > 0.0 { (1e3f64.ln() / growth).min(10.0) } else { 10.0 };
-            let far = largest_departure(&body, units.state(&p1.state).to_array(), horizon, p1.precession * units.time());
+            let far = largest_departure(&body, units.state(&p1.state).unwrap().to_array(), horizon, p1.precession * units.time());
             prop_assert!(far.is_none_or(|a| a < 1e-7), "{context}: {far:?} {p1:?}");
         }
     }
@@ -392,7 +392,10 @@ fn start() -> impl Strategy<Value = Start> {
 
 /// The state `start` of `c`'s body in the copy with factors `which`, with that body.
 fn copy_of(c: &Copies, start: Start, which: [f64; 3]) -> (Body, State) {
-    (c.body(which), scaled_state(&start.state(&c.unit), which))
+    (
+        c.body(which),
+        scaled_state(&start.state(&c.unit), which).unwrap(),
+    )
 }
 
 proptest! {
@@ -431,7 +434,7 @@ proptest! {
         prop_assert_eq!(n1.intervals.len(), n2.intervals.len(), "{}: {:?} {:?}", context, n1, n2);
         let units = Units::of(&b1, &x1.omega(&b1));
         let body = units.body(&b1).unwrap();
-        let red = Value::of_state(&body, &units.state(&x1)).reduction(&body).unwrap();
+        let red = Value::of_state(&body, &units.state(&x1).unwrap()).reduction(&body).unwrap();
         // The round-off of a turning point: that of Q (its terms' and one ulp of u's, as the
         // count's own test of a double root) over the slope there.
         let accuracy = |u: f64| {
@@ -443,7 +446,7 @@ proptest! {
                 prop_assert!((a - b).abs() <= 1e-9 + accuracy(a), "{context}: {n1:?} {n2:?}: {a} {b} accuracy {}", accuracy(a));
             }
         }
-        let u0 = x1.gamma[2];
+        let u0 = x1.gamma()[2];
         let slack = 1e-6;
         let Some(&(low, high)) = n1.intervals.iter().find(|(a, b)| *a - slack <= u0 && u0 <= *b + slack) else {
             prop_assert!(false, "{context}: gamma3 = {u0} in none of {n1:?}");
@@ -457,7 +460,7 @@ proptest! {
                 outside = Some((t, y[2]));
             }
         };
-        if solve(&field, 0.0, units.state(&x1).to_array(), 5.0, &opts, None, None, &mut observe).is_ok() {
+        if solve(&field, 0.0, units.state(&x1).unwrap().to_array(), 5.0, &opts, None, None, &mut observe).is_ok() {
             prop_assert!(outside.is_none(), "{context}: left [{low}, {high}] at {outside:?}");
         }
     }
@@ -488,7 +491,7 @@ fn simulated(body: &Body, state: &State, t_end: f64, method: Method) -> Option<[
         &mut |_, _| Ok(()),
     )
     .ok()?;
-    Some(units.state(&summary.final_state).to_array())
+    Some(units.point(&summary.final_state).to_array())
 }
 
 proptest! {
@@ -617,7 +620,7 @@ fn the_comparisons_can_fail() {
         let spin = vertical_spin(&body, 1.0, f * w).unwrap();
         let units = Units::of(&body, &spin.state.omega(&body));
         let scaled = units.body(&body).unwrap();
-        let start = tilted(&scaled, &units.state(&spin.state), 1e-7).to_array();
+        let start = tilted(&scaled, &units.state(&spin.state).unwrap(), 1e-7).to_array();
         let far = largest_departure(&scaled, start, 50.0, 0.0).unwrap();
         assert_eq!(far > 1e3 * 1e-7, grows, "f = {f}: {far}");
     }
@@ -657,7 +660,7 @@ fn default_case_and_copy(factors: [f64; 3]) -> [(Body, [f64; 6], f64); 2] {
     let gamma = [0.3f64.sin(), 0.0, 0.3f64.cos()];
     let state = State::from_omega(&body, gamma, [0.5, 0.2, 8.0], Normalise::Reject).unwrap();
     let copy = scaled_body(&body, factors).unwrap();
-    let copy_state = scaled_state(&state, factors);
+    let copy_state = scaled_state(&state, factors).unwrap();
     [
         (body, state.to_array(), 1.0),
         (copy, copy_state.to_array(), factors[2]),
@@ -739,12 +742,9 @@ fn lyapunov_spectrum_of_a_copy_in_other_units_is_the_original_over_the_time_fact
 #[test]
 fn section_of_a_copy_in_other_units_is_the_same_section() {
     use routh::integrate::Direction;
-    use routh::problem::Crossing;
+    use routh::problem::Plane;
     use routh::section::{ball_section, energy_family};
-    let plane = Crossing {
-        component: 0,
-        value: 0.0,
-    };
+    let plane = Plane::new(0, 0.0).unwrap();
     let sections: Vec<_> = default_case_and_copy([1e12, 1.0, 1e-3])
         .iter()
         .map(|(body, x, s)| {
@@ -752,7 +752,7 @@ fn section_of_a_copy_in_other_units_is_the_same_section() {
             let settings = Settings::builder().t_end(100.0 * s).build().unwrap();
             let section =
                 ball_section(body, &starts, &settings, &plane, Direction::Rising).unwrap();
-            let unit = Units::of(body, &State::from_array(x).omega(body)).momentum();
+            let unit = Units::of(body, &Point::from_array(x).omega(body)).momentum();
             (section, unit, *s)
         })
         .collect();

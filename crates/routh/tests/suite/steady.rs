@@ -403,7 +403,7 @@ mod diagram {
             let distance = |angle: f64| {
                 let (s, c) = angle.sin_cos();
                 let rot = |v: [f64; 3]| [c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]];
-                let (g, mm) = (rot(x0.gamma), rot(x0.m));
+                let (g, mm) = (rot(x0.gamma()), rot(x0.m()));
                 (0..3)
                     .map(|i| {
                         (g[i] - end.gamma[i])
@@ -599,7 +599,7 @@ mod steady_motions {
                     .unwrap();
                     // The exact motion is the rotation about e3 by precession * t.
                     let (s, c) = (p.precession * t).sin_cos();
-                    let g = p.state.gamma;
+                    let g = p.state.gamma();
                     let expected = [c * g[0] - s * g[1], s * g[0] + c * g[1], g[2]];
                     let err = (0..3).fold(0.0_f64, |m, i| m.max((y[i] - expected[i]).abs()));
                     assert!(err < 1e-9, "theta {theta} spin {spin}: {err:e}");
@@ -648,14 +648,14 @@ mod steady_motions {
         let omega = p.state.omega(&body);
         let off = State::from_omega(
             &body,
-            p.state.gamma,
+            p.state.gamma(),
             [omega[0] * 1.01, omega[1], omega[2]],
             routh::state::Normalise::Reject,
         )
         .unwrap();
         let (_, dq, _) = Reduction::of_state(&body, &off)
             .unwrap()
-            .q_derivatives(p.state.gamma[2]);
+            .q_derivatives(p.state.gamma()[2]);
         assert!(dq.abs() > 1e-3, "{dq}");
     }
 
@@ -846,7 +846,13 @@ mod steady_motions {
                         "{context}: {cr} {vr}"
                     );
                     for i in 0..3 {
-                        assert!(same(c.state.m[i], momentum, v.state.m[i], 1e-12, 1e-300));
+                        assert!(same(
+                            c.state.m()[i],
+                            momentum,
+                            v.state.m()[i],
+                            1e-12,
+                            1e-300
+                        ));
                     }
                     // The diagram's type of the same vertical spin, in both units.
                     let h3 = routh::integrals::jellett(&body, &v.state.to_array());

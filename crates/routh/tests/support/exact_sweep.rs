@@ -8,7 +8,7 @@ use routh::body::Body;
 use routh::field::vector_field;
 use routh::integrate::{solve, Options};
 use routh::quadrature::ExactSolution;
-use routh::state::{Normalise, State};
+use routh::state::{Normalise, Point, State};
 use routh::RouthError;
 
 /// The time at which the quadrature is compared with DOP853.
@@ -75,13 +75,13 @@ pub fn cases(n: usize, seed: u64) -> Vec<SweepCase> {
 }
 
 /// DOP853 at rtol 1e-13 (atol 1e-15) from the case's state to `t`.
-pub fn dop853(case: &SweepCase, t: f64) -> State {
+pub fn dop853(case: &SweepCase, t: f64) -> Point {
     dop853_at(&case.body, &case.state, t, 1e-13)
 }
 
 /// DOP853 (compensated summation) at relative tolerance `rtol`, absolute `rtol / 100`, from
 /// `x0` at time 0 to `t`: the independent reference of the tests of the exact solution.
-pub fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
+pub fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> Point {
     let opts = Options::new(rtol, 1e-2 * rtol)
         .and_then(|opts| opts.with_max_steps(10_000_000))
         .unwrap();
@@ -97,7 +97,7 @@ pub fn dop853_at(body: &Body, x0: &State, t: f64, rtol: f64) -> State {
         &mut |_, _| {},
     )
     .expect("integration");
-    State::from_array(&y)
+    Point::from_array(&y)
 }
 
 /// The state of `exact` at `t` against DOP853 at rtol 1e-13: the difference `d` within the
@@ -125,7 +125,7 @@ pub fn against_dop853(
 }
 
 /// Largest component difference, relative to the size of gamma (1) and of M.
-pub fn distance(a: &State, b: &State) -> f64 {
+pub fn distance(a: &Point, b: &Point) -> f64 {
     let m = a.m.iter().fold(0.0_f64, |s, v| s.max(v.abs())).max(1e-300);
     let dg = (0..3).fold(0.0_f64, |s, i| s.max((a.gamma[i] - b.gamma[i]).abs()));
     let dm = (0..3).fold(0.0_f64, |s, i| s.max((a.m[i] - b.m[i]).abs()));
@@ -136,7 +136,7 @@ pub fn distance(a: &State, b: &State) -> f64 {
 #[derive(Debug)]
 pub enum Outcome {
     /// Solved: the state at t = T (its distance from DOP853 is computed by the caller).
-    Solved(State),
+    Solved(Point),
     /// Refused as a separatrix (a double root of Q within the round-off of the integrals) or
     /// as steady-unstable beyond its horizon: the decisions the issue allows.
     Separatrix(String),

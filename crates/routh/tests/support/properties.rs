@@ -9,7 +9,7 @@ use routh::body::Body;
 use routh::case::Case;
 use routh::integrals::Integrals;
 use routh::quadrature::ExactSolution;
-use routh::state::{Normalise, State};
+use routh::state::{Normalise, Point, State};
 use routh::table::{Table, OPTIONAL_COLUMNS};
 use routh::AsBall;
 
@@ -55,7 +55,7 @@ fn all_finite(values: &[f64]) -> bool {
     values.iter().all(|v| v.is_finite())
 }
 
-fn state_finite(state: &State) -> bool {
+fn state_finite(state: &Point) -> bool {
     all_finite(&state.to_array())
 }
 
@@ -86,7 +86,7 @@ pub fn case_text(text: &str) {
             let b = case.ball;
             assert!(all_finite(&[b.m(), b.radius(), b.gravity()]));
             assert!(all_finite(&b.inertia()) && all_finite(&b.com()));
-            assert!(state_finite(&case.initial));
+            assert!(state_finite(&case.initial.point()));
             field_and_integrals_finite(&b, &case.initial);
             let i = case.integration;
             assert!(i.t_end().is_finite() && i.t_end() >= 0.0 && i.max_steps() >= 1);
@@ -198,7 +198,7 @@ fn steady(body: &Body, spin: f64, tilt: f64) {
         if let Ok(v) = routh::steady::vertical_spin(body, pole, spin) {
             assert!(
                 all_finite(&[v.threshold_spin, v.stability.q_second_derivative])
-                    && state_finite(&v.state),
+                    && state_finite(&v.state.point()),
                 "vertical spin {v:?} of {body:?}"
             );
         }
@@ -208,7 +208,7 @@ fn steady(body: &Body, spin: f64, tilt: f64) {
         for p in list {
             assert!(
                 all_finite(&[p.omega_t, p.precession, p.stability.q_second_derivative])
-                    && state_finite(&p.state),
+                    && state_finite(&p.state.point()),
                 "steady precession {p:?} of {body:?}"
             );
         }
