@@ -5,9 +5,10 @@
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
+use routh_core::case::Overrides;
 use routh_core::integrate::Method;
 use routh_core::row::{Cell, Kind};
-use routh_core::sweep::{Columns, Overrides, Sweep};
+use routh_core::sweep::{Columns, Sweep};
 use std::path::PathBuf;
 
 /// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto",
@@ -61,19 +62,18 @@ pub fn sweep<'py>(
         .transpose()
         .map_err(|e| PyValueError::new_err(format!("columns: {e}")))?;
     let overrides = Overrides {
-        method,
+        method: Some(method),
         t_end,
         rtol,
         atol,
         max_steps: None,
-        columns,
     };
     if threads == Some(0) {
         return Err(PyValueError::new_err("threads must be >= 1"));
     }
     let (names, rows, settings, case_text) = py
         .detach(|| -> Result<_, String> {
-            let sweep = Sweep::for_runs(&text, &source, overrides, start, stop)
+            let sweep = Sweep::for_runs(&text, &source, overrides, columns, start, stop)
                 .map_err(|e| e.to_string())?;
             let stop = stop.unwrap_or(sweep.runs());
             let rows = sweep

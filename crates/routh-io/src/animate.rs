@@ -274,12 +274,22 @@ fn escape_html(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::integrate::Method;
+    use crate::case::{Case, Overrides};
+
+    /// The full motion of `case` over [0, `t_end`] (DOP853 at its tolerances), in
+    /// `samples` samples.
+    fn simulate_full(case: &Case, t_end: f64, samples: usize) -> Table {
+        let overrides = Overrides {
+            t_end: Some(t_end),
+            ..Overrides::default()
+        };
+        crate::table::simulate_full(case, &overrides, samples).unwrap()
+    }
 
     #[test]
     fn recovers_radius_and_offset_from_samples() {
         let case = crate::case::Case::default_case().unwrap();
-        let table = crate::table::simulate_full(&case, Method::Dop853, 2.0, 101).unwrap();
+        let table = simulate_full(&case, 2.0, 101);
         let (radius, a) = recover_geometry(&table).unwrap();
         assert!((radius - case.ball.radius()).abs() < 1e-12, "R = {radius}");
         assert!((a + case.ball.com()[2]).abs() < 1e-12, "a = {a}");
@@ -333,7 +343,7 @@ mod tests {
     #[test]
     fn samples_without_integrals_still_animate() {
         let case = crate::case::Case::default_case().unwrap();
-        let full = crate::table::simulate_full(&case, Method::Dop853, 1.0, 5).unwrap();
+        let full = simulate_full(&case, 1.0, 5);
         let mut table = Table::new("frames.csv", frame_names().map(str::to_string).collect());
         for i in 0..full.len() {
             let row: Vec<f64> = frame_names().map(|n| full.column(n).unwrap()[i]).collect();
@@ -350,7 +360,7 @@ mod tests {
     #[test]
     fn refuses_samples_that_do_not_advance_or_are_not_finite() {
         let case = crate::case::Case::default_case().unwrap();
-        let table = crate::table::simulate_full(&case, Method::Dop853, 1.0, 5).unwrap();
+        let table = simulate_full(&case, 1.0, 5);
         assert!(html(&changed(&table, 2, "qx", table.column("qx").unwrap()[2])).is_ok());
         let err = html(&changed(&table, 1, "t", 0.0)).unwrap_err();
         assert!(err.to_string().contains("does not increase"), "{err}");

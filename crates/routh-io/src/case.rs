@@ -39,7 +39,8 @@ use crate::body::Body;
 use crate::contact::sliding::{Sliding, DIM};
 use crate::contact::Contact;
 use crate::error::{AppError, AppResult as Result, FileError};
-use crate::simulate::Settings;
+use crate::integrate::Method;
+use crate::simulate::{Settings, SettingsBuilder};
 use crate::state::{Normalise, State};
 use serde::Deserialize;
 use std::path::Path;
@@ -355,6 +356,40 @@ impl Case {
     }
 }
 
+/// The settings given beside a case file (the command line's `--method`, `--t-end`, `--rtol`,
+/// `--atol`, `--max-steps`; Python's keywords) that override its `[integration]` table; each
+/// left `None` keeps the case's value (the method: DOP853, a case file names none).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Overrides {
+    /// The integrator.
+    pub method: Option<Method>,
+    /// Final time.
+    pub t_end: Option<f64>,
+    /// Relative tolerance.
+    pub rtol: Option<f64>,
+    /// Absolute tolerance.
+    pub atol: Option<f64>,
+    /// The most steps of one run.
+    pub max_steps: Option<usize>,
+}
+
+impl Overrides {
+    /// The settings of `case` with these overrides, to be completed (projection, samples) and
+    /// built: [`SettingsBuilder::build`] checks them, with the same rules and messages for
+    /// every command, the sweep and Python.
+    pub fn applied_to(&self, case: &Case) -> SettingsBuilder {
+        let base = case.integration;
+        base.to_builder()
+            .method(self.method.unwrap_or(base.method()))
+            .t_end(self.t_end.unwrap_or(base.t_end()))
+            .tolerances(
+                self.rtol.unwrap_or(base.rtol()),
+                self.atol.unwrap_or(base.atol()),
+            )
+            .max_steps(self.max_steps.unwrap_or(base.max_steps()))
+    }
+}
+
 /// An error met reading the case `source`, as an error of that case file (one that already
 /// is one is left as it is).
 fn labelled(e: AppError, source: &str) -> AppError {
@@ -570,4 +605,50 @@ fn key_in_error<'a, T: serde::de::DeserializeOwned>(
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Overrides replace what they give and keep the rest from the case's own `[integration]`
+    /// (not from the defaults: the case below sets every key to another value).
+    #[test]
+    fn overrides_replace_only_what_they_give() {
+        let text = DEFAULT_CASE.replace(
+            "t_end = 100.0\nrtol = 1e-12\natol = 1e-12",
+            "t_end = 7.0\nrtol = 1e-9\natol = 1e-10\nmax_steps = 1234",
+        );
+        let case = Case::parse(&text, "test").unwrap();
+        let kept = Overrides::default().applied_to(&case).build().unwrap();
+        assert_eq!(kept, case.integration);
+        assert_eq!(
+            (kept.t_end(), kept.rtol(), kept.atol(), kept.max_steps()),
+            (7.0, 1e-9, 1e-10, 1234)
+        );
+        let given = Overrides {
+            method: Some(Method::Vern9),
+            t_end: Some(2.0),
+            rtol: Some(1e-8),
+            atol: Some(1e-11),
+            max_steps: Some(99),
+        };
+        let changed = given.applied_to(&case).build().unwrap();
+        assert_eq!(
+            (
+                changed.method(),
+                changed.t_end(),
+                changed.rtol(),
+                changed.atol(),
+                changed.max_steps()
+            ),
+            (Method::Vern9, 2.0, 1e-8, 1e-11, 99)
+        );
+        let refused = Overrides {
+            t_end: Some(-1.0),
+            ..Overrides::default()
+        };
+        let err = refused.applied_to(&case).build().unwrap_err();
+        assert!(err.to_string().contains("t_end"), "{err}");
+    }
 }

@@ -4,11 +4,11 @@
 //! reads as NaN). The plots and the animation draw from a [`Table`].
 
 use crate::ball::Ball;
-use crate::case::{Case, SlidingStart};
+use crate::case::{Case, Overrides, SlidingStart};
 use crate::contact::sliding::{run as run_sliding, SlidingSummary, DIM};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
-use crate::integrate::{Method, OdeSystem};
+use crate::integrate::OdeSystem;
 use crate::motion::{full_columns, initial_full, FullMotion, FULL_COLUMN_NAMES, FULL_DIM};
 use crate::row::Cell;
 use crate::simulate::{integrate_observed, ReducedSystem, Settings, Summary};
@@ -292,17 +292,12 @@ pub fn sliding_samples(
     run_sliding(model, start.y0, settings, &mut on_sample)
 }
 
-/// Simulate `case` with the full motion (`method` at the case's tolerances) and tabulate
-/// `samples` equally spaced samples on [0, t_end]: the columns of [`sample_columns`] (empty
-/// integrals as NaN, as a CSV of `routh simulate --full` reads back).
-pub fn simulate_full(case: &Case, method: Method, t_end: f64, samples: usize) -> Result<Table> {
-    let settings = case
-        .integration
-        .to_builder()
-        .method(method)
-        .t_end(t_end)
-        .samples(samples)
-        .build()?;
+/// Simulate `case` with the full motion (its settings with `overrides` applied, checked as
+/// they are built: [`Overrides::applied_to`]) and tabulate `samples` equally spaced samples
+/// on [0, t_end]: the columns of [`sample_columns`] (empty integrals as NaN, as a CSV of
+/// `routh simulate --full` reads back).
+pub fn simulate_full(case: &Case, overrides: &Overrides, samples: usize) -> Result<Table> {
+    let settings = overrides.applied_to(case).samples(samples).build()?;
     let names = sample_columns(true)
         .into_iter()
         .map(str::to_string)

@@ -1,7 +1,7 @@
 //! `routh lyapunov`: the Lyapunov exponents of a case's motion on `|gamma| = 1`
 //! ([`routh::lyapunov::report_case`]), as text or JSON.
 
-use super::simulate::{parse_method, Integration};
+use super::integration::{parse_method, Integration};
 use super::{print_json, Readable};
 use routh::case::Case;
 use routh::integrate::Method;

@@ -26,6 +26,7 @@ mod diagram;
 mod exact;
 mod explore;
 mod flow;
+mod integration;
 mod lyapunov;
 mod plot;
 mod section;

@@ -2,7 +2,7 @@
 //! drift of the integrals, the trace of (gamma1, gamma2)), from a simulation of a case or from
 //! a CSV file written by `routh simulate`; optionally the difference against a second CSV.
 
-use routh::case::Case;
+use routh::case::{Case, Overrides};
 use routh::integrate::Method;
 use routh::plot::{difference_plot, standard_plots, Format};
 use routh::table::{simulate_full, Table};
@@ -34,7 +34,7 @@ pub struct Source {
     #[arg(long, default_value_t = DEFAULT_SAMPLES, conflicts_with = "csv")]
     pub samples: usize,
     /// Integrator of the simulation, as `routh simulate --method` takes it.
-    #[arg(long, default_value = "dop853", value_parser = super::simulate::parse_method, conflicts_with = "csv")]
+    #[arg(long, default_value = "dop853", value_parser = super::integration::parse_method, conflicts_with = "csv")]
     pub method: Method,
 }
 
@@ -45,13 +45,6 @@ impl Source {
             return Table::read_csv(path);
         }
         let case = Case::load(self.case.as_deref())?;
-        let t_end = self.t_end.unwrap_or(case.integration.t_end());
-        routh::case::check_option(
-            "t_end",
-            t_end,
-            t_end.is_finite() && t_end > 0.0,
-            "must be finite and > 0",
-        )?;
         if !(2..=MAX_SAMPLES).contains(&self.samples) {
             return Err(RouthError::Option {
                 name: "samples",
@@ -60,7 +53,12 @@ impl Source {
             }
             .into());
         }
-        simulate_full(&case, self.method, t_end, self.samples)
+        let overrides = Overrides {
+            method: Some(self.method),
+            t_end: self.t_end,
+            ..Overrides::default()
+        };
+        simulate_full(&case, &overrides, self.samples)
     }
 }
 

@@ -3,8 +3,8 @@
 //! figure of two components of them (PNG and SVG) and the summary, as text or JSON.
 
 use super::diagram::both_formats;
+use super::integration::{parse_method, Integration};
 use super::plot::create_dir;
-use super::simulate::{parse_method, Integration};
 use super::Readable;
 use routh::case::Case;
 use routh::figure::SectionFigure;

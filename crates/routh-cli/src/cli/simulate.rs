@@ -1,6 +1,7 @@
 //! `routh simulate`: integrate a case and report the integrals' drift; optionally write
 //! dense-output samples to CSV.
 
+use super::integration::{parse_method, Integration};
 use super::{Readable, ReportStream};
 use routh::case::{Case, SlidingStart};
 use routh::contact::sliding::{SlidingSummary, OBSERVATION_NAMES};
@@ -8,7 +9,7 @@ use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::row::{csv_line, Cell};
-use routh::simulate::{Settings, SettingsBuilder, Summary};
+use routh::simulate::{Settings, Summary};
 use routh::table::{sample_columns, simulate_samples, sliding_samples};
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
@@ -22,15 +23,9 @@ pub struct Args {
     /// Case file (TOML); the built-in default case when omitted.
     #[arg(long)]
     pub case: Option<PathBuf>,
-    /// Final time.
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_end: Option<f64>,
-    /// Relative tolerance of DOP853.
-    #[arg(long, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// Absolute tolerance, in the motion's units (gamma dimensionless, M in units of m R^2 / T: see the README); at least 1e-150.
-    #[arg(long, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
+    /// The final time, tolerances and step limit.
+    #[command(flatten)]
+    pub integration: Integration,
     /// Integrator: `dop853` (adaptive, 8th order), `vern9` (adaptive, 9th order), `taylor` (Taylor series, adaptive order and step), `auto` (the fastest for the tolerance, with or without `--project`) or `rk4` / `rk4:<steps>` (fixed step).
     #[arg(long, default_value = "dop853", value_parser = parse_method)]
     pub method: Method,
@@ -49,10 +44,6 @@ pub struct Args {
     /// summary then goes to standard error).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Most steps the integrator may take (DOP853: accepted and rejected; RK4: its step
-    /// count); default: the case's `max_steps`, 10000000 unless set.
-    #[arg(long)]
-    pub max_steps: Option<usize>,
     /// Also rebuild the motion in space: add the orientation quaternion (qw, qx, qy, qz), the
     /// centre of mass (x, y, z) and the contact point (contact_x, contact_y) to the CSV.
     #[arg(long)]
@@ -62,91 +53,12 @@ pub struct Args {
     pub json: bool,
 }
 
-pub fn parse_method(s: &str) -> std::result::Result<Method, String> {
-    s.parse()
-        .map_err(|e: routh::integrate::ParseMethodError| e.to_string())
-}
-
-/// The options of the integration that `lyapunov` and `section` take beside their method;
-/// each overrides the case's `[integration]` ([`Overrides`]).
-#[derive(clap::Args, Debug)]
-pub struct Integration {
-    /// Final time (default: the case's t_end).
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_end: Option<f64>,
-    /// Relative tolerance.
-    #[arg(long, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// Absolute tolerance, in the motion's units (as `routh simulate --atol`).
-    #[arg(long, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
-    /// Most steps of each run (`lyapunov`: of each renormalisation interval's run); default:
-    /// the case's max_steps.
-    #[arg(long)]
-    pub max_steps: Option<usize>,
-}
-
-impl Integration {
-    /// The settings of `case` with these options and the integrator `method`, unprojected and
-    /// without samples (the runs of `lyapunov` and `section`), validated as they are built.
-    pub fn settings(&self, method: Method, case: &Case) -> Result<Settings> {
-        let overrides = Overrides {
-            method,
-            t_end: self.t_end,
-            rtol: self.rtol,
-            atol: self.atol,
-            max_steps: self.max_steps,
-        };
-        Ok(overrides
-            .applied_to(case)
-            .projection(false, 1)
-            .samples(0)
-            .build()?)
-    }
-}
-
-/// The command-line overrides of a case's `[integration]` that every command integrating a
-/// case takes (`simulate`, `lyapunov`); `None` keeps the case's value.
-pub struct Overrides {
-    /// The integrator.
-    pub method: Method,
-    /// `--t-end`.
-    pub t_end: Option<f64>,
-    /// `--rtol`.
-    pub rtol: Option<f64>,
-    /// `--atol`.
-    pub atol: Option<f64>,
-    /// `--max-steps`.
-    pub max_steps: Option<usize>,
-}
-
-impl Overrides {
-    /// The case's settings with these overrides, to be completed and built ([`Settings`]:
-    /// the same rules and messages as the sweep's and Python's).
-    pub fn applied_to(&self, case: &Case) -> SettingsBuilder {
-        let base = case.integration;
-        base.to_builder()
-            .method(self.method)
-            .t_end(self.t_end.unwrap_or(base.t_end()))
-            .tolerances(
-                self.rtol.unwrap_or(base.rtol()),
-                self.atol.unwrap_or(base.atol()),
-            )
-            .max_steps(self.max_steps.unwrap_or(base.max_steps()))
-    }
-}
-
 /// The settings of a case with the command-line overrides applied, validated as they are
 /// built ([`Settings`]: the same rules and messages as the sweep's and Python's).
 pub fn settings(case: &Case, args: &Args, samples: usize) -> Result<Settings> {
-    let overrides = Overrides {
-        method: args.method,
-        t_end: args.t_end,
-        rtol: args.rtol,
-        atol: args.atol,
-        max_steps: args.max_steps,
-    };
-    Ok(overrides
+    Ok(args
+        .integration
+        .overrides(args.method)
         .applied_to(case)
         .projection(args.project, args.project_every)
         .samples(samples)

@@ -1,11 +1,12 @@
 //! `routh sweep`: many runs of a case over the quantities of its `[sweep]` table, one row per
 //! run, written as the runs finish; Ctrl-C or SIGTERM stop it cleanly and `--resume` goes on.
 
+use super::integration::{parse_method, Integration};
 use routh::integrate::Method;
 use routh::sweep::open;
 use routh::sweep::record::Row;
 use routh::sweep::table::{Resumed, TableWriter};
-use routh::sweep::{pool, Columns, Completion, Overrides, Sweep};
+use routh::sweep::{pool, Columns, Completion, Sweep};
 use routh::{AppResult as Result, FileError, RouthError};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -29,24 +30,14 @@ pub struct Args {
     /// Case file (TOML) with a [sweep] table.
     #[arg(long)]
     pub case: PathBuf,
-    /// Final time.
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_end: Option<f64>,
-    /// Relative tolerance of DOP853.
-    #[arg(long, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// Absolute tolerance, in the motion's units (gamma dimensionless, M in units of m R^2 / T: see the README); at least 1e-150.
-    #[arg(long, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
-    /// The most steps of one run (default: the case's `max_steps`, else 10,000,000); a run
-    /// that needs more is a row with that reason.
-    #[arg(long)]
-    pub max_steps: Option<usize>,
+    /// The final time, tolerances and step limit of every run.
+    #[command(flatten)]
+    pub integration: Integration,
     /// Integrator: `auto` (the default), `dop853`, `vern9`, `taylor` or `rk4` /
     /// `rk4:<steps>`; `auto` picks by the sweep's own measured table (`SWEEP_AUTO_TABLE`: the
     /// Taylor lanes, with an error near the tolerance and the most runs per second from 1e-6
     /// to 1e-13) and the rows name the method that ran.
-    #[arg(long, default_value = "auto", value_parser = super::simulate::parse_method)]
+    #[arg(long, default_value = "auto", value_parser = parse_method)]
     pub method: Method,
     /// Worker threads (default, or 0: one per core; at most 4 per available core).
     #[arg(long)]
@@ -162,15 +153,8 @@ pub fn run(args: Args) -> Result<()> {
         }
         .into());
     }
-    let overrides = Overrides {
-        method: args.method,
-        t_end: args.t_end,
-        rtol: args.rtol,
-        atol: args.atol,
-        max_steps: args.max_steps,
-        columns: args.columns,
-    };
-    let mut sweep = Sweep::new(&text, &source, overrides)?;
+    let overrides = args.integration.overrides(args.method);
+    let mut sweep = Sweep::new(&text, &source, overrides, args.columns)?;
     sweep.batch = !args.no_batch;
     let sweep = Arc::new(sweep);
     let names: Vec<String> = sweep.table_columns().into_iter().map(|c| c.0).collect();

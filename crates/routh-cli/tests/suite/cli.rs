@@ -2315,7 +2315,7 @@ mod plot {
     //! `routh plot` and `routh animate`, run as a user would: the files exist, are not empty, have
     //! the promised dimensions; bad input exits with code 2 and a message.
 
-    use routh::case::Case;
+    use routh::case::{Case, Overrides};
     use routh::integrate::Method;
     use routh::table::{simulate_full, Table};
     use std::path::{Path, PathBuf};
@@ -2323,6 +2323,17 @@ mod plot {
 
     use crate::common;
     use common::{assert_exit_2, routh};
+
+    /// The samples of `routh plot --method METHOD --t-end T_END --samples SAMPLES` on `case`
+    /// (its simulation, `routh::table::simulate_full`).
+    fn plotted(case: &Case, method: Method, t_end: f64, samples: usize) -> Table {
+        let overrides = Overrides {
+            method: Some(method),
+            t_end: Some(t_end),
+            ..Overrides::default()
+        };
+        simulate_full(case, &overrides, samples).unwrap()
+    }
 
     /// The figure size promised by `routh::plot::SIZE`.
     const WIDTH: u32 = 960;
@@ -2502,7 +2513,7 @@ mod plot {
                 file.to_str().unwrap(),
             ]));
             let from_csv = Table::read_csv(&file).unwrap();
-            let simulated = simulate_full(&case, method, 2.0, 51).unwrap();
+            let simulated = plotted(&case, method, 2.0, 51);
             assert_eq!(from_csv.names(), simulated.names());
             for name in simulated.names() {
                 let (a, b) = (
@@ -2646,8 +2657,7 @@ mod plot {
         names.push("difference");
         written(&ok(&out), &dir, &names, "png");
         let exact = Table::read_csv(&quadrature).unwrap();
-        let simulated =
-            simulate_full(&Case::default_case().unwrap(), Method::Dop853, 2.0, 101).unwrap();
+        let simulated = plotted(&Case::default_case().unwrap(), Method::Dop853, 2.0, 101);
         for name in ["gamma1", "gamma2", "gamma3", "M1", "M2", "M3"] {
             let worst = exact
                 .column(name)

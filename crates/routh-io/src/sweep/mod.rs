@@ -25,7 +25,7 @@ pub mod table;
 pub mod turning;
 
 pub use columns::Columns;
-pub use runner::{pool, Completion, Overrides, Sweep};
+pub use runner::{pool, Completion, Sweep};
 
 use crate::error::{AppResult as Result, RouthError};
 use std::path::Path;

@@ -13,7 +13,7 @@ use super::turning::{NutationEvents, TurningPoints};
 use crate::ball::Ball;
 use crate::batch::{self, Job, Queue, LANES};
 use crate::body::Body;
-use crate::case::{Case, CaseValues};
+use crate::case::{Case, CaseValues, Overrides};
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::ExactSolution;
@@ -198,25 +198,6 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
     }
 }
 
-/// The settings given beside the case file (on the command line or in Python); those left
-/// `None` come from the case's `[integration]` table.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Overrides {
-    /// The integrator.
-    pub method: Method,
-    /// Final time.
-    pub t_end: Option<f64>,
-    /// Relative tolerance.
-    pub rtol: Option<f64>,
-    /// Absolute tolerance.
-    pub atol: Option<f64>,
-    /// The most steps of one run (`--max-steps`).
-    pub max_steps: Option<usize>,
-    /// The columns of the table (`--columns`; default: the `[sweep]` table's `columns`, else
-    /// [`Columns::default`]).
-    pub columns: Option<Columns>,
-}
-
 /// How [`Sweep::execute`] ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Completion {
@@ -331,11 +312,16 @@ impl Sweep {
     /// every run's case built and validated before any run starts: a bad table or a value
     /// that makes a body or a state invalid is refused, naming the key and the value. The
     /// settings of every run are the case's (no projection, no samples) with `overrides`
-    /// applied, validated as they are built, as `routh simulate` builds its own. The columns
-    /// of the table are `overrides.columns`, else the `[sweep]` key `columns`, else
-    /// [`Columns::default`].
-    pub fn new(text: &str, source: &str, overrides: Overrides) -> Result<Self> {
-        Self::for_runs(text, source, overrides, 0, None)
+    /// applied ([`Overrides::applied_to`], as `routh simulate` builds its own), the method
+    /// then [`resolve`]d for the tolerances. The columns of the table are `columns`, else the
+    /// `[sweep]` key `columns`, else [`Columns::default`].
+    pub fn new(
+        text: &str,
+        source: &str,
+        overrides: Overrides,
+        columns: Option<Columns>,
+    ) -> Result<Self> {
+        Self::for_runs(text, source, overrides, columns, 0, None)
     }
 
     /// The sweep of [`Sweep::new`] whose runs `start <= run < stop` (`stop` by default the
@@ -345,19 +331,15 @@ impl Sweep {
         text: &str,
         source: &str,
         overrides: Overrides,
+        columns: Option<Columns>,
         start: u64,
         stop: Option<u64>,
     ) -> Result<Self> {
         let case = Case::parse(text, source)?;
-        let base = case.integration;
-        let rtol = overrides.rtol.unwrap_or(base.rtol());
-        let atol = overrides.atol.unwrap_or(base.atol());
-        let settings = base
+        let asked = overrides.applied_to(&case).build()?;
+        let settings = asked
             .to_builder()
-            .method(resolve(overrides.method, rtol.min(atol)))
-            .t_end(overrides.t_end.unwrap_or(base.t_end()))
-            .tolerances(rtol, atol)
-            .max_steps(overrides.max_steps.unwrap_or(base.max_steps()))
+            .method(resolve(asked.method(), asked.rtol().min(asked.atol())))
             .build()?;
         let mut table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
@@ -368,7 +350,7 @@ impl Sweep {
             message: e.to_string(),
         };
         let listed = table.remove("columns");
-        let columns = match (overrides.columns, listed) {
+        let columns = match (columns, listed) {
             (Some(columns), _) => columns,
             (None, Some(listed)) => Columns::from_toml(&listed).map_err(refused)?,
             (None, None) => Columns::default(),
