@@ -415,21 +415,17 @@ impl PyProblem {
     }
 
     /// The problem of a case file (TOML, the schema of `routh simulate`; the built-in default
-    /// case when `path` is None): its body, initial state, `t_span = (0, t_end)`, rtol, atol.
+    /// case when `path` is None): its body, initial state, `t_span = (0, t_end)`, rtol, atol, max_steps.
     #[staticmethod]
     #[pyo3(signature = (path = None, full = false))]
     fn from_case(path: Option<PathBuf>, full: bool) -> PyResult<Self> {
         let case = Case::load(path.as_deref()).map_err(python_error)?;
-        let i = case.integration;
-        let settings = Settings::builder()
-            .t_end(i.t_end())
-            .tolerances(i.rtol(), i.atol())
-            .build()
-            .map_err(python_error)?;
+        // The case's [integration] as every command reads it (its max_steps included).
+        let settings = case.integration;
         Ok(PyProblem {
             body: Rolling::of_case(&case, "a Python Problem"),
             x0: case.initial,
-            t_span: (0.0, i.t_end()),
+            t_span: (0.0, settings.t_end()),
             settings,
             full,
         })

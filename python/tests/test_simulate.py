@@ -215,6 +215,24 @@ def test_drift_and_counters(case):
     assert routh.Problem.from_case().t_span == (0.0, routh.default_case()[2])
 
 
+def test_problem_from_case_keeps_the_case_integration_table(tmp_path):
+    # A case's [integration] is read as every command reads it: its max_steps too (it was
+    # dropped, so a Python run of a case took up to 10^7 steps where `routh simulate` took 5).
+    case = tmp_path / "few_steps.toml"
+    case.write_text(
+        "[body]\nm = 1.0\nR = 1.0\na = 0.3\nI1 = 0.4\nI3 = 0.5\n"
+        "[initial]\ngamma = [0.0, 0.0, 1.0]\nomega = [0.5, 0.2, 8.0]\n"
+        "[integration]\nt_end = 10.0\nrtol = 1e-10\natol = 1e-10\nmax_steps = 5\n"
+    )
+    problem = routh.Problem.from_case(str(case))
+    assert (problem.rtol, problem.atol, problem.t_span) == (1e-10, 1e-10, (0.0, 10.0))
+    solution = problem.solve()
+    assert not solution.success and "max_steps = 5" in solution.message, solution.message
+    # Control: without the limit the same case reaches t_end.
+    case.write_text(case.read_text().replace("max_steps = 5\n", ""))
+    assert routh.Problem.from_case(str(case)).solve().success
+
+
 def test_theta_event_is_the_gamma3_event(case):
     # theta = c and gamma3 = cos(c) are the same crossings (arccos is monotone).
     body, x0 = case
