@@ -4,9 +4,7 @@
 
 use super::record::{Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{
-    check_resumed_row, not_this_sweep, other_columns, PartialRow, Resumed, Staged, TableWriter,
-};
+use super::table::{not_this_sweep, other_columns, PartialRow, Resumed, Staged, TableWriter};
 use crate::error::{AppResult as Result, FileError};
 use std::io::{BufRead, BufWriter, Write};
 use std::path::Path;
@@ -100,7 +98,7 @@ impl CsvTable {
                 };
                 let run = number(0)? as u64;
                 let values: Vec<f64> = (1..fixed).map(number).collect::<Result<_>>()?;
-                check_resumed_row(sweep, target, run, &values)?;
+                sweep.check_resumed_row(target, run, &values)?;
                 if fields[fixed] != sweep.run_settings().method {
                     return Err(not_this_sweep(
                         target,

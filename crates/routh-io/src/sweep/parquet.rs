@@ -11,9 +11,7 @@
 
 use super::record::{Row, RunSettings};
 use super::runner::Sweep;
-use super::table::{
-    check_resumed_row, not_this_sweep, other_columns, Resumed, Staged, TableWriter,
-};
+use super::table::{not_this_sweep, other_columns, Resumed, Staged, TableWriter};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::row::{Cell, Kind};
 use parquet::basic::{Compression, LogicalType, Repetition, Type as PhysicalType};
@@ -272,7 +270,7 @@ impl ParquetTable {
                 ) else {
                     return Err(not_this_sweep(target, "a row without its run or settings"));
                 };
-                check_resumed_row(sweep, target, *run, &values)?;
+                sweep.check_resumed_row(target, *run, &values)?;
                 if !done.insert(*run) {
                     return Err(not_this_sweep(target, format!("run {run} appears twice")));
                 }

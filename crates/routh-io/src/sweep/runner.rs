@@ -8,7 +8,7 @@ use super::columns::Columns;
 use super::design::Design;
 use super::record::{columns, NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
-use super::table::TableWriter;
+use super::table::{not_this_sweep, TableWriter};
 use super::turning::{NutationEvents, TurningPoints};
 use crate::ball::Ball;
 use crate::batch::{self, Job, Queue, LANES};
@@ -22,6 +22,7 @@ use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings,
 use crate::state::{Point, State};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
+use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{channel, RecvTimeoutError};
 use std::sync::{Arc, Mutex};
@@ -405,6 +406,35 @@ impl Sweep {
     /// The design.
     pub fn design(&self) -> &Design {
         &self.design
+    }
+
+    /// Check that `values` (the swept values and settings read from row `run` of the existing
+    /// table `path`) are those of run `run` of this sweep, bit for bit.
+    pub fn check_resumed_row(&self, path: &Path, run: u64, values: &[f64]) -> Result<()> {
+        if run >= self.runs() {
+            return Err(not_this_sweep(
+                path,
+                format!("run {run} is not a run of this sweep"),
+            ));
+        }
+        let s = self.run_settings();
+        let expected: Vec<f64> = self
+            .design()
+            .point(run)
+            .into_iter()
+            .chain([s.t_end, s.rtol, s.atol])
+            .collect();
+        if values
+            .iter()
+            .map(|v| v.to_bits())
+            .ne(expected.iter().map(|v| v.to_bits()))
+        {
+            return Err(not_this_sweep(
+                path,
+                format!("run {run} has the values {values:?}, this sweep {expected:?} (swept quantities, t_end, rtol, atol)"),
+            ));
+        }
+        Ok(())
     }
 
     /// The settings as written in each row.

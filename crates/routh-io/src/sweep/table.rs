@@ -7,7 +7,6 @@
 //! settings and design), copied, and their runs skipped.
 
 use super::record::Row;
-use super::runner::Sweep;
 use crate::error::{AppError, AppResult as Result, FileError};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -143,33 +142,4 @@ pub fn other_columns(path: &Path, found: &[String], asked: &[String]) -> AppErro
             missing(asked, found)
         ),
     )
-}
-
-/// Check that `values` (the swept values and settings read from row `run` of an existing
-/// file) are those of run `run` of `sweep`, bit for bit.
-pub fn check_resumed_row(sweep: &Sweep, path: &Path, run: u64, values: &[f64]) -> Result<()> {
-    if run >= sweep.runs() {
-        return Err(not_this_sweep(
-            path,
-            format!("run {run} is not a run of this sweep"),
-        ));
-    }
-    let s = sweep.run_settings();
-    let expected: Vec<f64> = sweep
-        .design()
-        .point(run)
-        .into_iter()
-        .chain([s.t_end, s.rtol, s.atol])
-        .collect();
-    if values
-        .iter()
-        .map(|v| v.to_bits())
-        .ne(expected.iter().map(|v| v.to_bits()))
-    {
-        return Err(not_this_sweep(
-            path,
-            format!("run {run} has the values {values:?}, this sweep {expected:?} (swept quantities, t_end, rtol, atol)"),
-        ));
-    }
-    Ok(())
 }

@@ -4,9 +4,10 @@
 
 use super::monodromy::{monodromy, Monodromy};
 use super::relative_equilibria::RelativeEquilibrium;
-use super::relative_equilibria::{critical_curves, plane_units, vertical_spin_at, CriticalCurve};
+use super::relative_equilibria::{critical_curves, vertical_spin_at, CriticalCurve};
 use super::stability::StabilityType;
 use super::tori::torus_count;
+use super::value::plane_units;
 use super::value::{jellett_in_units, Value};
 use crate::body::Body;
 use crate::error::{Result, RouthError};

@@ -19,9 +19,9 @@ pub use energy_momentum::{clearance, Diagram, Resolution, TorusGrid, Window};
 pub use energy_momentum::{largest_h3, sleeping_tops, threshold_h3, SleepingTop, MAX_SPIN_RATIO};
 pub use monodromy::{follow_loop, monodromy, winding, LoopPoint, Monodromy};
 pub use relative_equilibria::{
-    critical_curves, plane_rate, plane_units, precession_spins, steady_precession_at,
-    vertical_spin_at, CriticalCurve, RelativeEquilibrium,
+    critical_curves, precession_spins, steady_precession_at, vertical_spin_at, CriticalCurve,
+    RelativeEquilibrium,
 };
 pub use stability::{linearise, Eigenvalue, Linearisation, StabilityType};
 pub use tori::{integrate_level_set, torus_count, Excursion, TorusCount};
-pub use value::Value;
+pub use value::{plane_rate, plane_units, Value};

@@ -20,7 +20,7 @@
 
 use super::stability::{confirmed, labelled, linearise, Eigenvalue, StabilityType};
 use super::tori::root;
-use super::value::Value;
+use super::value::{plane_units, Value};
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrals::jellett;
@@ -143,21 +143,6 @@ pub fn vertical_spin_at(body: &Body, pole: f64, h3: f64) -> Result<RelativeEquil
     let state = vertical_spin_state(body, pole, h3 / per_spin)?;
     let theta = if pole > 0.0 { 0.0 } else { PI };
     RelativeEquilibrium::new(body, theta, state, 0.0)
-}
-
-/// The spin rate of the faster vertical spin at Jellett's `h3` (`|h3 / H3(w = 1)|`, H3
-/// linear in the spin at each pole).
-pub fn plane_rate(body: &Body, h3: f64) -> Result<f64> {
-    [1.0, -1.0].into_iter().try_fold(0.0_f64, |rate, pole| {
-        let unit = vertical_spin_state(body, pole, 1.0)?;
-        Ok(rate.max((h3 / jellett(body, &unit.to_array())).abs()))
-    })
-}
-
-/// The units of the plane at Jellett's `h3` ([`Units::with_rate`] with [`plane_rate`]): in
-/// them the faster of the fall and the vertical spins is 1.
-pub fn plane_units(body: &Body, h3: f64) -> Result<Units> {
-    Ok(Units::with_rate(body, plane_rate(body, h3)?))
 }
 
 /// The scale of the spin rate at Jellett's `h3`, `1 / T` of [`plane_units`], used only to

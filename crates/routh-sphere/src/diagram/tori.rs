@@ -24,8 +24,7 @@
 //! [`integrate_level_set`] checks a count independently: it integrates (mg-eq) with DOP853 from
 //! points sampled on the level set and records the range of gamma3 each trajectory covers.
 
-use super::relative_equilibria::plane_rate;
-use super::value::Value;
+use super::value::{plane_rate, Value};
 use crate::body::Body;
 use crate::error::{Result, RouthError};
 use crate::integrate::{brent, Method};

@@ -1,4 +1,5 @@
-//! A value (H1, H3, K) of the integrals: a point of the energy–momentum diagram, shared by
+//! A value (H1, H3, K) of the integrals: a point of the energy–momentum diagram, and the
+//! units of the diagram's plane at one H3 ([`plane_units`]), shared by
 //! the relative equilibria ([`super::relative_equilibria`]), the count of tori
 //! ([`super::tori`]) and the monodromy ([`super::monodromy`]).
 
@@ -7,6 +8,7 @@ use crate::error::Result;
 use crate::integrals::{energy, jellett, routh_integral};
 use crate::quadrature::Reduction;
 use crate::state::State;
+use crate::steady::vertical_spin_state;
 use crate::units::Units;
 use serde::Serialize;
 
@@ -62,4 +64,19 @@ impl Value {
 /// Jellett's H3 = (M, r), an angular momentum times a length, in `units`: `H3 T / (m R^3)`.
 pub fn jellett_in_units(h3: f64, units: &Units) -> f64 {
     h3 / units.momentum() / units.length()
+}
+
+/// The spin rate of the faster vertical spin at Jellett's `h3` (`|h3 / H3(w = 1)|`, H3
+/// linear in the spin at each pole).
+pub fn plane_rate(body: &Body, h3: f64) -> Result<f64> {
+    [1.0, -1.0].into_iter().try_fold(0.0_f64, |rate, pole| {
+        let unit = vertical_spin_state(body, pole, 1.0)?;
+        Ok(rate.max((h3 / jellett(body, &unit.to_array())).abs()))
+    })
+}
+
+/// The units of the plane at Jellett's `h3` ([`Units::with_rate`] with [`plane_rate`]): in
+/// them the faster of the fall and the vertical spins is 1.
+pub fn plane_units(body: &Body, h3: f64) -> Result<Units> {
+    Ok(Units::with_rate(body, plane_rate(body, h3)?))
 }
