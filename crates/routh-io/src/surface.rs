@@ -62,7 +62,7 @@ pub fn parse_direction(text: &str, what: &'static str) -> Result<Direction> {
 pub struct SurfaceEvent {
     /// The plane `x[i] = c`.
     pub plane: Plane,
-    /// The crossings that count: `up` (x[i] increasing through c), `down` or `both`.
+    /// The crossings that count: `up` (`x[i]` increasing through `c`), `down` or `both`.
     pub direction: Direction,
 }
 
