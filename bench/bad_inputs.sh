@@ -220,6 +220,21 @@ for kv in "mu = 0.3|mu = -1" "mu = 0.3|mu = nan" "mu = 0.3|mu = inf" "law = \"sl
 done
 try new ok simulate --case "$TIPPE" --t-end 1 --json
 for cmd in exact steady sweep lyapunov; do try new refused $cmd --case "$TIPPE"; done
+# The user events of a sweep (issue 34): the [sweep] key `events` and the option --events.
+sed 's/t_end = 100.0/t_end = 1.0/' "$DEFAULT" > "$DIR/events.toml"
+printf '\n[sweep]\ntilt = { values = [0.3, 0.6] }\n' >> "$DIR/events.toml"
+for listed in '["omega1 = 0"]' '["gamma1 = inf"]' '["gamma1 = nan up"]' '["gamma1 = 0 sideways"]' \
+              '["gamma1 = 0:up"]' '"gamma1 = 0"' '[1.0]' '[["gamma1 = 0"]]' '{ a = 1 }'; do
+  (cat "$DIR/events.toml"; printf 'events = %s\n' "$listed") > "$DIR/e.toml"
+  try new refused sweep --case "$DIR/e.toml" --out "$DIR/events.csv"
+done
+for events in "gamma1 = inf" "gamma4 = 0" "gamma1 = 0:up" "gamma1 = 0 left" "gamma1 = 0," "" \
+              "$(printf 'gamma1 = 0,%.0s' $(seq 32))gamma1 = 0"; do
+  try new refused sweep --case "$DIR/events.toml" --events "$events" --out "$DIR/events.csv"
+done
+try new refused sweep --case "$DIR/events.toml" --events "gamma1 = 0" --columns event1_count --out "$DIR/events.csv"
+[[ -e $DIR/events.csv ]] && { echo "WRONG: a refused sweep wrote its table" >&2; wrong_total=$((wrong_total+1)); }
+try new ok sweep --case "$DIR/events.toml" --events "gamma1 = 0,M1 = -2.5e-1 up" --out "$DIR/events.csv"
 
 printf '| class | tried | refused (exit 2, message) | ok (exit 0, no NaN) | wrong |\n|---|---|---|---|---|\n'
 total=0

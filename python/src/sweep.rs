@@ -8,22 +8,27 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 use routh_core::case::Overrides;
 use routh_core::integrate::Method;
 use routh_core::row::{Cell, Kind};
+use routh_core::surface::parse_event;
 use routh_core::sweep::{Columns, Sweep};
 use std::path::PathBuf;
 
 /// `sweep(path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto",
-/// threads=None, start=0, stop=None, columns=None)`: run the runs `start <= run < stop` of the
+/// threads=None, start=0, stop=None, columns=None, events=None)`: run the runs `start <= run < stop` of the
 /// sweep in the case file `path` (or the case text `text`), in parallel on `threads` threads
 /// (default: one per core), and return a `pyarrow.Table`, one row per run in the order of
 /// `run` (call `.to_pandas()` for a DataFrame). `columns` (a list of names and groups, as
 /// `routh sweep --columns`: `"final"`, `"integrals"`, `"events"`, `"quadrature"`,
 /// `"nutation"`, `"all"`, or single columns) chooses the columns, and only what they need is
-/// computed; default: the `[sweep]` table's `columns`, else `["final", "integrals"]`. The schema's metadata holds the case text
+/// computed; default: the `[sweep]` table's `columns`, else `["final", "integrals",
+/// "user_events"]`. `events` (a list of planes with an optional direction, as `routh sweep
+/// --events`: `["gamma3 = 0.9", "M1 = 0.5 up"]`) are the user's events, whose crossings
+/// along each run are counted (`event{k}_count`, `event{k}_first_t`, group `user_events`);
+/// default: the `[sweep]` table's `events`, else none. The schema's metadata holds the case text
 /// (`routh.case`) and the version (`routh.version`). `method="auto"` (the default) runs the
 /// sweep's own choice, as `routh sweep` does (the Taylor lanes). Every run gives the numbers of
 /// `routh simulate` on its case, whatever the thread count or the slicing.
 #[pyfunction]
-#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto", threads=None, start=0, stop=None, columns=None))]
+#[pyo3(signature = (path=None, *, text=None, t_end=None, rtol=None, atol=None, method="auto", threads=None, start=0, stop=None, columns=None, events=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -37,6 +42,7 @@ pub fn sweep<'py>(
     start: u64,
     stop: Option<u64>,
     columns: Option<Vec<String>>,
+    events: Option<Vec<String>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let (text, source) = match (path, text) {
         (Some(p), None) => (
@@ -61,6 +67,15 @@ pub fn sweep<'py>(
         .map(|names| Columns::parse(names.iter().map(String::as_str)))
         .transpose()
         .map_err(|e| PyValueError::new_err(format!("columns: {e}")))?;
+    let events = events
+        .map(|texts| {
+            texts
+                .iter()
+                .map(|text| parse_event(text, "events"))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .transpose()
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let overrides = Overrides {
         method: Some(method),
         t_end,
@@ -73,7 +88,7 @@ pub fn sweep<'py>(
     }
     let (names, rows, settings, case_text) = py
         .detach(|| -> Result<_, String> {
-            let sweep = Sweep::for_runs(&text, &source, overrides, columns, start, stop)
+            let sweep = Sweep::for_runs(&text, &source, overrides, columns, events, start, stop)
                 .map_err(|e| e.to_string())?;
             let stop = stop.unwrap_or(sweep.runs());
             let rows = sweep

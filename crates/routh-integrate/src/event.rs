@@ -1,5 +1,6 @@
 //! Event location: a bracketing scalar root finder ([`brent`]) and the one event locator
-//! ([`locate`]) that the driver, the sweep and the Python bindings share.
+//! ([`locate_into`], and [`locate`] into a new list) that the driver, the sweep, sections
+//! and the Python bindings share.
 
 /// Finds a root of `f` in the bracket `[a, b]` (or `[b, a]`) by Brent's method
 /// (inverse quadratic interpolation, secant and bisection; R. P. Brent,
@@ -154,27 +155,45 @@ pub struct Unlocated {
 const LOCATE_ITERATIONS: usize = 200;
 
 /// The crossings of the event functions `g(i, t, y)` (`i` indexing `specs`) on one step
-/// `[ta, tb]` (either direction) whose dense output is `dense`: the one event locator of
-/// the driver, the sweep and Python.
+/// `[ta, tb]` (either direction) whose dense output is `dense`: [`locate_into`] in a new list.
+pub fn locate<const N: usize>(
+    dense: &dyn Fn(f64) -> [f64; N],
+    span: (f64, f64),
+    specs: &[EventSpec],
+    g: &mut dyn FnMut(usize, f64, &[f64; N]) -> f64,
+    g_start: &[f64],
+    g_end: &[f64],
+) -> Result<Vec<Crossing>, Unlocated> {
+    let mut found = vec![];
+    locate_into(dense, span, specs, g, g_start, g_end, &mut found)?;
+    Ok(found)
+}
+
+/// The crossings of the event functions `g(i, t, y)` (`i` indexing `specs`) on one step
+/// `[ta, tb]` (either direction) whose dense output is `dense`, written into `found` (cleared
+/// first; a caller that keeps the list from step to step allocates nothing once it holds
+/// as many crossings as there are events): the one event locator of the driver, the sweep,
+/// sections and Python.
 ///
 /// `g_start[i]` and `g_end[i]` are the values of event `i` at the step ends (at `tb` on the
 /// state as the step computed it). Every event whose change from `g_start` to `g_end` crosses
 /// in its [`Direction`] is located by [`brent`] on `g(i, t, dense(t))` to about 2 ulp of `t`
-/// (at `tb` itself when `g_end` is zero). The crossings come in the order of time (ties in
-/// the order of `specs`), and the list ends with the first terminal one. At most one zero of
-/// each function is found per step: the step is assumed short enough that the function
-/// changes sign at most once on it.
-pub fn locate<const N: usize>(
+/// (at `tb` itself when `g_end` is zero); the others cost nothing beyond that test. The
+/// crossings come in the order of time (ties in the order of `specs`), and the list ends with
+/// the first terminal one. At most one zero of each function is found per step: the step is
+/// assumed short enough that the function changes sign at most once on it.
+pub fn locate_into<const N: usize>(
     dense: &dyn Fn(f64) -> [f64; N],
     (ta, tb): (f64, f64),
     specs: &[EventSpec],
     g: &mut dyn FnMut(usize, f64, &[f64; N]) -> f64,
     g_start: &[f64],
     g_end: &[f64],
-) -> Result<Vec<Crossing>, Unlocated> {
+    found: &mut Vec<Crossing>,
+) -> Result<(), Unlocated> {
+    found.clear();
     let scale = ta.abs().max(tb.abs()).max((tb - ta).abs());
     let tol = 2.0 * f64::EPSILON * scale;
-    let mut found = vec![];
     for (i, spec) in specs.iter().enumerate() {
         if !spec.direction.crosses(g_start[i], g_end[i]) {
             continue;
@@ -192,11 +211,17 @@ pub fn locate<const N: usize>(
         });
     }
     let dir = if tb >= ta { 1.0 } else { -1.0 };
-    found.sort_by(|a, b| ((a.t - ta) * dir).total_cmp(&((b.t - ta) * dir)));
+    // In place (a stable sort may allocate): ties keep the order of `specs`, in which the
+    // crossings were pushed.
+    found.sort_unstable_by(|a, b| {
+        ((a.t - ta) * dir)
+            .total_cmp(&((b.t - ta) * dir))
+            .then(a.event.cmp(&b.event))
+    });
     if let Some(first) = found.iter().position(|c| c.terminal) {
         found.truncate(first + 1);
     }
-    Ok(found)
+    Ok(())
 }
 
 #[cfg(test)]

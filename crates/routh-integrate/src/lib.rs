@@ -18,8 +18,9 @@
 //! * [`Taylor`]: the Taylor-series method of adaptive order and step (Jorba–Zou) on the field
 //!   recorded into an expression tape ([`OdeSystem::record`]);
 //! * [`Method`] names them, [`stepper`] builds the one chosen (and resolves `auto`);
-//! * [`brent`]: a bracketing scalar root finder; [`locate`]: the one event locator (the
-//!   crossings of several event functions on a step's dense output).
+//! * [`brent`]: a bracketing scalar root finder; [`locate_into`]: the one event locator (the
+//!   crossings of several event functions on a step's dense output, into a list kept from
+//!   step to step), [`locate`] the same into a new list.
 //! * [`variational`]: the variational equations of a field written over
 //!   [`Scalar`](scalar::Scalar) (the tangent flow by automatic differentiation of the same
 //!   field), the monodromy matrix and Floquet multipliers of a periodic orbit.
@@ -55,7 +56,7 @@ use std::str::FromStr;
 pub use control::{Clock, Law, StepControl};
 pub(crate) use dop853::scaled_error;
 pub use dop853::{fixed_step_solve, Dop853};
-pub use event::{brent, locate, Crossing, Direction, EventSpec, Unlocated};
+pub use event::{brent, locate, locate_into, Crossing, Direction, EventSpec, Unlocated};
 pub(crate) use pair::rk_start;
 pub use pair::{hinit, RkStart, RungeKutta};
 pub use rk4::{rk4, Rk4, RK4_A, RK4_B, RK4_C, RK4_DENSE};

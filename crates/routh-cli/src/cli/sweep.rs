@@ -3,6 +3,7 @@
 
 use super::integration::{parse_method, Integration};
 use routh::integrate::Method;
+use routh::surface::parse_events;
 use routh::sweep::open;
 use routh::sweep::record::Row;
 use routh::sweep::table::{Resumed, TableWriter};
@@ -47,12 +48,22 @@ pub struct Args {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// The columns of the table, comma-separated: groups `final`, `integrals`, `events`,
-    /// `quadrature`, `nutation` (events, quadrature and their differences), `all`, or single
-    /// columns (`period_quadrature`, ...); only what they need is computed. Default: the
-    /// `[sweep]` table's `columns`, else `final,integrals` (before, every column: `all`).
+    /// `quadrature`, `nutation` (events, quadrature and their differences), `user_events`
+    /// (the crossings of `--events`), `all`, or single
+    /// columns (`period_quadrature`, `event0_count`, ...); only what they need is computed.
+    /// Default: the `[sweep]` table's `columns`, else `final,integrals,user_events` (the last
+    /// empty without events; before, every column: `all`).
     /// `run`, the swept quantities, the settings, status, message and work are always in.
     #[arg(long, value_parser = parse_columns)]
     pub columns: Option<Columns>,
+    /// The user's events, comma-separated, each a plane of the state and an optional
+    /// direction, `NAME = NUMBER [up|down|both]` (default both), NAME one of gamma1 gamma2
+    /// gamma3 M1 M2 M3: `--events "gamma3 = 0.9,M1 = 0.5 up"`. Their crossings along each run
+    /// (which goes on to t_end) are counted, with the time of the first: the columns
+    /// `event{k}_count`, `event{k}_first_t` (group `user_events`, in the default columns).
+    /// Default: the `[sweep]` table's `events`, else none.
+    #[arg(long)]
+    pub events: Option<String>,
     /// Continue a stopped sweep: keep the rows of `--out` and run only the missing runs (a
     /// last row cut short is dropped, and said, and its run done again).
     #[arg(long)]
@@ -154,7 +165,12 @@ pub fn run(args: Args) -> Result<()> {
         .into());
     }
     let overrides = args.integration.overrides(args.method);
-    let mut sweep = Sweep::new(&text, &source, overrides, args.columns)?;
+    let events = args
+        .events
+        .as_deref()
+        .map(|list| parse_events(list, "events"))
+        .transpose()?;
+    let mut sweep = Sweep::new(&text, &source, overrides, args.columns, events)?;
     sweep.batch = !args.no_batch;
     let sweep = Arc::new(sweep);
     let names: Vec<String> = sweep.table_columns().into_iter().map(|c| c.0).collect();

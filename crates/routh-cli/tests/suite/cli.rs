@@ -835,6 +835,370 @@ mod cli_lyapunov {
     }
 }
 
+mod sweep_events {
+    //! User events in `routh sweep` (issue 34, item 3): planes of the state crossed in a
+    //! direction (`[sweep] events`, `--events`), located on every accepted step of every lane
+    //! by the one event locator, counted with the time of the first crossing. Checked against
+    //! `routh section` with another integrator, lanes against one run at a time, the
+    //! directions against each other, bad events refused, and a copy of the case in other
+    //! units.
+
+    use crate::common;
+    use common::{assert_exit_2, json_of, routh};
+    use serde_json::Value;
+    use std::path::PathBuf;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("routh-sweep-events-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir.join(name)
+    }
+
+    /// The default body (in units scaled by `mass`, `length` and `time`) at rtol = atol =
+    /// 1e-12 to `t_end` (in the unit of `time`), its spin omega = (0.5, 0.2, spin) over
+    /// `time`, and the `[sweep]` table `sweep`.
+    fn case_in_units(
+        name: &str,
+        [mass, length, time]: [f64; 3],
+        t_end: f64,
+        sweep: &str,
+    ) -> PathBuf {
+        let inertia = mass * length * length;
+        let text = format!(
+            "[body]\nm = {mass:?}\nR = {length:?}\na = {:?}\nI1 = {:?}\nI3 = {:?}\nG = {:?}\n\
+             [initial]\ngamma = [0.0, 0.0, 1.0]\nomega = [{:?}, {:?}, 8.0]\n\
+             [integration]\nt_end = {:?}\nrtol = 1e-12\natol = 1e-12\n{sweep}",
+            0.3 * length,
+            0.4 * inertia,
+            0.5 * inertia,
+            9.81 * length / (time * time),
+            0.5 / time,
+            0.2 / time,
+            t_end * time,
+        );
+        let path = scratch(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    fn case(name: &str, t_end: f64, sweep: &str) -> PathBuf {
+        case_in_units(name, [1.0, 1.0, 1.0], t_end, sweep)
+    }
+
+    const GRID: &str =
+        "[sweep]\ntilt = { values = [0.3, 0.8, 1.2] }\nspin = { values = [3.0, 8.0] }\n";
+
+    fn rows(args: &[&str]) -> Vec<Value> {
+        let mut all = vec!["sweep", "--json"];
+        all.extend_from_slice(args);
+        json_of(&routh(&all))["rows"].as_array().unwrap().clone()
+    }
+
+    /// The count and first time of `gamma1 = 0` crossings of each run of a sweep (the Taylor
+    /// lanes, the default) equal those of `routh section --surface "gamma1 = 0" --direction
+    /// both` on the run's case with Vern9 (another integrator and another dense output, one
+    /// run at a time): the counts exactly, the first times within 1e-9. Both integrate to
+    /// rtol = atol = 1e-12, so the two trajectories differ by about 1e-11 at t <= 10, and a
+    /// crossing time by that over |d gamma1/dt| (at least 0.1 at these crossings): 1e-10,
+    /// and the locator's own error is 2 ulp of t (4e-15). Negative control: the sections of
+    /// `gamma1 = 0.05` have other first times.
+    #[test]
+    fn crossings_equal_those_of_routh_section_with_another_integrator() {
+        let sweep = case("vs-section.toml", 10.0, GRID);
+        let rows = rows(&["--case", sweep.to_str().unwrap(), "--events", "gamma1 = 0"]);
+        assert_eq!(rows.len(), 6);
+        let section = |single: &PathBuf, surface: &str| -> (u64, f64) {
+            let out = scratch(&format!(
+                "section-{}",
+                single.file_stem().unwrap().to_str().unwrap()
+            ));
+            let _ = std::fs::remove_dir_all(&out);
+            let v = json_of(&routh(&[
+                "section",
+                "--case",
+                single.to_str().unwrap(),
+                "--surface",
+                surface,
+                "--direction",
+                "both",
+                "--initial",
+                "1",
+                "--method",
+                "vern9",
+                "--out",
+                out.to_str().unwrap(),
+                "--json",
+            ]));
+            let csv = std::fs::read_to_string(out.join("section.csv")).unwrap();
+            let first = csv
+                .lines()
+                .nth(1)
+                .map_or(f64::NAN, |l| l.split(',').nth(1).unwrap().parse().unwrap());
+            (v["crossings"].as_u64().unwrap(), first)
+        };
+        let mut worst = 0.0f64;
+        for row in &rows {
+            assert_eq!(row["status"], "ok", "{row}");
+            let tilt = row["tilt"].as_f64().unwrap();
+            let spin = row["spin"].as_f64().unwrap();
+            let single = scratch(&format!("single-{}.toml", row["run"]));
+            std::fs::write(
+                &single,
+                format!(
+                    "[body]\nm = 1.0\nR = 1.0\na = 0.3\nI1 = 0.4\nI3 = 0.5\nG = 9.81\n\
+                     [initial]\ngamma = {:?}\nomega = [0.5, 0.2, {spin:?}]\n\
+                     [integration]\nt_end = 10.0\nrtol = 1e-12\natol = 1e-12\n",
+                    [tilt.sin(), 0.0, tilt.cos()]
+                ),
+            )
+            .unwrap();
+            let (count, first) = section(&single, "gamma1 = 0");
+            assert!(count >= 2, "run {}: {count} crossings", row["run"]);
+            assert_eq!(
+                row["event0_count"].as_u64(),
+                Some(count),
+                "run {}",
+                row["run"]
+            );
+            let t = row["event0_first_t"].as_f64().unwrap();
+            worst = worst.max((t - first).abs());
+            assert!(
+                (t - first).abs() <= 1e-9,
+                "run {}: {t} vs {first}",
+                row["run"]
+            );
+            let (_, other) = section(&single, "gamma1 = 0.05");
+            assert!((t - other).abs() > 1e-6, "negative control: {t} {other}");
+        }
+        eprintln!("sweep events vs routh section (vern9): first times within {worst:e}");
+    }
+
+    /// The event columns in lanes and one run at a time (`--no-batch`) are the same bit for
+    /// bit, the turning points (`events`) watched with the user's events on the same steps,
+    /// with both lane methods (DOP853's dense output costs 3 field evaluations on a step
+    /// with a crossing: the same in both). Negative control: another tolerance moves the
+    /// first times.
+    #[test]
+    fn event_columns_in_lanes_equal_one_at_a_time_bitwise() {
+        let grid =
+            "[sweep]\ntilt = { range = [0.05, 1.5], n = 9 }\nspin = { values = [3.0, 8.0] }\n";
+        let sweep = case("lanes.toml", 5.0, grid);
+        let sweep = sweep.to_str().unwrap();
+        let events = "gamma1 = 0,gamma3 = 0.9 up,M1 = 0.5 down";
+        for method in ["taylor", "dop853"] {
+            let args = [
+                "--case",
+                sweep,
+                "--method",
+                method,
+                "--events",
+                events,
+                "--columns",
+                "all",
+            ];
+            let lanes = rows(&args);
+            let alone = rows(&[&args[..], &["--no-batch"]].concat());
+            assert_eq!(lanes.len(), 18);
+            let crossed = lanes
+                .iter()
+                .filter(|r| r["event0_count"].as_u64() > Some(0))
+                .count();
+            assert!(crossed > 10, "{method}: {crossed} runs cross gamma1 = 0");
+            for (a, b) in lanes.iter().zip(&alone) {
+                assert_eq!(a, b, "{method}: run {}", a["run"]);
+            }
+            let other = rows(&[&args[..], &["--rtol", "1e-8", "--atol", "1e-8"]].concat());
+            let moved = lanes
+                .iter()
+                .zip(&other)
+                .filter(|(a, b)| a["event0_first_t"] != b["event0_first_t"])
+                .count();
+            assert!(moved > 10, "negative control: {moved} first times moved");
+        }
+    }
+
+    /// gamma1 oscillates (the precession turns gamma about e3): its crossings of 0 alternate
+    /// up and down, so `up` counts half of `both` (within one) and `up` plus `down` is
+    /// `both`; the first crossing of `both` is the first of `up` or of `down`. Control: a
+    /// plane never reached (`gamma3 = -0.99`) counts 0, with no first time.
+    #[test]
+    fn a_direction_counts_half_the_crossings_of_both() {
+        let sweep = case("directions.toml", 10.0, GRID);
+        let events = "gamma1 = 0,gamma1 = 0 up,gamma1 = 0 down,gamma3 = -0.99";
+        for row in rows(&["--case", sweep.to_str().unwrap(), "--events", events]) {
+            let count = |k: usize| row[format!("event{k}_count")].as_u64().unwrap();
+            let first = |k: usize| row[format!("event{k}_first_t")].as_f64();
+            let (both, up, down) = (count(0), count(1), count(2));
+            assert!(both >= 4, "run {}: {both}", row["run"]);
+            assert_eq!(up + down, both, "run {}", row["run"]);
+            assert!(
+                up.abs_diff(down) <= 1,
+                "run {}: {up} up, {down} down",
+                row["run"]
+            );
+            let (u, d) = (first(1).unwrap(), first(2).unwrap());
+            assert_ne!(u, d);
+            assert_eq!(first(0), Some(u.min(d)));
+            assert_eq!((count(3), first(3)), (0, None), "run {}", row["run"]);
+        }
+    }
+
+    /// Bad events exit with code 2 naming the key or the option, before any run, writing no
+    /// table: an unknown name, a level that is not finite, a bad direction, a value that is
+    /// not a list of texts, too many events, a column of an event the sweep does not have.
+    /// Control: a good event writes the table.
+    #[test]
+    fn bad_events_are_refused_naming_the_key() {
+        let out = scratch("refused.csv");
+        let _ = std::fs::remove_file(&out);
+        let out_arg = out.to_str().unwrap();
+        for (listed, expected) in [
+            (
+                "[\"omega1 = 0\"]",
+                "[sweep] key `events` = \"omega1 = 0\": must be NAME = NUMBER",
+            ),
+            ("[\"gamma1 = inf\"]", "`events` = \"gamma1 = inf\""),
+            (
+                "[\"gamma1 = 0 sideways\"]",
+                "optional direction up, down or both",
+            ),
+            (
+                "\"gamma1 = 0\"",
+                "`events` = \"gamma1 = 0\": must be a list",
+            ),
+            ("[1.0]", "`events` = [1.0]: must be a list"),
+        ] {
+            let bad = case(
+                "bad-events.toml",
+                1.0,
+                &format!("{GRID}events = {listed}\n"),
+            );
+            assert_exit_2(
+                &["sweep", "--case", bad.to_str().unwrap(), "--out", out_arg],
+                expected,
+            );
+            assert!(!out.exists(), "{listed}");
+        }
+        let good = case("good-events.toml", 1.0, GRID);
+        let good = good.to_str().unwrap();
+        let many = vec!["gamma1 = 0"; 33].join(",");
+        for (events, expected) in [
+            ("gamma1 = inf", "invalid option events = \"gamma1 = inf\""),
+            ("gamma1 = 0:up", "invalid option events = \"gamma1 = 0:up\""),
+            (
+                "gamma1 = 0 left",
+                "must be NAME = NUMBER with an optional direction",
+            ),
+            ("", "invalid option events = \"\""),
+            (many.as_str(), "invalid option events = 33 events"),
+        ] {
+            assert_exit_2(
+                &[
+                    "sweep", "--case", good, "--events", events, "--out", out_arg,
+                ],
+                expected,
+            );
+            assert!(!out.exists(), "{events}");
+        }
+        assert_exit_2(
+            &[
+                "sweep",
+                "--case",
+                good,
+                "--events",
+                "gamma1 = 0",
+                "--columns",
+                "event1_count",
+                "--out",
+                out_arg,
+            ],
+            "unknown column `event1_count`",
+        );
+        assert!(!out.exists());
+        let run = routh(&[
+            "sweep",
+            "--case",
+            good,
+            "--events",
+            "gamma1 = 0",
+            "--out",
+            out_arg,
+        ]);
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let header = std::fs::read_to_string(&out).unwrap();
+        assert!(header
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",event0_count,event0_first_t"));
+    }
+
+    /// The same sweep written in other units (mass x2, length x2, time x2: gamma and the
+    /// events on gamma unchanged, M in m R^2 / T x4, times x2) counts the same crossings at
+    /// the times scaled by 2. With DOP853 to 4 ulp: the units differ by powers of two, so
+    /// the runs take the same steps in the motion's units (the same final states, to the bit)
+    /// and the times agree to an ulp (measured: some equal, some an ulp apart). The Taylor
+    /// lanes (the default) take the same steps but sum their series in the other units,
+    /// whose rounding differs (final states and times 2e-15 apart, relative, measured):
+    /// 1e-12. The `[sweep]` table's `events`
+    /// (not the option) is read. Negative control: the M1 event left unscaled crosses
+    /// elsewhere.
+    #[test]
+    fn events_in_other_units_are_the_same_crossings_scaled() {
+        let table = |m1: &str, spins: &str| {
+            format!(
+                "[sweep]\ntilt = {{ values = [0.3, 0.8, 1.2] }}\nspin = {{ values = {spins} }}\n\
+                 events = [\"gamma3 = 0.9\", \"gamma1 = 0.1 down\", \"M1 = {m1} up\"]\n"
+            )
+        };
+        let one = case_in_units(
+            "units-1.toml",
+            [1.0, 1.0, 1.0],
+            10.0,
+            &table("0.25", "[3.0, 8.0]"),
+        );
+        let other = case_in_units(
+            "units-2.toml",
+            [2.0, 2.0, 2.0],
+            10.0,
+            &table("1.0", "[1.5, 4.0]"),
+        );
+        let unscaled = case_in_units(
+            "units-3.toml",
+            [2.0, 2.0, 2.0],
+            10.0,
+            &table("0.25", "[1.5, 4.0]"),
+        );
+        for (method, tolerance) in [("dop853", 4.0 * f64::EPSILON), ("taylor", 1e-12)] {
+            let rows_of =
+                |case: &PathBuf| rows(&["--case", case.to_str().unwrap(), "--method", method]);
+            let (a, b, c) = (rows_of(&one), rows_of(&other), rows_of(&unscaled));
+            let (mut crossed, mut differ) = ([0; 3], 0);
+            for ((a, b), c) in a.iter().zip(&b).zip(&c) {
+                for (k, crossed) in crossed.iter_mut().enumerate() {
+                    let (count, first) = (format!("event{k}_count"), format!("event{k}_first_t"));
+                    let run = format!("{method}, run {}, event {k}", a["run"]);
+                    assert_eq!(a[&count], b[&count], "{run}");
+                    if let (Some(ta), Some(tb)) = (a[&first].as_f64(), b[&first].as_f64()) {
+                        assert!((2.0 * ta - tb).abs() <= tolerance * tb, "{run}: {ta} {tb}");
+                        *crossed += 1;
+                    }
+                    assert_eq!(a[&first].is_null(), b[&first].is_null(), "{run}");
+                }
+                differ += usize::from(c["event2_first_t"] != b["event2_first_t"]);
+            }
+            // gamma3 = 0.9 is crossed by the slow spin from the smallest tilt only; the
+            // others from every start.
+            assert_eq!(crossed, [1, a.len(), a.len()], "{method}");
+            assert_eq!(differ, a.len(), "negative control");
+        }
+    }
+}
+
 mod cli_section {
     //! `routh section`, run as a user would (issue 36, item 3): the command the issue asks to
     //! show writes a PNG, an SVG and a CSV of at least 100 crossings on the plane; bad surfaces

@@ -12,12 +12,15 @@
 //! | `events` | `theta_min theta_max period_events precession_events` | the sign of d gamma3/dt at every step, a located turning point per half period |
 //! | `quadrature` | `period_quadrature precession_quadrature` | the quadrature of `routh exact` of every run (Routh sphere only) |
 //! | `nutation` | `events`, `quadrature` and their differences `period_difference precession_difference` | both |
+//! | `user_events` | per user event `k` (`[sweep] events`, `--events`): `event{k}_count event{k}_first_t` | the planes' values at every step, a located crossing per crossing |
 //! | `all` | every column (the table of a sweep before `--columns`) | all of the above |
 //!
-//! The default, [`DEFAULT_GROUPS`], is `final` and `integrals`: the cheap columns. A column
-//! can also be named alone; the table keeps the columns' order whatever the order asked.
+//! The default, [`DEFAULT_GROUPS`], is `final`, `integrals` and `user_events`: the cheap
+//! columns, and the user's events when they are given (without events the group has no
+//! column). A column can also be named alone; the table keeps the columns' order whatever
+//! the order asked, the user events' columns last, in the order of the events.
 
-use super::spec::{refuse, Refusal};
+use super::spec::{refuse, texts, Refusal};
 use crate::integrals::INTEGRAL_NAMES;
 use crate::row::Kind;
 
@@ -36,10 +39,12 @@ pub enum Part {
     Quadrature,
     /// Events minus quadrature: both.
     Difference,
+    /// The crossings of the user's events ([`super::crossings`]).
+    UserEvents,
 }
 
 /// The groups of columns that can be asked for by name, with their parts.
-pub const GROUPS: [(&str, &[Part]); 6] = [
+pub const GROUPS: [(&str, &[Part]); 7] = [
     ("final", &[Part::Final]),
     ("integrals", &[Part::Integrals]),
     ("events", &[Part::Events]),
@@ -48,6 +53,7 @@ pub const GROUPS: [(&str, &[Part]); 6] = [
         "nutation",
         &[Part::Events, Part::Quadrature, Part::Difference],
     ),
+    ("user_events", &[Part::UserEvents]),
     (
         "all",
         &[
@@ -56,13 +62,38 @@ pub const GROUPS: [(&str, &[Part]); 6] = [
             Part::Events,
             Part::Quadrature,
             Part::Difference,
+            Part::UserEvents,
         ],
     ),
 ];
 
 /// The groups of a table when none are asked for: the final state, the integrals and their
-/// drift (before `--columns`, a table held every column: ask for `all`).
-pub const DEFAULT_GROUPS: [&str; 2] = ["final", "integrals"];
+/// drift, and the user's events when there are (before `--columns`, a table held every
+/// column: ask for `all`).
+pub const DEFAULT_GROUPS: [&str; 3] = ["final", "integrals", "user_events"];
+
+/// The most user events of a sweep (each has two columns, a bit each in [`Columns`]).
+pub const MAX_EVENTS: usize = 32;
+
+/// The columns of user event `k`, in the table's order: its number of crossings in
+/// `(0, t_end]` and the time of the first (null without one).
+pub fn event_columns(k: usize) -> [(String, Kind); 2] {
+    [
+        (format!("event{k}_count"), Kind::Int),
+        (format!("event{k}_first_t"), Kind::Float),
+    ]
+}
+
+/// The user event and which of its [`event_columns`] (0 or 1) `name` is, for any `k` below
+/// [`MAX_EVENTS`] (whether the sweep has event `k` is checked by [`Columns::of_events`]).
+fn event_column(name: &str) -> Option<(usize, usize)> {
+    let rest = name.strip_prefix("event")?;
+    let (k, which) = [("_count", 0), ("_first_t", 1)]
+        .into_iter()
+        .find_map(|(suffix, which)| Some((rest.strip_suffix(suffix)?, which)))?;
+    let k: usize = k.parse().ok().filter(|&k| k < MAX_EVENTS)?;
+    (event_columns(k)[which].0 == name).then_some((k, which))
+}
 
 /// One column after `run` and the swept quantities.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -130,18 +161,27 @@ pub fn catalogue() -> Vec<Column> {
 
 /// The columns a sweep's table holds: a subset of [`catalogue`] (bit i for its column i),
 /// always with the [`Part::Run`] columns, and the parts they need (bit `part as u8`), known
-/// without building the catalogue again for every run.
+/// without building the catalogue again for every run; and the user events' columns (bit
+/// `2 k + j` for column `j` of [`event_columns`]`(k)`): those asked for, and those of the
+/// sweep's events ([`Columns::of_events`]; none before).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Columns {
     chosen: u64,
     parts: u8,
+    /// Every user event's columns were asked for (`user_events`, `all`, the default).
+    every_event: bool,
+    /// The user events' columns named one by one.
+    named_events: u64,
+    /// The user events' columns of the table, once the sweep's events are known.
+    events: u64,
 }
 
 /// A name that is neither a column nor a group: its message lists the valid ones.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error(
-    "unknown column `{name}`: the groups are {} (default: {}), the columns {} (`run` and the \
-     swept quantities are always written)",
+    "unknown column `{name}`: the groups are {} (default: {}), the columns {}, and \
+     `event{{k}}_count`, `event{{k}}_first_t` for each user event k = 0, 1, ... given by \
+     `events` (`run` and the swept quantities are always written)",
     GROUPS.map(|g| g.0).join(", "),
     DEFAULT_GROUPS.join(", "),
     catalogue().into_iter().map(|c| c.name).collect::<Vec<_>>().join(", ")
@@ -152,9 +192,10 @@ pub struct UnknownColumn {
 }
 
 impl Columns {
-    /// The columns named by `names`: groups of [`GROUPS`] and single columns of
-    /// [`catalogue`], in any order (the table keeps its own); the [`Part::Run`] columns are
-    /// always in.
+    /// The columns named by `names`: groups of [`GROUPS`], single columns of [`catalogue`]
+    /// and of user events ([`event_columns`]), in any order (the table keeps its own); the
+    /// [`Part::Run`] columns are always in. The user events' columns are in the table only
+    /// once the sweep's events are known ([`Columns::of_events`]).
     pub fn parse<'a>(names: impl IntoIterator<Item = &'a str>) -> Result<Self, UnknownColumn> {
         let all = catalogue();
         let of_parts = |parts: &[Part]| {
@@ -163,40 +204,80 @@ impl Columns {
                 .filter(|(_, c)| parts.contains(&c.part))
                 .fold(0u64, |bits, (i, _)| bits | 1 << i)
         };
-        let mut chosen = of_parts(&[Part::Run]);
+        let mut columns = Columns {
+            chosen: of_parts(&[Part::Run]),
+            parts: 0,
+            every_event: false,
+            named_events: 0,
+            events: 0,
+        };
         for name in names {
             let name = name.trim();
-            chosen |= match GROUPS.iter().find(|g| g.0 == name) {
-                Some((_, parts)) => of_parts(parts),
-                None => match all.iter().position(|c| c.name == name) {
-                    Some(i) => 1 << i,
-                    None => {
-                        return Err(UnknownColumn {
-                            name: name.to_string(),
-                        })
-                    }
-                },
-            };
+            if let Some((_, parts)) = GROUPS.iter().find(|g| g.0 == name) {
+                columns.chosen |= of_parts(parts);
+                columns.every_event |= parts.contains(&Part::UserEvents);
+            } else if let Some(i) = all.iter().position(|c| c.name == name) {
+                columns.chosen |= 1 << i;
+            } else if let Some((k, which)) = event_column(name) {
+                columns.named_events |= 1 << (2 * k + which);
+            } else {
+                return Err(UnknownColumn {
+                    name: name.to_string(),
+                });
+            }
         }
-        let mut columns = Columns { chosen, parts: 0 };
         columns.parts = columns
             .select(all)
             .fold(0, |bits, c| bits | 1 << c.part as u8);
         Ok(columns)
     }
 
+    /// These columns in a sweep of `events` user events (at most [`MAX_EVENTS`]): the user
+    /// events' columns asked for, of its events. A column named for an event the sweep does
+    /// not have is refused.
+    pub fn of_events(mut self, events: usize) -> Result<Self, UnknownColumn> {
+        let mask = match 2 * events.min(MAX_EVENTS) {
+            0 => 0,
+            64 => u64::MAX,
+            bits => (1 << bits) - 1,
+        };
+        let beyond = self.named_events & !mask;
+        if beyond != 0 {
+            let bit = beyond.trailing_zeros() as usize;
+            return Err(UnknownColumn {
+                name: event_columns(bit / 2)[bit % 2].0.clone(),
+            });
+        }
+        self.events = if self.every_event {
+            mask
+        } else {
+            self.named_events
+        };
+        self.parts &= !(1 << Part::UserEvents as u8);
+        if self.events != 0 {
+            self.parts |= 1 << Part::UserEvents as u8;
+        }
+        Ok(self)
+    }
+
+    /// Of the items of the user events' columns in their order (two per event: the
+    /// [`event_columns`] of event 0, then of event 1, ...), those in the table.
+    pub fn select_events<T>(&self, items: impl IntoIterator<Item = T>) -> impl Iterator<Item = T> {
+        let events = self.events;
+        items
+            .into_iter()
+            .enumerate()
+            .filter(move |(i, _)| *i < 64 && events >> i & 1 == 1)
+            .map(|(_, item)| item)
+    }
+
     /// The columns of the `[sweep]` table's key `columns = ["final", "events", ...]`.
     pub fn from_toml(listed: &toml::Value) -> Result<Self, Refusal> {
-        let names = listed
-            .as_array()
-            .and_then(|a| a.iter().map(|v| v.as_str()).collect::<Option<Vec<_>>>())
-            .ok_or_else(|| {
-                refuse(
-                    "columns",
-                    listed,
-                    "must be a list of column names and groups, such as [\"final\", \"events\"]",
-                )
-            })?;
+        let names = texts(
+            "columns",
+            listed,
+            "must be a list of column names and groups, such as [\"final\", \"events\"]",
+        )?;
         Self::parse(names).map_err(|e| refuse("columns", format!("\"{}\"", e.name), &e.to_string()))
     }
 
@@ -228,6 +309,11 @@ impl Columns {
     /// Whether the turning points are located along each run.
     pub fn locates_turning_points(&self) -> bool {
         self.asks(&[Part::Events, Part::Difference])
+    }
+
+    /// Whether the user's events are located along each run.
+    pub fn locates_user_events(&self) -> bool {
+        self.asks(&[Part::UserEvents])
     }
 
     /// Whether the quadrature of each run is computed.
@@ -268,8 +354,11 @@ mod tests {
             Columns::all().select(catalogue()).count(),
             catalogue().len()
         );
-        assert_eq!(parse(&["final", "integrals"]), d);
-        assert_eq!(parse(&["nutation", "final", "integrals"]), Columns::all());
+        assert_eq!(parse(&["final", "integrals", "user_events"]), d);
+        assert_eq!(
+            parse(&["nutation", "final", "integrals", "user_events"]),
+            Columns::all()
+        );
         // The always-written columns only, named or not.
         let run: Vec<String> = parse(&[]).select(catalogue()).map(|c| c.name).collect();
         assert_eq!(run[0], "t_end");
@@ -277,10 +366,80 @@ mod tests {
         assert_eq!(parse(&["status"]), parse(&[]));
     }
 
+    /// The user events' columns are those of the sweep's events: all of them with the group
+    /// (in the default and in `all`), the ones named otherwise, none without events; a
+    /// column of an event the sweep does not have is refused.
+    #[test]
+    fn user_event_columns_are_those_of_the_sweeps_events() {
+        let names = |names: &[&str], events| {
+            let chosen = Columns::parse(names.iter().copied())?.of_events(events)?;
+            Ok::<_, UnknownColumn>(
+                chosen
+                    .select_events((0..MAX_EVENTS).flat_map(event_columns))
+                    .map(|c| c.0)
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let default = Columns::default().of_events(2).unwrap();
+        assert!(default.locates_user_events() && !default.locates_turning_points());
+        assert!(!Columns::default()
+            .of_events(0)
+            .unwrap()
+            .locates_user_events());
+        assert_eq!(
+            names(&["user_events"], 2).unwrap(),
+            [
+                "event0_count",
+                "event0_first_t",
+                "event1_count",
+                "event1_first_t"
+            ]
+        );
+        assert_eq!(
+            names(&["all"], 1).unwrap(),
+            ["event0_count", "event0_first_t"]
+        );
+        assert_eq!(names(&["all"], 0).unwrap(), Vec::<String>::new());
+        assert_eq!(names(&["final"], 2).unwrap(), Vec::<String>::new());
+        assert!(!parse_final().of_events(2).unwrap().locates_user_events());
+        assert_eq!(
+            names(&["event1_first_t", "final"], 2).unwrap(),
+            ["event1_first_t"]
+        );
+        assert_eq!(
+            names(&["user_events"], MAX_EVENTS).unwrap().len(),
+            2 * MAX_EVENTS
+        );
+        assert_eq!(
+            names(&["event2_count"], 2).unwrap_err().name,
+            "event2_count"
+        );
+        for bad in [
+            "event32_count",
+            "event01_count",
+            "event0_first",
+            "eventx_count",
+        ] {
+            assert!(Columns::parse([bad]).is_err(), "{bad}");
+        }
+    }
+
+    fn parse_final() -> Columns {
+        Columns::parse(["final"]).unwrap()
+    }
+
     #[test]
     fn an_unknown_name_is_refused_listing_the_valid_ones() {
         let e = Columns::parse(["final", "theta"]).unwrap_err().to_string();
-        for part in ["`theta`", "quadrature", "nutation", "theta_min", "K_drift"] {
+        for part in [
+            "`theta`",
+            "quadrature",
+            "nutation",
+            "theta_min",
+            "K_drift",
+            "user_events",
+            "event{k}_first_t",
+        ] {
             assert!(e.contains(part), "{e}");
         }
     }

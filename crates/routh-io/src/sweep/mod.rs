@@ -1,11 +1,14 @@
 //! Sweeps: many runs of one case with some quantities varied (the body's parameters, the
 //! initial tilt, spin, omega or gamma), on a grid or a random design, run in parallel, each
 //! run reduced to one row (work, status, and the columns asked for: final state, integrals
-//! and drift, the nutation from events and from the quadrature; only those are computed),
+//! and drift, the nutation from events and from the quadrature, the crossings of the user's
+//! events; only those are computed),
 //! written as CSV or Parquet as the runs finish.
 //!
 //! * [`spec`]: the `[sweep]` table and its checks;
 //! * [`design`]: the grid, Sobol, Latin hypercube and uniform designs;
+//! * [`crossings`]: the events watched on every step of a run (the turning points of the
+//!   tilt, the user's planes), located by the one event locator;
 //! * [`turning`]: theta min and max, the nutation period and the precession from events;
 //! * [`columns`]: the columns of a table, their groups, and what each needs computed;
 //! * [`record`]: the row of a run and its cells;
@@ -14,6 +17,7 @@
 //!   `parquet`): the writers; [`open`] chooses one by the file's extension.
 
 pub mod columns;
+pub mod crossings;
 pub mod csv;
 pub mod design;
 #[cfg(feature = "parquet")]

@@ -4,7 +4,8 @@
 use crate::integrals::INTEGRAL_NAMES;
 use crate::row::{csv_line, write_csv_line, Cell, Kind};
 use crate::simulate::Summary;
-use crate::sweep::columns::{catalogue, Columns};
+use crate::sweep::columns::{catalogue, event_columns, Columns, MAX_EVENTS};
+use crate::sweep::crossings::Crossings;
 use crate::sweep::turning::NutationEvents;
 
 /// How a run ended: a sweep's run reaches t_end ([`Status::Reached`], written `ok`) or fails.
@@ -53,15 +54,19 @@ pub struct Row {
     /// The quadrature's nutation (None when the body or the motion does not allow it, or not
     /// asked for).
     pub quadrature: Option<NutationQuadrature>,
+    /// The crossings of each user event, in their order (empty if the run failed, or not
+    /// asked for).
+    pub user_events: Vec<Crossings>,
 }
 
 /// The columns of a sweep whose swept quantities are `swept` and whose table holds `chosen`:
 /// `run`, the swept quantities (named as in `[sweep]`), then the chosen columns of
-/// [`catalogue`] in its order.
+/// [`catalogue`] in its order, then those of the user events ([`event_columns`]) in theirs.
 pub fn columns(swept: &[String], chosen: &Columns) -> Vec<(String, Kind)> {
     let mut cols = vec![("run".to_string(), Kind::Int)];
     cols.extend(swept.iter().map(|n| (n.clone(), Kind::Float)));
     cols.extend(chosen.select(catalogue()).map(|c| (c.name, c.kind)));
+    cols.extend(chosen.select_events((0..MAX_EVENTS).flat_map(event_columns)));
     cols
 }
 
@@ -76,6 +81,17 @@ impl Row {
         let mut cells = vec![Cell::Int(Some(self.run))];
         cells.extend(self.values.iter().map(|v| Cell::Float(Some(*v))));
         cells.extend(settings.columns.select(self.catalogue_cells(settings)));
+        cells.extend(
+            settings
+                .columns
+                .select_events((0..MAX_EVENTS).flat_map(|k| {
+                    let c = self.user_events.get(k);
+                    [
+                        Cell::Int(c.map(|c| c.count)),
+                        Cell::Float(c.and_then(|c| c.first_t)),
+                    ]
+                })),
+        );
         cells
     }
 
@@ -161,6 +177,7 @@ mod tests {
             summary: None,
             events: None,
             quadrature: None,
+            user_events: vec![],
         };
         let settings = |columns| RunSettings {
             t_end: 1.0,
@@ -172,8 +189,15 @@ mod tests {
         let all = settings(Columns::all());
         assert_eq!(row.catalogue_cells(&all).len(), catalogue().len());
         let swept = ["tilt".to_string(), "spin".to_string()];
-        for names in [&["all"][..], &[], &["quadrature", "final_M3"]] {
-            let chosen = Columns::parse(names.iter().copied()).unwrap();
+        for names in [
+            &["all"][..],
+            &[],
+            &["quadrature", "final_M3"],
+            &["event1_first_t", "final_M3"],
+        ] {
+            let chosen = Columns::parse(names.iter().copied())
+                .and_then(|c| c.of_events(2))
+                .unwrap();
             let cells = row.cells(&settings(chosen));
             let cols = columns(&swept, &chosen);
             assert_eq!(cells.len(), cols.len(), "{names:?}");

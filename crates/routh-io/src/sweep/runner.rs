@@ -4,12 +4,12 @@
 //! are integrated together in SIMD lanes ([`crate::batch`]), whose arithmetic is that of the
 //! one-at-a-time integrator: the rows are the same, bit for bit, only faster.
 
-use super::columns::Columns;
+use super::columns::{Columns, MAX_EVENTS};
+use super::crossings::{self, Watch};
 use super::design::Design;
 use super::record::{columns, NutationQuadrature, Row, RunSettings, Status};
 use super::spec::{refuse, Quantity, Refusal, Spec};
 use super::table::{not_this_sweep, TableWriter};
-use super::turning::{NutationEvents, TurningPoints};
 use crate::ball::Ball;
 use crate::batch::{self, Job, Queue, LANES};
 use crate::body::Body;
@@ -20,6 +20,7 @@ use crate::quadrature::ExactSolution;
 use crate::row::Kind;
 use crate::simulate::{integrate_observed, DriftTracker, ReducedSystem, Settings, Summary};
 use crate::state::{Point, State};
+use crate::surface::SurfaceEvent;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -88,6 +89,8 @@ pub struct Sweep {
     pub settings: Settings,
     /// The columns of the table: only what they need is computed ([`Columns`]).
     pub columns: Columns,
+    /// The user's events, located along every run when their columns are asked for.
+    pub events: Vec<SurfaceEvent>,
     /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
     /// method is DOP853 or Taylor (the default, `true`); `false` runs them one at a time. The rows are
     /// the same, bit for bit: only the speed differs.
@@ -103,11 +106,11 @@ struct Pending {
 }
 
 /// A run in a lane: what [`integrate_observed`] tracks along a run (the drift of the
-/// integrals, the turning points, each when its columns are asked for; the wall time).
+/// integrals when its columns are asked for; the wall time; the events are the lane's
+/// [`Watch`]).
 struct InLane<'b> {
     run: &'b Pending,
     drift: Option<DriftTracker>,
-    turning: Option<TurningPoints<'b>>,
     start: Instant,
 }
 
@@ -118,6 +121,8 @@ struct LaneQueue<'b, I> {
     body: &'b Body,
     pending: I,
     lanes: [Option<InLane<'b>>; LANES],
+    /// The events watched in each lane (when asked for), allocated once for all its runs.
+    watches: [Option<Watch<'b>>; LANES],
     /// The rows done and not yet handed to `sink`.
     done: Vec<(usize, Row)>,
     sink: Sink<'b>,
@@ -145,9 +150,11 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
             drift: columns
                 .tracks_integrals()
                 .then(|| DriftTracker::new(self.body, &run.x0)),
-            turning: self.sweep.turning_points(self.body, &run.x0),
             start: Instant::now(),
         });
+        if let Some(watch) = self.watches[lane].as_mut() {
+            watch.start(&run.x0);
+        }
         Some(Job {
             t0: 0.0,
             y0: run.x0,
@@ -155,14 +162,14 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
         })
     }
 
-    /// As the observer of [`Sweep::run`]: the drift at the step end, then the turning points.
+    /// As the observer of [`Sweep::run`]: the drift at the step end, then the events.
     fn step(&mut self, lane: usize, step: &dyn Stepper<6>) {
         if let Some(run) = self.lanes[lane].as_mut() {
             if let Some(drift) = run.drift.as_mut() {
                 drift.observe(self.body, step.y());
             }
-            if let Some(turning) = run.turning.as_mut() {
-                turning.observe(step);
+            if let Some(watch) = self.watches[lane].as_mut() {
+                watch.observe(step);
             }
         }
     }
@@ -188,8 +195,8 @@ impl<'b, I: Iterator<Item = &'b Pending>> Queue<6> for LaneQueue<'b, I> {
                     integrals: done.drift.map(|d| d.report()).unwrap_or_default(),
                     elapsed_s: done.start.elapsed().as_secs_f64(),
                 };
-                let events = done.turning.map(|t| t.summary());
-                sweep.finished(run.k, self.body, &run.initial, summary, events)
+                let watch = self.watches[lane].as_ref();
+                sweep.finished(run.k, self.body, &run.initial, summary, watch)
             }
         };
         self.done.push((run.position, row));
@@ -315,14 +322,17 @@ impl Sweep {
     /// settings of every run are the case's (no projection, no samples) with `overrides`
     /// applied ([`Overrides::applied_to`], as `routh simulate` builds its own), the method
     /// then [`resolve`]d for the tolerances. The columns of the table are `columns`, else the
-    /// `[sweep]` key `columns`, else [`Columns::default`].
+    /// `[sweep]` key `columns`, else [`Columns::default`]; the user's events are `events`,
+    /// else the `[sweep]` key `events` ([`crossings::from_toml`]), else none (at most
+    /// [`MAX_EVENTS`]).
     pub fn new(
         text: &str,
         source: &str,
         overrides: Overrides,
         columns: Option<Columns>,
+        events: Option<Vec<SurfaceEvent>>,
     ) -> Result<Self> {
-        Self::for_runs(text, source, overrides, columns, 0, None)
+        Self::for_runs(text, source, overrides, columns, events, 0, None)
     }
 
     /// The sweep of [`Sweep::new`] whose runs `start <= run < stop` (`stop` by default the
@@ -333,6 +343,7 @@ impl Sweep {
         source: &str,
         overrides: Overrides,
         columns: Option<Columns>,
+        events: Option<Vec<SurfaceEvent>>,
         start: u64,
         stop: Option<u64>,
     ) -> Result<Self> {
@@ -350,11 +361,37 @@ impl Sweep {
             file: source.to_string(),
             message: e.to_string(),
         };
+        let listed_events = table.remove("events");
+        let events = match (events, listed_events) {
+            (Some(events), _) => events,
+            (None, Some(listed)) => crossings::from_toml(&listed).map_err(refused)?,
+            (None, None) => Vec::new(),
+        };
+        if events.len() > MAX_EVENTS {
+            return Err(RouthError::Option {
+                name: "events",
+                value: format!("{} events", events.len()),
+                rule: "must be at most 32 (each has two columns)",
+            }
+            .into());
+        }
         let listed = table.remove("columns");
         let columns = match (columns, listed) {
-            (Some(columns), _) => columns,
-            (None, Some(listed)) => Columns::from_toml(&listed).map_err(refused)?,
-            (None, None) => Columns::default(),
+            (Some(columns), _) => columns
+                .of_events(events.len())
+                .map_err(|e| FileError::Case {
+                    file: source.to_string(),
+                    message: format!("--columns: {e}; this sweep has {} events", events.len()),
+                })?,
+            (None, Some(listed)) => Columns::from_toml(&listed)
+                .and_then(|c| {
+                    c.of_events(events.len())
+                        .map_err(|e| refuse("columns", format!("\"{}\"", e.name), &e.to_string()))
+                })
+                .map_err(refused)?,
+            (None, None) => Columns::default()
+                .of_events(events.len())
+                .expect("the default names no single event column"),
         };
         let design = Spec::parse(&table).and_then(Design::new).map_err(refused)?;
         let base = CaseValues::read(&case.document, source)?;
@@ -382,6 +419,7 @@ impl Sweep {
             design,
             settings,
             columns,
+            events,
             batch: true,
         };
         sweep
@@ -453,11 +491,16 @@ impl Sweep {
         columns(&self.names(), &self.columns)
     }
 
-    /// The turning points of a run from `x0`, when their columns are asked for.
-    fn turning_points<'b>(&self, body: &'b Body, x0: &[f64; 6]) -> Option<TurningPoints<'b>> {
-        self.columns
-            .locates_turning_points()
-            .then(|| TurningPoints::new(body, x0))
+    /// The events watched along the runs of `body` (the turning points and the user's
+    /// events, each when its columns are asked for), `None` when there are none.
+    fn watch<'b>(&'b self, body: &'b Body) -> Option<Watch<'b>> {
+        let turning = self.columns.locates_turning_points();
+        let events: &[SurfaceEvent] = if self.columns.locates_user_events() {
+            &self.events
+        } else {
+            &[]
+        };
+        (turning || !events.is_empty()).then(|| Watch::new(body, turning, events))
     }
 
     /// The case's values of run `k`: the base case with the swept values put in.
@@ -520,6 +563,7 @@ impl Sweep {
             summary: None,
             events: None,
             quadrature: None,
+            user_events: Vec::new(),
         }
     }
 
@@ -536,15 +580,16 @@ impl Sweep {
         Ok((body, initial))
     }
 
-    /// The row of run `k` whose integration gave `summary` and `events`: with the quadrature's
-    /// nutation when its columns are asked for and the body is a Routh sphere.
+    /// The row of run `k` whose integration gave `summary` and whose events `watch` saw:
+    /// with the quadrature's nutation when its columns are asked for and the body is a Routh
+    /// sphere.
     fn finished(
         &self,
         k: u64,
         body: &Body,
         initial: &State,
         summary: Summary,
-        events: Option<NutationEvents>,
+        watch: Option<&Watch>,
     ) -> Row {
         let (quadrature, message) = if !self.columns.solves_quadrature() {
             (None, String::new())
@@ -571,20 +616,24 @@ impl Sweep {
             status: Status::Reached,
             message,
             summary: Some(summary),
-            events,
+            events: watch.and_then(Watch::nutation),
             quadrature,
+            user_events: watch.map_or_else(Vec::new, |w| w.crossings().to_vec()),
         }
     }
 
     /// Run number `k`: the integration of `routh simulate` on the run's case (the same
-    /// numbers, bit for bit), the turning points along it and the quadrature when the body
+    /// numbers, bit for bit), the turning points and the user's events along it and the quadrature when the body
     /// is a Routh sphere, each when its columns are asked for. A failure (or a panic) becomes
     /// a row with status `failed`.
     pub fn run(&self, k: u64) -> Row {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let (body, initial) = self.start(k)?;
             let x0 = initial.to_array();
-            let mut turning = self.turning_points(&body, &x0);
+            let mut watch = self.watch(&body);
+            if let Some(watch) = watch.as_mut() {
+                watch.start(&x0);
+            }
             let observed = integrate_observed(
                 &body,
                 &ReducedSystem(&body),
@@ -593,14 +642,13 @@ impl Sweep {
                 None,
                 &mut |_, _| Ok::<_, AppError>(()),
                 &mut |step| {
-                    if let Some(turning) = turning.as_mut() {
-                        turning.observe(step);
+                    if let Some(watch) = watch.as_mut() {
+                        watch.observe(step);
                     }
                 },
             )?;
             let summary = observed.summary()?;
-            let events = turning.map(|t| t.summary());
-            Ok::<_, AppError>(self.finished(k, &body, &initial, summary, events))
+            Ok::<_, AppError>(self.finished(k, &body, &initial, summary, watch.as_ref()))
         }));
         match attempt {
             Ok(Ok(row)) => row,
@@ -665,6 +713,7 @@ impl Sweep {
                     body,
                     pending: group.iter(),
                     lanes: std::array::from_fn(|_| None),
+                    watches: std::array::from_fn(|_| self.watch(body)),
                     done: Vec::with_capacity(ROWS_PER_HANDOVER),
                     sink,
                     stop,

@@ -225,6 +225,15 @@ pub fn refuse(key: &str, value: impl std::fmt::Display, rule: &str) -> Refusal {
     }
 }
 
+/// The texts of the `[sweep]` key `key`, whose value `listed` must be a list of texts (such
+/// as `columns` and `events`), else a [`Refusal`] with `rule`.
+pub fn texts<'v>(key: &str, listed: &'v toml::Value, rule: &str) -> Result<Vec<&'v str>> {
+    listed
+        .as_array()
+        .and_then(|a| a.iter().map(|v| v.as_str()).collect::<Option<Vec<_>>>())
+        .ok_or_else(|| refuse(key, listed, rule))
+}
+
 fn integer(key: &str, value: &toml::Value) -> Result<i64> {
     value
         .as_integer()

@@ -3,19 +3,19 @@
 //! to compare with the quadrature of [`crate::quadrature`].
 //!
 //! gamma3 = cos theta turns where `d gamma3/dt = (gamma x omega)_3 = gamma1 omega2 -
-//! gamma2 omega1` changes sign (mg-eq); each sign change between the ends of an accepted
-//! step is located on the step's dense output by the integrator's one event locator,
-//! [`crate::integrate::locate`]. A minimum of gamma3 (the largest tilt) marks the start of
+//! gamma2 omega1` ([`tilt_rate`], mg-eq) changes sign; each sign change between the ends of
+//! an accepted step is located on the step's dense output by the integrator's one event
+//! locator, with the user's events of the run ([`super::crossings::Watch`]), and handed
+//! here ([`TurningPoints::turn`]). A minimum of gamma3 (the largest tilt) marks the start of
 //! a nutation period. The precession is the rotation of the state about e3 in the body
 //! frame, the angle of (gamma1, gamma2), followed continuously from step to step: the
 //! quadrature's "advance per period" is the same angle, since (mg-eq) with I1 = I2 is
 //! symmetric under that rotation.
 
 use crate::body::Body;
-use crate::integrate::{locate, Crossing, Direction, EventSpec, Stepper};
 
-/// The rate d gamma3/dt at `x = (gamma, M)`.
-fn tilt_rate(body: &Body, x: &[f64; 6]) -> f64 {
+/// The rate d gamma3/dt at `x = (gamma, M)`: the event function of the turning points.
+pub fn tilt_rate(body: &Body, x: &[f64; 6]) -> f64 {
     let gamma = [x[0], x[1], x[2]];
     let omega = body.angular_velocity(&gamma, &[x[3], x[4], x[5]]);
     gamma[0] * omega[1] - gamma[1] * omega[0]
@@ -36,9 +36,7 @@ fn follow(previous: f64, x: &[f64; 6]) -> f64 {
 
 /// The turning points of the tilt met so far.
 #[derive(Debug, Clone)]
-pub struct TurningPoints<'a> {
-    body: &'a Body,
-    rate: f64,
+pub struct TurningPoints {
     azimuth: f64,
     gamma3_min: f64,
     gamma3_max: f64,
@@ -60,12 +58,10 @@ pub struct NutationEvents {
     pub precession: Option<f64>,
 }
 
-impl<'a> TurningPoints<'a> {
+impl TurningPoints {
     /// Start at `x0 = (gamma, M)`.
-    pub fn new(body: &'a Body, x0: &[f64; 6]) -> Self {
+    pub fn new(x0: &[f64; 6]) -> Self {
         TurningPoints {
-            body,
-            rate: tilt_rate(body, x0),
             azimuth: x0[1].atan2(x0[0]),
             gamma3_min: x0[2],
             gamma3_max: x0[2],
@@ -75,34 +71,21 @@ impl<'a> TurningPoints<'a> {
         }
     }
 
-    /// Look at one accepted step.
-    pub fn observe(&mut self, step: &dyn Stepper<6>) {
-        let y1 = step.y();
-        let rate = tilt_rate(self.body, y1);
-        let turning = EventSpec {
-            direction: Direction::Either,
-            terminal: false,
-        };
-        let located = locate(
-            &|t| step.dense(t),
-            (step.t_prev(), step.t()),
-            &[turning],
-            &mut |_, _, x| tilt_rate(self.body, x),
-            &[self.rate],
-            &[rate],
-        );
-        if let Some(&Crossing { t, .. }) = located.ok().as_ref().and_then(|c| c.first()) {
-            let x = step.dense(t);
-            self.gamma3_min = self.gamma3_min.min(x[2]);
-            self.gamma3_max = self.gamma3_max.max(x[2]);
-            if self.rate < 0.0 {
-                let at = (t, follow(self.azimuth, &x));
-                self.first_minimum.get_or_insert(at);
-                self.last_minimum = Some(at);
-                self.minima += 1;
-            }
+    /// A turning point at time `t` and state `x` on the current step: a minimum of gamma3
+    /// (the largest tilt) when `minimum` (the tilt rate was negative at the step's start).
+    pub fn turn(&mut self, t: f64, x: &[f64; 6], minimum: bool) {
+        self.gamma3_min = self.gamma3_min.min(x[2]);
+        self.gamma3_max = self.gamma3_max.max(x[2]);
+        if minimum {
+            let at = (t, follow(self.azimuth, x));
+            self.first_minimum.get_or_insert(at);
+            self.last_minimum = Some(at);
+            self.minima += 1;
         }
-        self.rate = rate;
+    }
+
+    /// The end `y1` of an accepted step (after its turning point, if any).
+    pub fn step_end(&mut self, y1: &[f64; 6]) {
         self.azimuth = follow(self.azimuth, y1);
         self.gamma3_min = self.gamma3_min.min(y1[2]);
         self.gamma3_max = self.gamma3_max.max(y1[2]);
