@@ -37,6 +37,7 @@ pub mod differential;
 mod dop853;
 mod event;
 pub mod lyapunov;
+pub mod megno;
 mod pair;
 mod rk4;
 pub mod sampling;
