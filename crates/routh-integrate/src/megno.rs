@@ -243,13 +243,13 @@ mod tests {
     /// on heyoka's start: `<Y>` = 1.889 at t = 1000 and 1.986 at t = 10,000 (the deficit falls
     /// by 8, as `ln t / t` says), hence the tolerance 0.05 at t = 10,000. The chaotic orbits of
     /// energy 1/6 from `x = 0, y = 0, p_y = 0` and `x = 0, y = -0.2, p_y = 0` (in the chaotic
-    /// sea that covers most of that level; Hénon and Heiles' figure 5) have `<Y>` = 52 and 65 at
-    /// t = 1000, far above the 5 of the test, and `<Y> ~ lambda t / 2`: `2 <Y> / t` and
-    /// `FLI / t` are within 10 % of the largest Lyapunov exponent by the QR method over the
-    /// same time (measured: lambda 0.1027 and 0.1379, `2 <Y> / t` 0.1041 and 0.1305, `FLI / t`
-    /// 0.1009 and 0.1430: finite-time estimates, which differ by a few per cent). The regular orbit's FLI is of order `ln t`
-    /// (5.4 at t = 1000, below 10), the chaotic ones' of order `lambda t`: the negative control
-    /// each of the other.
+    /// sea that covers most of that level) have `<Y>` = 52 and 65 at t = 1000, far above the
+    /// 5 of the test, and `<Y> ~ lambda t / 2`: `2 <Y> / t` and `FLI / t` are within 10 % of
+    /// the largest Lyapunov exponent by the QR method over the same time (measured: lambda
+    /// 0.1027 and 0.1379, `2 <Y> / t` 0.1041 and 0.1305, `FLI / t` 0.1009 and 0.1430:
+    /// finite-time estimates, which differ by a few per cent). The regular orbit's FLI is of
+    /// order `ln t` (5.4 at t = 1000, below 10), the chaotic ones' of order `lambda t`: the
+    /// negative control each of the other.
     #[test]
     fn henon_heiles_regular_and_chaotic_orbits() {
         let hh = HenonHeiles { slow: 1.0 };
