@@ -101,7 +101,7 @@ impl LyapunovSettings {
 /// `Ok` for a method that integrates the tangent flow (DOP853, Vern9, RK4); the Taylor method
 /// (which records the field, not its tangent flow) and `auto` (which would pick it at tight
 /// tolerances) refused, naming the option ([`RouthError::Option`]).
-pub(crate) fn tangent_method(method: Method) -> Result<()> {
+pub fn tangent_method(method: Method) -> Result<()> {
     if matches!(method, Method::Dop853 | Method::Vern9 | Method::Rk4 { .. }) {
         return Ok(());
     }
