@@ -136,6 +136,19 @@ impl ChartAxis {
         }
     }
 
+    /// The axis's label in a figure: the key and what it sets.
+    pub fn label(&self) -> String {
+        let meaning = match Quantity::from_key(&self.key) {
+            Some(Quantity::Tilt) => "initial tilt theta, rad".to_string(),
+            Some(Quantity::Spin) => "initial spin omega3".to_string(),
+            Some(Quantity::Omega(i)) => format!("initial omega{}", i + 1),
+            Some(Quantity::Gamma(i)) => format!("initial gamma{}", i + 1),
+            Some(Quantity::Body(key)) => format!("[body] {key}"),
+            None => return self.key.clone(),
+        };
+        format!("{} ({meaning})", self.key)
+    }
+
     /// The axis as a grid axis of a `[sweep]` table, `{ range = [from, to], n = n }`.
     fn sweep_axis(&self) -> toml::Value {
         let mut axis = toml::Table::new();

@@ -7,6 +7,7 @@
 //! same number over a plane of parameters.
 
 use super::diagram::both_formats;
+use super::lyapunov::RunLines;
 use super::plot::create_dir;
 use super::simulate::{parse_method, Integration};
 use super::{print_json, Readable};
@@ -128,6 +129,7 @@ fn run_chart(
     let table = out.join("chart.csv");
     write_csv(&table, &found)?;
     let values: Vec<f64> = found.points.iter().map(|p| p.mean_megno()).collect();
+    let labels = (x.label(), y.label());
     let finite = values.iter().copied().filter(|v| v.is_finite());
     let figure = RegimeChartFigure {
         title: format!(
@@ -135,7 +137,7 @@ fn run_chart(
             Readable(settings.t_end()),
             case.source
         ),
-        labels: (&x.key, &y.key),
+        labels: (&labels.0, &labels.1),
         x: (x.from, x.to, x.n),
         y: (y.from, y.to, y.n),
         points: found
@@ -192,25 +194,16 @@ fn run_chart(
 /// The report as lines of text (the history only in JSON).
 fn report_text(r: &Report) -> String {
     use std::fmt::Write;
-    let mut text = String::new();
-    let _ = writeln!(
-        text,
-        "routh megno: {}",
-        r.case.as_deref().unwrap_or_default()
-    );
-    let _ = writeln!(
-        text,
-        "  method   {} (rtol {}, atol {}) to t = {}",
-        r.method,
-        Readable(r.rtol),
-        Readable(r.atol),
-        Readable(r.t_end)
-    );
-    let _ = writeln!(
-        text,
-        "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
-        r.steps, r.rejected, r.rhs_evals, r.elapsed_s
-    );
+    let mut text = RunLines {
+        command: "megno",
+        case: r.case.as_deref(),
+        method: &r.method,
+        tolerances: (r.rtol, r.atol),
+        work: (r.steps, r.rejected, r.rhs_evals),
+        elapsed_s: r.elapsed_s,
+    }
+    .to_string();
+    let _ = writeln!(text, "  time     {}", Readable(r.t_end));
     let _ = writeln!(
         text,
         "  mean MEGNO <Y> = {:.6}  (2: torus, 0: periodic, large: chaos)",
