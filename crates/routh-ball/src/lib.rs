@@ -5,9 +5,9 @@
 //! invariant measure ([`integrals`]), the motion in space ([`motion`]), the validated states
 //! ([`state`]), the projection onto the level set of the integrals ([`projection`]) and runs
 //! of the integrators of `routh-integrate` on it ([`simulate`], [`problem`]; the method that
-//! `auto` runs: [`auto`]), its Lyapunov exponents ([`lyapunov`]) and Poincaré sections
-//! ([`section`]); the same ball on other contacts with the plane ([`contact`]: the sliding
-//! ball with viscous friction, the tippe top).
+//! `auto` runs: [`auto`]), its Lyapunov exponents ([`lyapunov`]), MEGNO and FLI
+//! ([`megno`]) and Poincaré sections ([`section`]); the same ball on other contacts with the
+//! plane ([`contact`]: the sliding ball with viscous friction, the tippe top).
 //!
 //! Equation labels, such as (m-eq), are those of Bizyaev and Tsiganov, "On the Routh sphere
 //! problem".
@@ -26,6 +26,7 @@ pub mod integrals;
 #[rustfmt::skip]
 pub mod kernels;
 pub mod lyapunov;
+pub mod megno;
 pub mod motion;
 pub mod problem;
 pub mod projection;

@@ -59,9 +59,9 @@ pub struct LyapunovSettings {
 impl LyapunovSettings {
     /// The settings of a spectrum over `[0, integration.t_end()]` averaged after `transient`
     /// (default: [`DEFAULT_TRANSIENT_FRACTION`] of `t_end`), renormalised every `interval`
-    /// (default: the averaging span over [`DEFAULT_RENORMALISATIONS`]). Refused, naming the option ([`RouthError::Option`]): a
-    /// method other than DOP853, Vern9 or RK4 (the Taylor method records the field, not its
-    /// tangent flow; `auto` would pick it at tight tolerances), and the rules of
+    /// (default: the averaging span over [`DEFAULT_RENORMALISATIONS`]). Refused, naming the
+    /// option ([`RouthError::Option`]): a method other than DOP853, Vern9 or RK4
+    /// ([`tangent_method`]), and the rules of
     /// [`Renormalisation::new`] (`t_end > 0`, `0 <= transient < t_end`,
     /// `0 < interval <= t_end - transient`).
     pub fn new(
@@ -72,17 +72,7 @@ impl LyapunovSettings {
         let t_end = integration.t_end();
         let transient = transient.unwrap_or(DEFAULT_TRANSIENT_FRACTION * t_end);
         let interval = interval.unwrap_or((t_end - transient) / DEFAULT_RENORMALISATIONS);
-        if !matches!(
-            integration.method(),
-            Method::Dop853 | Method::Vern9 | Method::Rk4 { .. }
-        ) {
-            return Err(RouthError::Option {
-                name: "method",
-                value: integration.method().to_string(),
-                rule: "must be dop853, vern9 or rk4 for Lyapunov exponents (the Taylor method \
-                       does not integrate the tangent flow)",
-            });
-        }
+        tangent_method(integration.method())?;
         let schedule = Renormalisation::new(t_end, transient, interval).map_err(|e| match e {
             IntegrateError::InvalidOption { name, value, rule } => RouthError::Option {
                 name,
@@ -108,6 +98,36 @@ impl LyapunovSettings {
     }
 }
 
+/// `Ok` for a method that integrates the tangent flow (DOP853, Vern9, RK4); the Taylor method
+/// (which records the field, not its tangent flow) and `auto` (which would pick it at tight
+/// tolerances) refused, naming the option ([`RouthError::Option`]).
+pub fn tangent_method(method: Method) -> Result<()> {
+    if matches!(method, Method::Dop853 | Method::Vern9 | Method::Rk4 { .. }) {
+        return Ok(());
+    }
+    Err(RouthError::Option {
+        name: "method",
+        value: method.to_string(),
+        rule: "must be dop853, vern9 or rk4 for the tangent flow (Lyapunov exponents, MEGNO; \
+               the Taylor method does not integrate it)",
+    })
+}
+
+/// The projection of a point `z` of the variational system `system` of a ball: its state onto
+/// the level set `level` of the model's integrals, its tangent vectors onto the tangent space
+/// of `H4 = (gamma, gamma)` there.
+pub(crate) fn onto_level_set<'s, B: AsBall, const K: usize, const M: usize>(
+    system: &'s Variational<'s, ReducedSystem<'s, B>, 6, K, M>,
+    level: &'s LevelSet,
+) -> impl Fn(&mut [f64; M]) + 's {
+    move |z: &mut [f64; M]| {
+        let mut x = reduced(z);
+        level.project(&mut x);
+        *z = system.join(&x, &system.vectors(z));
+        system.project_vectors(z, |x| [geometric(x)]);
+    }
+}
+
 /// The [`EXPONENTS`] Lyapunov exponents of the motion of `body` from `x0 = (gamma, M)`, on
 /// the level set of its integrals through `x0` (see the module's documentation), with the
 /// settings `settings`. Each renormalisation interval is one run of the chosen method (RK4:
@@ -120,12 +140,7 @@ pub fn lyapunov_spectrum(
     let field = ReducedSystem(body);
     let level = LevelSet::through(body, x0);
     let system = Variational::<_, 6, EXPONENTS, VARIATIONAL>::new(&field);
-    let project = |z: &mut [f64; VARIATIONAL]| {
-        let mut x = reduced(z);
-        level.project(&mut x);
-        *z = system.join(&x, &system.vectors(z));
-        system.project_vectors(z, |x| [geometric(x)]);
-    };
+    let project = onto_level_set(&system, &level);
     let run = settings.integration;
     let opts = Options::new(run.rtol(), run.atol())?.with_max_steps(run.max_steps())?;
     Ok(spectrum::<_, 6, EXPONENTS, VARIATIONAL>(
@@ -155,7 +170,7 @@ pub(crate) mod tests {
     }
 
     /// The Chaplygin ball and state of `cases/chaplygin.toml`.
-    fn chaplygin_ball() -> (Ball, [f64; 6]) {
+    pub(crate) fn chaplygin_ball() -> (Ball, [f64; 6]) {
         let gamma = [0.3f64.sin(), 0.0, 0.3f64.cos()];
         let ball = Ball::new(1.0, 1.0, [0.3, 0.4, 0.5], [0.0; 3], 0.0).unwrap();
         let x = State::from_omega(&ball, gamma, [1.5, -2.0, 3.0], Normalise::Reject).unwrap();

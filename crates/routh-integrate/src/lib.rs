@@ -27,7 +27,8 @@
 //! * [`section`]: Poincaré sections, the crossings of many runs (in lanes) with a surface,
 //!   located by [`locate`];
 //! * [`lyapunov`]: Lyapunov spectra by the QR method on the variational equations, with
-//!   their convergence, the Kaplan–Yorke dimension and the average divergence of the field.
+//!   their convergence, the Kaplan–Yorke dimension and the average divergence of the field;
+//! * [`megno`]: the fast indicators MEGNO (and its mean) and FLI along one orbit.
 //!
 //! The integrators know nothing of the model: they only see an [`OdeSystem`].
 
@@ -38,6 +39,7 @@ pub mod differential;
 mod dop853;
 mod event;
 pub mod lyapunov;
+pub mod megno;
 mod pair;
 mod rk4;
 pub mod sampling;

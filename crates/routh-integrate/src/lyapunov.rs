@@ -176,7 +176,9 @@ pub fn kaplan_yorke_dimension(exponents: &[f64]) -> f64 {
 /// sequence) less 1/2. Any fixed subspace of codimension `< K` (the tangent space of a level
 /// set) meets their span in `K - codimension` independent directions unless by coincidence;
 /// the unit vectors would not (the first three span the normal of `|gamma| = 1`).
-fn generic_directions<const N: usize, const K: usize>(scales: &Scales<N>) -> [[f64; N]; K] {
+pub(crate) fn generic_directions<const N: usize, const K: usize>(
+    scales: &Scales<N>,
+) -> [[f64; N]; K] {
     let golden = (5f64.sqrt() - 1.0) / 2.0;
     std::array::from_fn(|k| {
         std::array::from_fn(|i| ((((k * N + i + 1) as f64) * golden).fract() - 0.5) / scales.of(i))
@@ -204,18 +206,22 @@ fn renormalise<F: Field<N>, const N: usize, const K: usize, const M: usize>(
     Ok((system.join(&system.state(z), &vectors), logs))
 }
 
-/// The integral of the divergence of `field` over the last step of `run` (of the variational
-/// system `system`), by 3-point Gauss–Legendre on its dense output.
-fn divergence_on_step<F: Field<N>, const N: usize, const K: usize, const M: usize>(
-    system: &Variational<'_, F, N, K, M>,
+/// The integral of `integrand(t, z)` over the last step of `run`, by 3-point Gauss–Legendre
+/// on its dense output (exact for polynomials of degree 5; the error of the interpolant's
+/// order beside it): the divergence here, the integrands of MEGNO in [`crate::megno`].
+pub(crate) fn gauss_on_step<const M: usize>(
     run: &(impl Stepper<M> + ?Sized),
+    integrand: impl Fn(f64, &[f64; M]) -> f64,
 ) -> f64 {
     let (a, b) = (run.t_prev(), run.t());
     let (middle, half) = ((a + b) / 2.0, (b - a) / 2.0);
     let node = (0.6f64).sqrt() * half;
     [(-node, 5.0), (0.0, 8.0), (node, 5.0)]
         .iter()
-        .map(|&(x, w)| w / 9.0 * divergence(system.field(), &system.state(&run.dense(middle + x))))
+        .map(|&(x, w)| {
+            let t = middle + x;
+            w / 9.0 * integrand(t, &run.dense(t))
+        })
         .sum::<f64>()
         * half
 }
@@ -268,7 +274,8 @@ pub fn spectrum<F: Field<N>, const N: usize, const K: usize, const M: usize>(
             &mut |_, _| Ok(()),
             &mut |_, _, run| {
                 if averaged {
-                    divergence_integral += divergence_on_step(&system, run);
+                    divergence_integral +=
+                        gauss_on_step(run, |_, z| divergence(field, &system.state(z)));
                 }
                 Ok(Control::Continue)
             },

@@ -6,7 +6,9 @@
 //! * [`SleepingTopFigure`]: the plane (H3, K) with the lines of vertical spins, coloured where
 //!   they are stable and where not (Routh's criterion), the thresholds marked;
 //! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop;
-//! * [`SectionFigure`]: a Poincaré section, the crossings of each run in a colour of its own.
+//! * [`SectionFigure`]: a Poincaré section, the crossings of each run in a colour of its own;
+//! * [`RegimeChartFigure`]: a chart of regimes, the mean MEGNO over a parameter plane as a
+//!   heat map with its colour bar.
 
 use crate::plot::{
     bounds, chart_ranges, plotting_area, tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA,
@@ -404,6 +406,102 @@ impl Figure for SectionFigure<'_> {
                     Circle::new((x, y), 1, colour.filled())
                 }),
         )?;
+        Ok(())
+    }
+}
+
+/// The top of the colour scale of a [`RegimeChartFigure`]: `<Y>` above it has its colour.
+pub const MEGNO_SCALE_TOP: f64 = 8.0;
+
+/// The colour of a mean MEGNO `<Y>` (ColorBrewer's RdYlBu, reversed, piecewise linear): dark
+/// blue at 0 and below (periodic, attractors), light blue at 1, pale yellow at 2 (tori),
+/// orange at 4, dark red at [`MEGNO_SCALE_TOP`] and above (chaos); grey for a failed run.
+pub fn megno_colour(mean_megno: f64) -> RGBColor {
+    const STOPS: [(f64, (f64, f64, f64)); 5] = [
+        (0.0, (49.0, 54.0, 149.0)),
+        (1.0, (116.0, 173.0, 209.0)),
+        (2.0, (255.0, 255.0, 191.0)),
+        (4.0, (244.0, 109.0, 67.0)),
+        (MEGNO_SCALE_TOP, (165.0, 0.0, 38.0)),
+    ];
+    if mean_megno.is_nan() {
+        return RGBColor(150, 150, 150);
+    }
+    let v = mean_megno.clamp(0.0, MEGNO_SCALE_TOP);
+    let i = STOPS.iter().rposition(|s| s.0 <= v).unwrap_or(0).min(3);
+    let ((a, ca), (b, cb)) = (STOPS[i], STOPS[i + 1]);
+    let u = (v - a) / (b - a);
+    let mix = |p: f64, q: f64| (p + (q - p) * u).round() as u8;
+    RGBColor(mix(ca.0, cb.0), mix(ca.1, cb.1), mix(ca.2, cb.2))
+}
+
+/// The width of the colour bar's strip at the right of a [`RegimeChartFigure`].
+const COLOUR_BAR_STRIP: u32 = 150;
+
+/// A chart of regimes: a heat map of the mean MEGNO `<Y>` over a grid of two parameters (one
+/// rectangle a point, [`megno_colour`]), with its colour bar.
+pub struct RegimeChartFigure<'a> {
+    /// The title above the chart.
+    pub title: String,
+    /// The names of the horizontal and vertical parameters.
+    pub labels: (&'a str, &'a str),
+    /// The horizontal axis: first and last values, number of points.
+    pub x: (f64, f64, usize),
+    /// The vertical axis.
+    pub y: (f64, f64, usize),
+    /// The points: `(x, y, <Y>)`, NaN for a failed run.
+    pub points: Vec<(f64, f64, f64)>,
+}
+
+impl Figure for RegimeChartFigure<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        root.fill(&WHITE)?;
+        let (map, strip) = root.split_horizontally(root.dim_in_pixel().0 - COLOUR_BAR_STRIP);
+        let half = |(from, to, n): (f64, f64, usize)| 0.5 * (to - from) / (n - 1) as f64;
+        let (hx, hy) = (half(self.x), half(self.y));
+        let mut chart = mesh(
+            &map,
+            &self.title,
+            (self.x.0 - hx, self.x.1 + hx),
+            (self.y.0 - hy, self.y.1 + hy),
+            self.labels,
+        )?;
+        chart.draw_series(self.points.iter().map(|&(x, y, v)| {
+            Rectangle::new(
+                [(x - hx, y - hy), (x + hx, y + hy)],
+                megno_colour(v).filled(),
+            )
+        }))?;
+        let (_, bar_area) = strip.split_vertically(TITLE_HEIGHT);
+        let mut bar = ChartBuilder::on(&bar_area)
+            .margin(MARGIN)
+            .margin_left(0)
+            .x_label_area_size(X_LABEL_AREA)
+            .y_label_area_size(70)
+            .build_cartesian_2d(0.0..1.0, 0.0..MEGNO_SCALE_TOP)?;
+        bar.configure_mesh()
+            .disable_x_axis()
+            .disable_mesh()
+            .y_desc("mean MEGNO <Y>")
+            .y_label_formatter(&|v| {
+                if *v >= MEGNO_SCALE_TOP {
+                    format!(">= {v}")
+                } else {
+                    tick_label(*v, MEGNO_SCALE_TOP)
+                }
+            })
+            .label_style(("sans-serif", 16))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()?;
+        let steps = 160;
+        let dv = MEGNO_SCALE_TOP / f64::from(steps);
+        bar.draw_series((0..steps).map(|i| {
+            let v = f64::from(i) * dv;
+            Rectangle::new(
+                [(0.0, v), (1.0, v + dv)],
+                megno_colour(v + dv / 2.0).filled(),
+            )
+        }))?;
         Ok(())
     }
 }

@@ -1,8 +1,9 @@
 //! The front ends' library of routh: case files ([`case`]), tables of samples ([`table`]) and their rows ([`row`]),
 //! output files written whole or not at all ([`output`]), figures ([`plot`], [`figure`]), the
 //! 3D viewer ([`animate`]), the explorer page computing in the browser ([`explore`]), sweeps
-//! ([`sweep`]), the report of Lyapunov exponents ([`lyapunov`]) and Poincaré sections
-//! ([`section`], on the surfaces of [`surface`]). The command-line tool and the Python module
+//! ([`sweep`]), the report of Lyapunov exponents ([`lyapunov`]), of MEGNO and FLI
+//! ([`megno`]) and charts of regimes over a parameter plane ([`chart`]), and Poincaré
+//! sections ([`section`], on the surfaces of [`surface`]). The command-line tool and the Python module
 //! are built on it; the model and the mathematics are the layers below (`routh-ball`,
 //! `routh-sphere`).
 #![warn(missing_docs)]
@@ -11,11 +12,14 @@
 
 pub mod animate;
 pub mod case;
+#[cfg(feature = "sweep")]
+pub mod chart;
 pub mod error;
 pub mod explore;
 #[cfg(feature = "plot")]
 pub mod figure;
 pub mod lyapunov;
+pub mod megno;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;

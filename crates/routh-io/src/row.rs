@@ -100,3 +100,26 @@ pub fn write_csv_line(cells: &[Cell], out: &mut String) {
         cell.write_csv(out);
     }
 }
+
+/// A table as CSV into `path`: the header `columns`, then one line per row of `rows`, written
+/// whole or not at all ([`crate::output::write_atomic`]), in chunks of about 64 KiB.
+pub fn write_csv_file(
+    path: &std::path::Path,
+    columns: &[&str],
+    rows: impl Iterator<Item = Vec<Cell>>,
+) -> crate::AppResult<()> {
+    crate::output::write_atomic(path, |w| {
+        let io = crate::AppError::io(path);
+        let mut line = columns.join(",");
+        line.push('\n');
+        for cells in rows {
+            write_csv_line(&cells, &mut line);
+            line.push('\n');
+            if line.len() > 1 << 16 {
+                w.write_all(line.as_bytes()).map_err(&io)?;
+                line.clear();
+            }
+        }
+        w.write_all(line.as_bytes()).map_err(&io)
+    })
+}

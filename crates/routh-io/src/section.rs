@@ -6,12 +6,11 @@
 //! energy level, the work).
 
 use crate::ball::Ball;
-use crate::error::{AppError, AppResult as Result};
+use crate::error::AppResult as Result;
 use crate::integrate::section::Point;
 use crate::integrate::Direction;
-use crate::output::write_atomic;
 use crate::problem::Plane;
-use crate::row::{write_csv_line, Cell};
+use crate::row::{write_csv_file, Cell};
 use crate::simulate::Settings;
 use crate::surface::{component_names, direction_name};
 use crate::table::{sample_cells, sample_columns};
@@ -125,20 +124,7 @@ pub fn cells(ball: &Ball, point: &Point<6>) -> Vec<Cell> {
 }
 
 /// The table of the crossings `points` of `ball` as CSV into `path`, written whole or not
-/// at all ([`write_atomic`]).
+/// at all ([`write_csv_file`]).
 pub fn write_csv(path: &Path, ball: &Ball, points: &[Point<6>]) -> Result<()> {
-    write_atomic(path, |w| {
-        let io = AppError::io(path);
-        let mut line = columns().join(",");
-        line.push('\n');
-        for point in points {
-            write_csv_line(&cells(ball, point), &mut line);
-            line.push('\n');
-            if line.len() > 1 << 16 {
-                w.write_all(line.as_bytes()).map_err(&io)?;
-                line.clear();
-            }
-        }
-        w.write_all(line.as_bytes()).map_err(&io)
-    })
+    write_csv_file(path, &columns(), points.iter().map(|p| cells(ball, p)))
 }

@@ -58,6 +58,16 @@ pub mod lyapunov {
     pub use routh_io::lyapunov::{report, report_case, History, Report};
 }
 
+/// MEGNO and FLI of a ball (`routh_ball::megno`) and, with the feature `io`, their report of
+/// `routh megno` (`routh_io::megno`) and, with `sweep`, charts of regimes (`routh_io::chart`).
+pub mod megno {
+    pub use routh_ball::megno::*;
+    #[cfg(feature = "sweep")]
+    pub use routh_io::chart;
+    #[cfg(feature = "io")]
+    pub use routh_io::megno::{report, report_case, History, Report};
+}
+
 /// Poincaré sections of a ball (`routh_ball::section`) and, with the feature `io`, the
 /// section of a case as `routh section` reports it (`routh_io::section`).
 pub mod section {

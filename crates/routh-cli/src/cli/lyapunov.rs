@@ -49,33 +49,65 @@ pub fn run(args: Args) -> Result<()> {
     }
 }
 
+/// The first lines of the text report of a run of the tangent flow (`lyapunov`, `megno`):
+/// the command and the case, the method and its tolerances, the work.
+pub(super) struct RunLines<'a> {
+    /// The command's name.
+    pub command: &'a str,
+    /// The case file.
+    pub case: Option<&'a str>,
+    /// The method.
+    pub method: &'a str,
+    /// Its tolerances `(rtol, atol)`.
+    pub tolerances: (f64, f64),
+    /// Accepted and rejected steps, field evaluations.
+    pub work: (usize, usize, usize),
+    /// Wall-clock time, in seconds.
+    pub elapsed_s: f64,
+}
+
+impl std::fmt::Display for RunLines<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (steps, rejected, evals) = self.work;
+        writeln!(
+            f,
+            "routh {}: {}",
+            self.command,
+            self.case.unwrap_or_default()
+        )?;
+        writeln!(
+            f,
+            "  method   {} (rtol {}, atol {})",
+            self.method,
+            Readable(self.tolerances.0),
+            Readable(self.tolerances.1)
+        )?;
+        writeln!(
+            f,
+            "  work     {steps} steps ({rejected} rejected), {evals} field evaluations in {:.3} s",
+            self.elapsed_s
+        )
+    }
+}
+
 /// The report as lines of text (the history only in JSON).
 fn report_text(r: &Report) -> String {
     use std::fmt::Write;
-    let mut text = String::new();
-    let _ = writeln!(
-        text,
-        "routh lyapunov: {}",
-        r.case.as_deref().unwrap_or_default()
-    );
-    let _ = writeln!(
-        text,
-        "  method   {} (rtol {}, atol {})",
-        r.method,
-        Readable(r.rtol),
-        Readable(r.atol)
-    );
+    let mut text = RunLines {
+        command: "lyapunov",
+        case: r.case.as_deref(),
+        method: &r.method,
+        tolerances: (r.rtol, r.atol),
+        work: (r.steps, r.rejected, r.rhs_evals),
+        elapsed_s: r.elapsed_s,
+    }
+    .to_string();
     let _ = writeln!(
         text,
         "  time     {} (averaged after {}, renormalised every {})",
         Readable(r.t_end),
         Readable(r.transient),
         Readable(r.interval)
-    );
-    let _ = writeln!(
-        text,
-        "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
-        r.steps, r.rejected, r.rhs_evals, r.elapsed_s
     );
     let _ = writeln!(text, "  exponents on |gamma| = 1:");
     for (k, lambda) in r.exponents.iter().enumerate() {

@@ -28,6 +28,7 @@ mod explore;
 mod flow;
 mod integration;
 mod lyapunov;
+mod megno;
 mod plot;
 mod section;
 mod simulate;
@@ -76,6 +77,9 @@ enum Command {
     /// The Lyapunov exponents of a case on |gamma| = 1 (QR method on the variational
     /// equations): their convergence, the Kaplan–Yorke dimension, the divergence check.
     Lyapunov(lyapunov::Args),
+    /// The fast indicators MEGNO and FLI of a case on |gamma| = 1; with --x and --y, a chart
+    /// of regimes over a plane of two quantities (CSV, PNG, SVG).
+    Megno(megno::Args),
     /// The Poincaré section of a case's motions on its energy level through a plane
     /// `NAME = NUMBER` (CSV, PNG, SVG).
     Section(section::Args),
@@ -186,6 +190,7 @@ pub fn main() -> ExitCode {
         Command::Sweep(args) => sweep::run(args),
         Command::Diagram(args) => diagram::run(args),
         Command::Lyapunov(args) => lyapunov::run(args),
+        Command::Megno(args) => megno::run(args),
         Command::Section(args) => section::run(args),
     };
     let flushed = result.and_then(|()| {

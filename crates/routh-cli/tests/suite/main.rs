@@ -8,5 +8,6 @@ mod bounds;
 mod cli;
 mod contact;
 mod exact_scaling;
+mod megno;
 mod messages;
 mod reliability;
