@@ -16,13 +16,14 @@
 
 use crate::ball::AsBall;
 use crate::case::Case;
+use crate::case::Overrides;
 use crate::error::AppResult as Result;
 use crate::error::RouthError;
 use crate::integrate::megno::Indicators;
 use crate::row::{write_csv_file, Cell};
 use crate::simulate::Settings;
 use crate::sweep::spec::Quantity;
-use crate::sweep::{pool, Overrides, Sweep};
+use crate::sweep::{pool, Sweep};
 use rayon::prelude::*;
 use routh_ball::lyapunov::tangent_method;
 use routh_ball::megno::ball_megno;
@@ -246,14 +247,13 @@ pub fn chart(
     document.insert("sweep".into(), grid.into());
     let text = toml::to_string(&document).expect("a TOML document serialises");
     let overrides = Overrides {
-        method: settings.method(),
+        method: Some(settings.method()),
         t_end: Some(settings.t_end()),
         rtol: Some(settings.rtol()),
         atol: Some(settings.atol()),
         max_steps: Some(settings.max_steps()),
-        columns: None,
     };
-    let sweep = Sweep::new(&text, &case.source, overrides)?;
+    let sweep = Sweep::new(&text, &case.source, overrides, None, None)?;
     let names = sweep.names();
     let position = |key: &str| {
         names

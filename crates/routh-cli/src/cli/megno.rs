@@ -7,9 +7,9 @@
 //! same number over a plane of parameters.
 
 use super::diagram::both_formats;
+use super::integration::{parse_method, Integration};
 use super::lyapunov::RunLines;
 use super::plot::create_dir;
-use super::simulate::{parse_method, Integration};
 use super::{print_json, Readable};
 use routh::case::Case;
 use routh::figure::RegimeChartFigure;
