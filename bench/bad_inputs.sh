@@ -220,6 +220,16 @@ for kv in "mu = 0.3|mu = -1" "mu = 0.3|mu = nan" "mu = 0.3|mu = inf" "law = \"sl
 done
 try new ok simulate --case "$TIPPE" --t-end 1 --json
 for cmd in exact steady sweep lyapunov; do try new refused $cmd --case "$TIPPE"; done
+# The fast indicators and the chart of regimes (issue 36): routh megno.
+for args in "--t-end 0" "--t-end nan" "--method taylor" "--method auto" "--rtol 1e-20" \
+            "--x initial.tilt=0:1:4" "--x initial.tilt=0:1:4 --y initial.tilt=0:1:4 --out $DIR/chart" \
+            "--x nosuch.key=0:1:4 --y initial.spin=1:2:4 --out $DIR/chart" \
+            "--x initial.tilt=0:1:0 --y initial.spin=1:2:4 --out $DIR/chart" \
+            "--x initial.tilt=nan:1:4 --y initial.spin=1:2:4 --out $DIR/chart"; do
+  try new refused megno $args
+done
+try new ok megno --t-end 5 --json
+try new refused megno --case "$TIPPE"
 # The user events of a sweep (issue 34): the [sweep] key `events` and the option --events.
 sed 's/t_end = 100.0/t_end = 1.0/' "$DEFAULT" > "$DIR/events.toml"
 printf '\n[sweep]\ntilt = { values = [0.3, 0.6] }\n' >> "$DIR/events.toml"
