@@ -10,7 +10,7 @@ use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::row::{csv_line, Cell};
-use routh::simulate::{Settings, Summary};
+use routh::simulate::{Drift, Settings, Summary};
 use routh::table::{
     rubber_samples, sample_columns, simulate_samples, sliding_samples, STATE_COLUMN_NAMES,
 };
@@ -257,21 +257,12 @@ fn rubber_text(case: &Case, s: &RubberSummary, out: Option<&Path>) -> String {
         "  contact  rubber: rolling without slipping or twisting, omega . gamma = 0"
     );
     run_lines(&mut text, &s.run, "");
-    let _ = writeln!(text, "  integral        initial value   max relative drift");
-    for name in &RUBBER_COLUMNS[..3] {
-        let _ = match s.run.integrals.get(name) {
-            Some(d) => writeln!(
-                text,
-                "  {name:<4} {:>24.15e}   {:.3e}",
-                d.initial, d.max_rel_drift
-            ),
-            None => writeln!(
-                text,
-                "  {name:<4} {:>24}   (not an integral: G > 0 and the centre of mass off the centre)",
-                "-"
-            ),
-        };
-    }
+    integral_lines(
+        &mut text,
+        &RUBBER_COLUMNS[..3],
+        &s.run.integrals,
+        "G > 0 and the centre of mass off the centre",
+    );
     let _ = writeln!(
         text,
         "  constraint max |omega . gamma| / |omega|   {:.3e}",
@@ -279,6 +270,28 @@ fn rubber_text(case: &Case, s: &RubberSummary, out: Option<&Path>) -> String {
     );
     samples_line(&mut text, out);
     text
+}
+
+/// The table of the integrals `names` of a run, their initial value and drift, as lines of
+/// text; one missing from `integrals` is not an integral, for the reason `why`.
+fn integral_lines(
+    text: &mut String,
+    names: &[&str],
+    integrals: &std::collections::BTreeMap<&'static str, Drift>,
+    why: &str,
+) {
+    use std::fmt::Write;
+    let _ = writeln!(text, "  integral        initial value   max relative drift");
+    for name in names {
+        let _ = match integrals.get(name) {
+            Some(d) => writeln!(
+                text,
+                "  {name:<4} {:>24.15e}   {:.3e}",
+                d.initial, d.max_rel_drift
+            ),
+            None => writeln!(text, "  {name:<4} {:>24}   (not an integral: {why})", "-"),
+        };
+    }
 }
 
 /// The method, the time, the work and the final state of a run, as lines of text.
@@ -309,21 +322,7 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     let _ = writeln!(text, "routh simulate: {}", case.source);
     let _ = writeln!(text, "{}", body_line(case));
     run_lines(&mut text, s, &projected);
-    let _ = writeln!(text, "  integral        initial value   max relative drift");
-    for name in INTEGRAL_NAMES {
-        let _ = match s.integrals.get(name) {
-            Some(d) => writeln!(
-                text,
-                "  {name:<4} {:>24.15e}   {:.3e}",
-                d.initial, d.max_rel_drift
-            ),
-            None => writeln!(
-                text,
-                "  {name:<4} {:>24}   (not an integral: I1 != I2)",
-                "-"
-            ),
-        };
-    }
+    integral_lines(&mut text, &INTEGRAL_NAMES, &s.integrals, "I1 != I2");
     samples_line(&mut text, out);
     text
 }
