@@ -445,7 +445,7 @@ mod tests {
                 let checks = [
                     ("twist", rate(&model, |y| model.twist(y), &x), w * w),
                     ("H1", rate(&model, |y| energy(&ball, y), &x), h1 * w),
-                    ("H4", rate(&model, |y| geometric(y), &x), w),
+                    ("H4", rate(&model, geometric, &x), w),
                 ];
                 for (name, r, scale) in checks {
                     assert!(r.abs() <= 1e-12 * scale, "{name}' = {r:e} for {ball:?}");
