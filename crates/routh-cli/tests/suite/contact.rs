@@ -25,6 +25,32 @@ fn case_with(case: &str, name: &str, edit: impl Fn(String) -> String) -> PathBuf
     path
 }
 
+/// `routh simulate` of `cases/<case>.toml` to t = 1 with `samples` samples written to a CSV
+/// file: its text and the summary printed.
+fn samples_of(case: &str, samples: &str) -> (String, String) {
+    let dir = std::env::temp_dir().join(format!("routh-{case}-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("samples.csv");
+    let out = routh(&[
+        "simulate",
+        "--case",
+        &format!("cases/{case}.toml"),
+        "--t-end",
+        "1",
+        "--samples",
+        samples,
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    (text, String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
 /// The must-show from the command line: the tippe top of the case file rises from
 /// R - a = 0.7 to R + a = 1.3 (within 1e-3 at t = 20, as the library's test), Jellett's
 /// integral drifts by less than 1e-9 and H1 + the friction's work by less than 1e-9. The same
@@ -76,26 +102,7 @@ fn the_tippe_top_of_the_case_file_inverts() {
 /// to 1e-15 (the height of the case's initial tilt, exact but for rounding).
 #[test]
 fn the_samples_have_the_contact_columns() {
-    let dir = std::env::temp_dir().join(format!("routh-contact-csv-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let csv = dir.join("tippe.csv");
-    let out = routh(&[
-        "simulate",
-        "--case",
-        "cases/tippe_top.toml",
-        "--t-end",
-        "1",
-        "--samples",
-        "11",
-        "--out",
-        csv.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let (text, summary) = samples_of("tippe_top", "11");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(header, OBSERVATION_NAMES);
@@ -107,7 +114,6 @@ fn the_samples_have_the_contact_columns() {
         (first - (1.0 - 0.3 * 0.1_f64.cos())).abs() < 1e-15,
         "{first}"
     );
-    let summary = String::from_utf8_lossy(&out.stdout);
     assert!(
         summary.contains("contact  sliding, viscous friction"),
         "{summary}"
@@ -216,26 +222,7 @@ fn the_rubber_ball_keeps_its_energy_and_its_constraint() {
         );
     }
     assert!(json["twist"].as_f64().unwrap() < 1e-9, "{json}");
-    let dir = std::env::temp_dir().join(format!("routh-rubber-csv-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let csv = dir.join("rubber.csv");
-    let out = routh(&[
-        "simulate",
-        "--case",
-        "cases/rubber.toml",
-        "--t-end",
-        "1",
-        "--samples",
-        "5",
-        "--out",
-        csv.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let (text, summary) = samples_of("rubber", "5");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let want: Vec<&str> = std::iter::once("t")
@@ -250,7 +237,6 @@ fn the_rubber_ball_keeps_its_energy_and_its_constraint() {
         let value: f64 = row.split(',').nth(twist).unwrap().parse().unwrap();
         assert!(value.abs() < 5e-9, "{row}");
     }
-    let summary = String::from_utf8_lossy(&out.stdout);
     assert!(summary.contains("contact  rubber"), "{summary}");
 }
 
@@ -265,19 +251,19 @@ fn bad_rubber_cases_are_refused() {
         assert_exit_2(&["simulate", "--case", case.to_str().unwrap()], expected);
     };
     refused(
-        "twist.toml",
+        "rubber-twist.toml",
         "omega = [-4.0, 1.0, 3.0]",
         "omega = [-4.0, 1.0, 3.00000125]",
         "the rubber ball does not twist: omega . gamma = 1.0000000",
     );
     refused(
-        "mu.toml",
+        "rubber-mu.toml",
         "law = \"rubber\"",
         "law = \"rubber\"\nmu = 0.3",
         "`friction` and `mu` belong to law = \"sliding\"; law = \"rubber\" has no friction",
     );
     refused(
-        "velocity.toml",
+        "rubber-velocity.toml",
         "omega = [-4.0, 1.0, 3.0]",
         "omega = [-4.0, 1.0, 3.0]\nvelocity = [0.0, 0.0, 0.0]",
         "`velocity` belongs to a sliding contact",
