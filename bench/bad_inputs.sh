@@ -194,7 +194,7 @@ try csv ok plot --csv "$DIR/good.csv" --out "$DIR/plots"
 try csv ok animate --csv "$DIR/good.csv" --out "$DIR/plots"
 
 # The newer commands and the contact law (issues 35, 36, 37): sections, spectra, the explorer
-# page, and case files of the sliding ball.
+# page, and case files of the sliding and the rubber ball.
 for args in "--surface gamma7=0" "--surface gamma1" "--surface gamma1=nan" "--surface =0" \
             "--surface gamma1=0 --direction sideways" "--surface gamma1=0 --initial 0" \
             "--surface gamma1=0 --method taylor" "--surface gamma1=0 --t-end -1" \
@@ -245,6 +245,16 @@ done
 try new refused sweep --case "$DIR/events.toml" --events "gamma1 = 0" --columns event1_count --out "$DIR/events.csv"
 [[ -e $DIR/events.csv ]] && { echo "WRONG: a refused sweep wrote its table" >&2; wrong_total=$((wrong_total+1)); }
 try new ok sweep --case "$DIR/events.toml" --events "gamma1 = 0,M1 = -2.5e-1 up" --out "$DIR/events.csv"
+RUBBER=cases/rubber.toml
+rubber() { sed "s|$1|$2|" "$RUBBER" > "$DIR/r.toml"; echo "$DIR/r.toml"; }
+for kv in "omega = \[-4.0, 1.0, 3.0\]|omega = [-4.0, 1.0, 3.1]" "omega = \[-4.0, 1.0, 3.0\]|omega = [nan, 1.0, 3.0]" \
+          "law = \"rubber\"|law = \"rubber\"\nmu = 0.3" "law = \"rubber\"|law = \"rubber\"\nfriction = \"viscous\"" \
+          "omega = \[-4.0, 1.0, 3.0\]|omega = [-4.0, 1.0, 3.0]\nvelocity = [0.0, 0.0, 0.0]"; do
+  try new refused simulate --case "$(rubber "${kv%%|*}" "${kv##*|}")" --t-end 1
+done
+try new refused simulate --case "$RUBBER" --t-end 1 --project
+try new ok simulate --case "$RUBBER" --t-end 1 --json
+for cmd in exact steady sweep lyapunov megno; do try new refused $cmd --case "$RUBBER"; done
 
 printf '| class | tried | refused (exit 2, message) | ok (exit 0, no NaN) | wrong |\n|---|---|---|---|---|\n'
 total=0

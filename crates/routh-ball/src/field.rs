@@ -70,6 +70,18 @@ pub enum OmegaForm {
     Determinant,
 }
 
+impl OmegaForm {
+    /// `omega = I_Q^{-1} v` (om-m) of the ball at `gamma`, in this form (`v = M`: the angular
+    /// velocity; any other vector `v` of the same unit: `I_Q^{-1} v`).
+    #[inline(always)]
+    pub fn angular_velocity<D: Scalar>(self, ball: &Ball, gamma: &[D; 3], v: &[D; 3]) -> [D; 3] {
+        match self {
+            OmegaForm::Cofactors => ball.angular_velocity(gamma, v),
+            OmegaForm::Determinant => ball.angular_velocity_by_determinant(gamma, v),
+        }
+    }
+}
+
 /// [`vector_field`] with `omega` in the form `form`.
 #[inline(always)]
 pub fn vector_field_in<D: Scalar>(form: OmegaForm, body: &impl AsBall, x: &[D; 6]) -> [D; 6] {
@@ -86,10 +98,7 @@ pub fn vector_field_in<D: Scalar>(form: OmegaForm, body: &impl AsBall, x: &[D; 6
 #[inline(always)]
 fn ball_field<D: Scalar>(ball: &Ball, x: &[D; 6], form: OmegaForm) -> [D; 6] {
     let (gamma, m_vec) = split(x);
-    let omega = match form {
-        OmegaForm::Cofactors => ball.angular_velocity(&gamma, &m_vec),
-        OmegaForm::Determinant => ball.angular_velocity_by_determinant(&gamma, &m_vec),
-    };
+    let omega = form.angular_velocity(ball, &gamma, &m_vec);
     let gamma_dot = cross(&gamma, &omega);
     // Identity 1: m R dgamma/dt x (omega x r) = s omega, s = (dgamma/dt, -m R com).
     let roll = ball.com().map(|c| -(ball.m() * ball.radius()) * c);

@@ -20,22 +20,28 @@
 //! atol = 1e-12
 //! max_steps = 10000000
 //! [contact]         # optional: the contact law, rolling without slipping by default
-//! law = "sliding"   # "rolling" (the default: the paper's system) or "sliding"
+//! law = "sliding"   # "rolling" (the default: the paper's system), "rubber" or "sliding"
 //! friction = "viscous"      # optional with "sliding" (the only friction so far)
 //! mu = 0.3                  # with "sliding": F = -mu N v_P
 //! ```
+//!
+//! With `law = "rubber"` (rolling without slipping or twisting, `routh_ball::contact::rubber`)
+//! the state is the rolling law's; the initial state must not twist,
+//! `|omega . gamma| <= 1e-12 |omega|` (`routh_ball::contact::rubber::TWIST_TOLERANCE`), and is
+//! refused otherwise, never changed; the case then holds the rubber ball ([`Case::rubber`]).
 //!
 //! With `law = "sliding"`, `[initial]` may give `velocity = [x, y, z]`, the horizontal velocity
 //! of the centre of mass in the body frame (default: at rest); the case then holds the
 //! sliding ball and its initial state ([`Case::sliding`], see
 //! `routh_ball::contact::sliding`). Only [`Case::load_any_contact`] (`routh simulate`) reads
-//! such a case; every other way of reading a case refuses it, naming the command that can.
+//! a case of the rubber or the sliding law; every other way of reading a case refuses it, naming the command that can.
 //!
 //! `G` is optional (default 9.81). Unknown keys and tables anywhere (at the top level, in a
 //! table) and missing fields are errors that name the key, the table and the file.
 
 use crate::ball::{AsBall, Ball};
 use crate::body::Body;
+use crate::contact::rubber::Rubber;
 use crate::contact::sliding::{Sliding, DIM};
 use crate::contact::Contact;
 use crate::error::{AppError, AppResult as Result, FileError};
@@ -112,6 +118,18 @@ pub struct Case {
     /// The sliding ball and its initial state, with `[contact] law = "sliding"`; `None` for
     /// the rolling law (the default).
     pub sliding: Option<SlidingStart>,
+    /// The rubber ball and its initial state, with `[contact] law = "rubber"`; `None` for the
+    /// other laws.
+    pub rubber: Option<RubberStart>,
+}
+
+/// A rubber ball and its state at t = 0, on the constraint ([`Rubber::start`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RubberStart {
+    /// The ball.
+    pub model: Rubber,
+    /// The state `(gamma, M)` at t = 0.
+    pub x0: [f64; 6],
 }
 
 /// A sliding ball and its state at t = 0, validated ([`Sliding::initial`]).
@@ -151,11 +169,11 @@ impl ContactTable {
     fn contact(&self) -> std::result::Result<Contact, String> {
         match (self.law.as_str(), &self.friction, self.mu) {
             ("rolling", None, None) => Ok(Contact::Rolling),
-            ("rolling", _, _) => Err(
+            ("rubber", None, None) => Ok(Contact::Rubber),
+            (law @ ("rolling" | "rubber"), _, _) => Err(format!(
                 "in [contact]: `friction` and `mu` belong to law = \"sliding\"; \
-                                      the rolling law has no friction"
-                    .into(),
-            ),
+                 law = \"{law}\" has no friction"
+            )),
             ("sliding", friction, mu) => {
                 if let Some(other) = friction.as_deref().filter(|f| *f != "viscous") {
                     return Err(format!(
@@ -166,7 +184,8 @@ impl ContactTable {
                 Contact::sliding(mu).map_err(|e| format!("in [contact]: {e}"))
             }
             (other, _, _) => Err(format!(
-                "in [contact]: unknown law = \"{other}\"; known: \"rolling\", \"sliding\""
+                "in [contact]: unknown law = \"{other}\"; known: \"rolling\", \"rubber\", \
+                 \"sliding\""
             )),
         }
     }
@@ -297,22 +316,32 @@ impl Case {
                 .map_err(err)?,
         };
         let velocity = values.initial.velocity;
+        if velocity.is_some() && !matches!(contact, Contact::Sliding { .. }) {
+            return Err(err(format!(
+                "in [initial]: `velocity` belongs to a sliding contact ([contact] law = \
+                 \"sliding\"); a rolling ball's velocity follows from omega (law = \"{}\")",
+                contact.law()
+            ))
+            .into());
+        }
+        if contact != Contact::Rolling && laws == Laws::Rolling {
+            return Err(err(format!(
+                "[contact] law = \"{}\" is integrated by `routh simulate` only (so far); this \
+                 command integrates the rolling law",
+                contact.law()
+            ))
+            .into());
+        }
+        let rubber = match contact {
+            Contact::Rubber => {
+                let model = Rubber::new(&ball);
+                let x0 = model.start(&initial)?;
+                Some(RubberStart { model, x0 })
+            }
+            _ => None,
+        };
         let sliding = match contact {
-            Contact::Rolling if velocity.is_some() => {
-                return Err(err("in [initial]: `velocity` belongs to a sliding contact \
-                                ([contact] law = \"sliding\"); a rolling ball's velocity \
-                                follows from omega"
-                    .into())
-                .into());
-            }
-            Contact::Rolling => None,
-            Contact::Sliding { .. } if laws == Laws::Rolling => {
-                return Err(err("[contact] law = \"sliding\" is integrated by `routh \
-                                simulate` only (so far); this command integrates the rolling \
-                                law"
-                .into())
-                .into());
-            }
+            Contact::Rolling | Contact::Rubber => None,
             Contact::Sliding { mu, .. } => {
                 let model = Sliding::new(&ball, mu)?;
                 let y0 = model.initial(
@@ -331,6 +360,7 @@ impl Case {
             integration,
             document,
             sliding,
+            rubber,
         })
     }
 

@@ -4,7 +4,8 @@
 //! reads as NaN). The plots and the animation draw from a [`Table`].
 
 use crate::ball::Ball;
-use crate::case::{Case, Overrides, SlidingStart};
+use crate::case::{Case, Overrides, RubberStart, SlidingStart};
+use crate::contact::rubber::{run as run_rubber, RubberSummary};
 use crate::contact::sliding::{run as run_sliding, SlidingSummary, DIM};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
@@ -215,18 +216,22 @@ pub fn sample_columns(full: bool) -> Vec<&'static str> {
 /// and, when `y` holds the motion in space (`FullMotion`'s state), its [`full_columns`].
 pub fn sample_cells(ball: &Ball, t: f64, y: &[f64]) -> Vec<Cell> {
     let x: [f64; 6] = std::array::from_fn(|i| y[i]);
-    let omega = Point::from_array(&x).omega(ball);
     let space = <&[f64; FULL_DIM]>::try_from(y)
         .ok()
         .map(|y| full_columns(ball, y));
-    std::iter::once(t)
-        .chain(x)
-        .chain(omega)
+    state_values(ball, t, &x)
         .map(Some)
         .chain(Integrals::at(ball, &x).values())
         .chain(space.into_iter().flatten().map(Some))
         .map(Cell::Float)
         .collect()
+}
+
+/// `t`, the reduced state `x` and omega: the first columns of every sample of a run of the
+/// reduced state ([`STATE_COLUMN_NAMES`]).
+fn state_values(ball: &Ball, t: f64, x: &[f64; 6]) -> impl Iterator<Item = f64> {
+    let omega = Point::from_array(x).omega(ball);
+    std::iter::once(t).chain(*x).chain(omega)
 }
 
 /// Simulate `case` with `settings`, with the full motion (the orientation and the path in
@@ -290,6 +295,29 @@ pub fn sliding_samples(
         on_row(&cells)
     };
     run_sliding(model, start.y0, settings, &mut on_sample)
+}
+
+/// Simulate the rubber ball `start` (`[contact] law = "rubber"`) with `settings` and hand the
+/// cells of each dense sample to `on_row`: `t`, the [`STATE_COLUMN_NAMES`] and the rubber
+/// ball's [`COLUMN_NAMES`](crate::contact::rubber::COLUMN_NAMES) (its integrals, the twist,
+/// the couple; F empty where it is not an integral): the samples of `routh simulate` for that
+/// contact. Returns the run's summary.
+pub fn rubber_samples(
+    start: &RubberStart,
+    settings: &Settings,
+    on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
+) -> Result<RubberSummary> {
+    let model = &start.model;
+    let ball = model.ball();
+    let mut on_sample = |t: f64, x: &[f64; 6]| {
+        let cells: Vec<Cell> = state_values(&ball, t, x)
+            .map(Some)
+            .chain(model.columns(x))
+            .map(Cell::Float)
+            .collect();
+        on_row(&cells)
+    };
+    run_rubber(model, start.x0, settings, &mut on_sample)
 }
 
 /// Simulate `case` with the full motion (its settings with `overrides` applied, checked as

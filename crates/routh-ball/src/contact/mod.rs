@@ -1,11 +1,14 @@
 //! Contact laws other than rolling without slipping: the same ball on another contact with
 //! the plane. The rolling law of the paper is the rest of this crate ([`crate::field`]); this
-//! module holds the laws whose state is not the reduced `(gamma, M)` of (mg-eq):
-//! [`sliding`], the ball that stays on the plane while its contact point slips against a
-//! viscous friction force (the tippe top of Rauch-Wojciechowski and Rutstam).
+//! module holds the other laws: [`rubber`], the ball that rolls without slipping or twisting
+//! (the state is the rolling law's `(gamma, M)`, the field (mg-eq) plus the couple about the
+//! normal that keeps `(omega, gamma) = 0`), and [`sliding`], the ball that stays on the plane
+//! while its contact point slips against a viscous friction force (the tippe top of
+//! Rauch-Wojciechowski and Rutstam).
 //!
 //! A law is chosen by [`Contact`] (a case file's `[contact]` table), validated when built.
 
+pub mod rubber;
 pub mod sliding;
 
 use crate::error::{Number, Result, RouthError};
@@ -17,6 +20,9 @@ use serde::Serialize;
 pub enum Contact {
     /// Rolling without slipping: the paper's system (mg-eq), the default.
     Rolling,
+    /// Rolling without slipping or twisting: `(omega, gamma) = 0` added to the constraint
+    /// ([`rubber`]).
+    Rubber,
     /// The ball stays on the plane and its contact point may slip, against the viscous
     /// friction `F = -mu N v_P` ([`sliding`]).
     Sliding {
@@ -37,6 +43,15 @@ pub enum Friction {
 }
 
 impl Contact {
+    /// The law's name in a case file (`law = "..."`).
+    pub fn law(&self) -> &'static str {
+        match self {
+            Contact::Rolling => "rolling",
+            Contact::Rubber => "rubber",
+            Contact::Sliding { .. } => "sliding",
+        }
+    }
+
     /// The viscous sliding contact of coefficient `mu`, if finite and `>= 0` (`mu = 0`: a
     /// frictionless plane).
     pub fn sliding(mu: f64) -> Result<Self> {

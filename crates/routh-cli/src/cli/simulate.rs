@@ -4,13 +4,16 @@
 use super::integration::{parse_method, Integration};
 use super::{Readable, ReportStream};
 use routh::case::{Case, SlidingStart};
+use routh::contact::rubber::{RubberSummary, COLUMN_NAMES as RUBBER_COLUMNS};
 use routh::contact::sliding::{SlidingSummary, OBSERVATION_NAMES};
 use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::row::{csv_line, Cell};
-use routh::simulate::{Settings, Summary};
-use routh::table::{sample_columns, simulate_samples, sliding_samples};
+use routh::simulate::{Drift, Settings, Summary};
+use routh::table::{
+    rubber_samples, sample_columns, simulate_samples, sliding_samples, STATE_COLUMN_NAMES,
+};
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
 
@@ -93,15 +96,27 @@ pub fn run_command(args: Args) -> Result<()> {
     };
     let settings = settings(&case, &args, samples)?;
     let stream = ReportStream::beside([out.as_deref()]);
-    if let Some(start) = &case.sliding {
-        if args.full {
-            return Err(RouthError::Option {
-                name: "full",
-                value: "true".into(),
-                rule: "is not available for [contact] law = \"sliding\" (so far)",
-            }
-            .into());
+    if args.full && (case.sliding.is_some() || case.rubber.is_some()) {
+        return Err(RouthError::Option {
+            name: "full",
+            value: "true".into(),
+            rule: "is not available for [contact] law = \"sliding\" or \"rubber\" (so far)",
         }
+        .into());
+    }
+    if let Some(start) = &case.rubber {
+        let columns: Vec<&str> = std::iter::once("t")
+            .chain(STATE_COLUMN_NAMES)
+            .chain(RUBBER_COLUMNS)
+            .collect();
+        let summary = execute(out.as_deref(), &columns, |on_row| {
+            rubber_samples(start, &settings, on_row)
+        })?;
+        return stream.print(&summary, args.json, |s| {
+            rubber_text(&case, s, out.as_deref())
+        });
+    }
+    if let Some(start) = &case.sliding {
         let summary = execute(out.as_deref(), &OBSERVATION_NAMES, |on_row| {
             sliding_samples(start, &settings, on_row)
         })?;
@@ -230,17 +245,58 @@ fn body_line(case: &Case) -> String {
     )
 }
 
-/// The summary as lines of text.
-fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
+/// The summary of a rubber run as lines of text: the run's, with the rubber ball's integrals
+/// and the residual of the constraint.
+fn rubber_text(case: &Case, s: &RubberSummary, out: Option<&Path>) -> String {
     use std::fmt::Write;
     let mut text = String::new();
-    let projected = match (s.projected, s.project_every) {
-        (false, _) => String::new(),
-        (true, 1) => " with projection onto the integrals".to_string(),
-        (true, n) => format!(" with projection onto the integrals every {n} steps"),
-    };
     let _ = writeln!(text, "routh simulate: {}", case.source);
     let _ = writeln!(text, "{}", body_line(case));
+    let _ = writeln!(
+        text,
+        "  contact  rubber: rolling without slipping or twisting, omega . gamma = 0"
+    );
+    run_lines(&mut text, &s.run, "");
+    integral_lines(
+        &mut text,
+        &RUBBER_COLUMNS[..3],
+        &s.run.integrals,
+        "G > 0 and the centre of mass off the centre",
+    );
+    let _ = writeln!(
+        text,
+        "  constraint max |omega . gamma| / |omega|   {:.3e}",
+        s.twist
+    );
+    samples_line(&mut text, out);
+    text
+}
+
+/// The table of the integrals `names` of a run, their initial value and drift, as lines of
+/// text; one missing from `integrals` is not an integral, for the reason `why`.
+fn integral_lines(
+    text: &mut String,
+    names: &[&str],
+    integrals: &std::collections::BTreeMap<&'static str, Drift>,
+    why: &str,
+) {
+    use std::fmt::Write;
+    let _ = writeln!(text, "  integral        initial value   max relative drift");
+    for name in names {
+        let _ = match integrals.get(name) {
+            Some(d) => writeln!(
+                text,
+                "  {name:<4} {:>24.15e}   {:.3e}",
+                d.initial, d.max_rel_drift
+            ),
+            None => writeln!(text, "  {name:<4} {:>24}   (not an integral: {why})", "-"),
+        };
+    }
+}
+
+/// The method, the time, the work and the final state of a run, as lines of text.
+fn run_lines(text: &mut String, s: &Summary, projected: &str) {
+    use std::fmt::Write;
     let _ = writeln!(text, "  method   {}{projected}", s.method);
     let _ = writeln!(text, "  t_end    {}", s.t_end);
     let _ = writeln!(
@@ -252,21 +308,21 @@ fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
     let _ = writeln!(text, "  gamma(t_end) = [{g1:.15}, {g2:.15}, {g3:.15}]");
     let [m1, m2, m3] = s.final_state.m;
     let _ = writeln!(text, "  M(t_end)     = [{m1:.15}, {m2:.15}, {m3:.15}]");
-    let _ = writeln!(text, "  integral        initial value   max relative drift");
-    for name in INTEGRAL_NAMES {
-        let _ = match s.integrals.get(name) {
-            Some(d) => writeln!(
-                text,
-                "  {name:<4} {:>24.15e}   {:.3e}",
-                d.initial, d.max_rel_drift
-            ),
-            None => writeln!(
-                text,
-                "  {name:<4} {:>24}   (not an integral: I1 != I2)",
-                "-"
-            ),
-        };
-    }
+}
+
+/// The summary as lines of text.
+fn summary_text(case: &Case, s: &Summary, out: Option<&Path>) -> String {
+    use std::fmt::Write;
+    let mut text = String::new();
+    let projected = match (s.projected, s.project_every) {
+        (false, _) => String::new(),
+        (true, 1) => " with projection onto the integrals".to_string(),
+        (true, n) => format!(" with projection onto the integrals every {n} steps"),
+    };
+    let _ = writeln!(text, "routh simulate: {}", case.source);
+    let _ = writeln!(text, "{}", body_line(case));
+    run_lines(&mut text, s, &projected);
+    integral_lines(&mut text, &INTEGRAL_NAMES, &s.integrals, "I1 != I2");
     samples_line(&mut text, out);
     text
 }

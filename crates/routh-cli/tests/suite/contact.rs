@@ -1,20 +1,54 @@
 //! Issue 35: `routh simulate` on a case with a `[contact]` table: the tippe top of
 //! `cases/tippe_top.toml` inverts, the tops of the published conditions do not, the table of
-//! samples has the contact's columns, `law = "rolling"` is the default to the bit, and every
-//! bad contact is refused with exit code 2 and its reason.
+//! samples has the contact's columns, `law = "rolling"` is the default to the bit, the rubber
+//! ball of `cases/rubber.toml` keeps its energy and its constraint, and every bad contact is
+//! refused with exit code 2 and its reason.
 
 use crate::common::{assert_exit_2, json_of, routh, ROOT};
+use routh::contact::rubber::COLUMN_NAMES as RUBBER_COLUMNS;
 use routh::contact::sliding::OBSERVATION_NAMES;
+use routh::table::STATE_COLUMN_NAMES;
 use std::path::PathBuf;
 
 /// `cases/tippe_top.toml` with `edit` applied to its text, written to a fresh file.
 fn tippe_top_with(name: &str, edit: impl Fn(String) -> String) -> PathBuf {
-    let text = std::fs::read_to_string(format!("{ROOT}/cases/tippe_top.toml")).unwrap();
+    case_with("tippe_top", name, edit)
+}
+
+/// `cases/<case>.toml` with `edit` applied to its text, written to a fresh file `name`.
+fn case_with(case: &str, name: &str, edit: impl Fn(String) -> String) -> PathBuf {
+    let text = std::fs::read_to_string(format!("{ROOT}/cases/{case}.toml")).unwrap();
     let dir = std::env::temp_dir().join(format!("routh-contact-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, edit(text)).unwrap();
     path
+}
+
+/// `routh simulate` of `cases/<case>.toml` to t = 1 with `samples` samples written to a CSV
+/// file: its text and the summary printed.
+fn samples_of(case: &str, samples: &str) -> (String, String) {
+    let dir = std::env::temp_dir().join(format!("routh-{case}-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("samples.csv");
+    let out = routh(&[
+        "simulate",
+        "--case",
+        &format!("cases/{case}.toml"),
+        "--t-end",
+        "1",
+        "--samples",
+        samples,
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    (text, String::from_utf8_lossy(&out.stdout).into_owned())
 }
 
 /// The issue's must-show from the command line: the tippe top of the case file rises from
@@ -68,26 +102,7 @@ fn the_tippe_top_of_the_case_file_inverts() {
 /// to 1e-15 (the height of the case's initial tilt, exact but for rounding).
 #[test]
 fn the_samples_have_the_contact_columns() {
-    let dir = std::env::temp_dir().join(format!("routh-contact-csv-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let csv = dir.join("tippe.csv");
-    let out = routh(&[
-        "simulate",
-        "--case",
-        "cases/tippe_top.toml",
-        "--t-end",
-        "1",
-        "--samples",
-        "11",
-        "--out",
-        csv.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let (text, summary) = samples_of("tippe_top", "11");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(header, OBSERVATION_NAMES);
@@ -99,7 +114,6 @@ fn the_samples_have_the_contact_columns() {
         (first - (1.0 - 0.3 * 0.1_f64.cos())).abs() < 1e-15,
         "{first}"
     );
-    let summary = String::from_utf8_lossy(&out.stdout);
     assert!(
         summary.contains("contact  sliding, viscous friction"),
         "{summary}"
@@ -179,5 +193,93 @@ fn bad_contacts_are_refused() {
     assert_exit_2(
         &["simulate", "--case", "cases/tippe_top.toml", "--full"],
         "full",
+    );
+}
+
+/// The rubber ball of `cases/rubber.toml` from the command line: H1 and H4 drift by less than
+/// 1e-9 over t = 5 at the default tolerances (1e-12 per step over a few hundred steps), the
+/// constraint's residual `max |omega . gamma| / |omega|` is below 1e-9, the rolling law's H3
+/// and K are not reported (not integrals of the rubber ball), and F is not either (gravity,
+/// centre of mass off the centre); the CSV has the state, omega and the rubber ball's columns,
+/// its twist column zero to 1e-9 of |omega| (about 5).
+#[test]
+fn the_rubber_ball_keeps_its_energy_and_its_constraint() {
+    let json = json_of(&routh(&[
+        "simulate",
+        "--case",
+        "cases/rubber.toml",
+        "--t-end",
+        "5",
+        "--json",
+    ]));
+    let integrals = json["integrals"].as_object().unwrap();
+    let names: Vec<&str> = integrals.keys().map(|k| k.as_str()).collect();
+    assert_eq!(names, ["H1", "H4"], "{json}");
+    for (name, d) in integrals {
+        assert!(
+            d["max_rel_drift"].as_f64().unwrap() < 1e-9,
+            "{name}: {json}"
+        );
+    }
+    assert!(json["twist"].as_f64().unwrap() < 1e-9, "{json}");
+    let (text, summary) = samples_of("rubber", "5");
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let want: Vec<&str> = std::iter::once("t")
+        .chain(STATE_COLUMN_NAMES)
+        .chain(RUBBER_COLUMNS)
+        .collect();
+    assert_eq!(header, want);
+    let twist = header.iter().position(|&n| n == "twist").unwrap();
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 5);
+    for row in rows {
+        let value: f64 = row.split(',').nth(twist).unwrap().parse().unwrap();
+        assert!(value.abs() < 5e-9, "{row}");
+    }
+    assert!(summary.contains("contact  rubber"), "{summary}");
+}
+
+/// Bad rubber cases are refused with exit code 2 and their reason, never run or changed: an
+/// initial omega with a part along gamma (omega . gamma = 1e-6, above 1e-12 |omega|),
+/// friction keys and a velocity under the rubber law, the other commands, `--full` and
+/// `--project`. Control: the case as written runs (the test above).
+#[test]
+fn bad_rubber_cases_are_refused() {
+    let refused = |name: &str, from: &str, to: &str, expected: &str| {
+        let case = case_with("rubber", name, |t| t.replace(from, to));
+        assert_exit_2(&["simulate", "--case", case.to_str().unwrap()], expected);
+    };
+    refused(
+        "rubber-twist.toml",
+        "omega = [-4.0, 1.0, 3.0]",
+        "omega = [-4.0, 1.0, 3.00000125]",
+        "the rubber ball does not twist: omega . gamma = 1.0000000",
+    );
+    refused(
+        "rubber-mu.toml",
+        "law = \"rubber\"",
+        "law = \"rubber\"\nmu = 0.3",
+        "`friction` and `mu` belong to law = \"sliding\"; law = \"rubber\" has no friction",
+    );
+    refused(
+        "rubber-velocity.toml",
+        "omega = [-4.0, 1.0, 3.0]",
+        "omega = [-4.0, 1.0, 3.0]\nvelocity = [0.0, 0.0, 0.0]",
+        "`velocity` belongs to a sliding contact",
+    );
+    for command in ["exact", "steady", "sweep", "lyapunov"] {
+        assert_exit_2(
+            &[command, "--case", "cases/rubber.toml"],
+            "[contact] law = \"rubber\" is integrated by `routh simulate` only",
+        );
+    }
+    assert_exit_2(
+        &["simulate", "--case", "cases/rubber.toml", "--full"],
+        "full",
+    );
+    assert_exit_2(
+        &["simulate", "--case", "cases/rubber.toml", "--project"],
+        "is not available for the rubber ball",
     );
 }

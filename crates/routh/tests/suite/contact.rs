@@ -29,6 +29,17 @@ fn spun(model: &Sliding, tilt: f64, spin: f64) -> [f64; DIM] {
         .unwrap()
 }
 
+/// The settings of a run to `t_end` at the default tolerances (1e-12) by `method`, with
+/// `samples` samples.
+pub(crate) fn settings(t_end: f64, method: Method, samples: usize) -> Settings {
+    Settings::builder()
+        .t_end(t_end)
+        .method(method)
+        .samples(samples)
+        .build()
+        .unwrap()
+}
+
 /// A run to `t_end` at the default tolerances (1e-12), with `samples` samples handed back.
 fn simulate(
     model: &Sliding,
@@ -37,12 +48,7 @@ fn simulate(
     method: Method,
     samples: usize,
 ) -> (SlidingSummary, Vec<[f64; DIM]>) {
-    let settings = Settings::builder()
-        .t_end(t_end)
-        .method(method)
-        .samples(samples)
-        .build()
-        .unwrap();
+    let settings = settings(t_end, method, samples);
     let mut states = Vec::new();
     let summary = run::<routh::RouthError>(model, y0, &settings, &mut |_, y| {
         states.push(*y);

@@ -12,5 +12,6 @@ mod geometry;
 mod integrators;
 mod model;
 mod quadrature;
+mod rubber;
 mod scaling;
 mod steady;
