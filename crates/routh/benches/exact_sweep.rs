@@ -1,6 +1,6 @@
 //! Issue 14's sweep: 2,000 initial conditions (tilts over (0, pi), spins 0.1 to 30, gravity
 //! on and off, centre of mass up and down, random Routh spheres; generator in
-//! `tests/common/exact_sweep.rs`). Each is solved by the quadrature (`ExactSolution::new` and
+//! `tests/support/exact_sweep.rs`). Each is solved by the quadrature (`ExactSolution::new` and
 //! the state at t = 10, timed) and compared with DOP853 at rtol 1e-13. Prints the refusal
 //! counts, the worst agreement and the median and maximum time per case.
 //!

@@ -37,7 +37,7 @@
 //! not only at zero: `(omega, gamma)` is a first integral of the field, and the rubber ball's
 //! phase space is its zero level (of dimension 5, with |gamma| = 1).
 //!
-//! # Integrals and measure (checked in the tests and in `tests/suite/rubber.rs`)
+//! # Integrals and measure (checked by its unit tests and the suite's `contact::rubber`)
 //!
 //! - The energy `H1 = (M, omega) + 2U` of the rolling law (int-g): its rate along the field is
 //!   the rolling law's, zero, plus `lambda (gamma, dH1/dM) = 2 lambda (gamma, omega)`, zero on

@@ -12,6 +12,5 @@ mod geometry;
 mod integrators;
 mod model;
 mod quadrature;
-mod rubber;
 mod scaling;
 mod steady;
