@@ -302,13 +302,17 @@ def sweep(
     start: int = 0,
     stop: Optional[int] = None,
     columns: Optional[Sequence[str]] = None,
+    events: Optional[Sequence[str]] = None,
 ) -> Any:
     """The runs `start <= run < stop` of the sweep in the case file `path` (or the case text
     `text`), on `threads` threads (default: one per core), as a `pyarrow.Table`, one row per
     run in the order of `run` (`.to_pandas()` for a DataFrame). `columns` (names and groups,
     as `routh sweep --columns`: "final", "integrals", "events", "quadrature", "nutation",
     "all", or single columns) chooses the columns, and only what they need is computed;
-    default: the `[sweep]` table's `columns`, else ["final", "integrals"]. The schema's metadata holds the
+    default: the `[sweep]` table's `columns`, else ["final", "integrals"] (with "user_events"
+    when events are given). `events` (as `[sweep] events` or `routh sweep --events`: planes
+    "NAME = NUMBER" each with an optional direction "up", "down" or "both") adds the columns
+    `event{k}_count` and `event{k}_first_t`; it overrides the table's key. The schema's metadata holds the
     case text (`routh.case`) and the version (`routh.version`). Every run gives the numbers of
     `routh simulate` on its case, whatever the thread count or the slicing. The interpreter
     lock is released while the runs are computed."""

@@ -94,6 +94,21 @@ def test_columns_are_chosen_as_on_the_command_line():
         routh.sweep(text=CASE, columns=["final", "bogus"])
 
 
+def test_user_events_are_the_command_line_s():
+    # The keyword as `routh sweep --events`: the columns of each event, counts and first
+    # times; a direction counts a part of `both`; a bad event is a ValueError naming it.
+    both = routh.sweep(text=CASE, stop=4, events=["gamma1 = 0", "gamma1 = 0 up"])
+    assert both.schema.names[-4:] == ["event0_count", "event0_first_t", "event1_count", "event1_first_t"]
+    counts, ups = both.column("event0_count").to_pylist(), both.column("event1_count").to_pylist()
+    assert all(0 <= u <= c for u, c in zip(ups, counts)), (counts, ups)
+    firsts = both.column("event0_first_t").to_pylist()
+    assert all((c == 0) == (f is None) for c, f in zip(counts, firsts))
+    # Control: the default columns have no event columns.
+    assert "event0_count" not in routh.sweep(text=CASE, stop=4).schema.names
+    with pytest.raises(ValueError, match="events"):
+        routh.sweep(text=CASE, stop=4, events=["gamma1 = inf"])
+
+
 def test_a_dask_local_cluster_of_two_processes_gives_the_single_process_table():
     distributed = pytest.importorskip("distributed")
     whole = routh.sweep(text=CASE)
