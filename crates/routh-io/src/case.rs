@@ -637,6 +637,10 @@ fn key_in_error<'a, T: serde::de::DeserializeOwned>(
     None
 }
 
+/// Every refusal of a case file names the table, the key, the value and the rule.
+#[cfg(test)]
+mod messages;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -524,6 +524,17 @@ impl Figure for Plot {
 
 /// Draw `figure` into `path` in `format` (written atomically, with the shipped font).
 pub fn render_figure(figure: &impl Figure, path: &Path, format: Format) -> Result<()> {
+    render_figure_sized(figure, path, format, SIZE)
+}
+
+/// [`render_figure`] at `size` pixels (width, height) instead of [`SIZE`]: the one writer of
+/// every figure's SVG and PNG (the PNG drawn into memory and encoded by the `png` crate).
+pub fn render_figure_sized(
+    figure: &impl Figure,
+    path: &Path,
+    format: Format,
+    size: (u32, u32),
+) -> Result<()> {
     register_font();
     let failed = |e: &dyn std::fmt::Display| {
         AppError::from(FileError::Plot {
@@ -535,21 +546,21 @@ pub fn render_figure(figure: &impl Figure, path: &Path, format: Format) -> Resul
         Format::Svg => {
             let mut text = String::new();
             {
-                let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
+                let root = SVGBackend::with_string(&mut text, size).into_drawing_area();
                 figure.draw_on(&root).map_err(|e| failed(&e))?;
                 root.present().map_err(|e| failed(&e))?;
             }
             crate::output::write_bytes_atomic(path, text.as_bytes())?;
         }
         Format::Png => {
-            let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
+            let mut pixels = vec![0u8; (size.0 * size.1 * 3) as usize];
             {
-                let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
+                let root = BitMapBackend::with_buffer(&mut pixels, size).into_drawing_area();
                 figure.draw_on(&root).map_err(|e| failed(&e))?;
                 root.present().map_err(|e| failed(&e))?;
             }
             write_atomic(path, |w| {
-                let mut encoder = png::Encoder::new(w, SIZE.0, SIZE.1);
+                let mut encoder = png::Encoder::new(w, size.0, size.1);
                 encoder.set_color(png::ColorType::Rgb);
                 encoder.set_depth(png::BitDepth::Eight);
                 encoder.set_compression(png::Compression::Best);

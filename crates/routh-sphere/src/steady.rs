@@ -671,7 +671,7 @@ pub fn steady_precessions(body: &Body, theta: f64, spin: f64) -> Result<Vec<Stea
 /// [`sampled_quadratic_roots`] is relative to the samples, so the roots are scale-free. (In
 /// the body's units the reduction's terms carry powers of m R^2: for m = 1e25, R = 2.3e7 the
 /// slope overflowed and the motion was refused, while its copy in other units was solved;
-/// tests/suite/scaling.rs.) The stability of each is judged in the units of the motion too.
+/// tests/sphere/scaling.rs.) The stability of each is judged in the units of the motion too.
 pub fn precessions_at_tilt(body: &Body, theta: f64, spin: f64) -> Result<TiltPrecessions> {
     body.require_symmetric("the stationary motions")?;
     require_finite_inertia(body)?;

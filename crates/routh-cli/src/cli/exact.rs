@@ -2,6 +2,7 @@
 //! points, nutation period, precession advance, and the state at a time or at samples. Its
 //! options, checks, CSV samples and text lines also serve `routh exact --flow` ([`super::flow`]).
 
+use super::case_file::CaseFile;
 use super::ReportStream;
 use routh::case::{check_option, Case};
 use routh::diagram::Value;
@@ -25,9 +26,8 @@ const ACCURACY_TOLERANCE: f64 = Accuracy::WARNING;
 /// Options of `routh exact`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Case file (TOML); the built-in default case when omitted.
-    #[arg(long)]
-    pub case: Option<PathBuf>,
+    #[command(flatten)]
+    pub case: CaseFile,
     /// The time of the reported state (default: the case's t_end).
     #[arg(long = "t", allow_negative_numbers = true)]
     pub time: Option<f64>,
@@ -411,7 +411,7 @@ impl Args {
 
 /// Run `routh exact` without `--flow`.
 pub fn run(args: Args) -> Result<()> {
-    let case = Case::load(args.case.as_deref())?;
+    let case = args.case.load()?;
     let t = args.checked_time(&case)?;
     let body = case.body("routh exact")?;
     let exact = ExactSolution::new(&body, &case.initial)?;

@@ -3,7 +3,7 @@
 //! with the outputs of `routh exact` (the same JSON keys where they apply, the same CSV).
 
 use super::exact::{integrals_text, state_text, tilt_text, write_samples, Args, Sample, Tilt};
-use routh::case::{check_option, Case};
+use routh::case::check_option;
 use routh::diagram::Value;
 use routh::poisson::flows::{Field, Flow};
 use routh::{AppResult as Result, Point};
@@ -30,7 +30,7 @@ struct Summary {
 
 /// Run `routh exact --flow` (chosen in [`super::main`]).
 pub fn run(args: &Args, field: Field) -> Result<()> {
-    let case = Case::load(args.case.as_deref())?;
+    let case = args.case.load()?;
     let body = case.body("the flows of the first bracket")?;
     let t = args.checked_time(&case)?;
     check_option(

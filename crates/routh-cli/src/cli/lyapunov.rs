@@ -1,20 +1,18 @@
 //! `routh lyapunov`: the Lyapunov exponents of a case's motion on `|gamma| = 1`
 //! ([`routh::lyapunov::report_case`]), as text or JSON.
 
+use super::case_file::CaseFile;
 use super::integration::{parse_method, Integration};
 use super::{print_json, Readable};
-use routh::case::Case;
 use routh::integrate::Method;
 use routh::lyapunov::{report_case, LyapunovSettings, Report};
 use routh::AppResult as Result;
-use std::path::PathBuf;
 
 /// Options of `routh lyapunov`; each overrides the case file.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Case file (TOML); the built-in default case when omitted.
-    #[arg(long)]
-    pub case: Option<PathBuf>,
+    #[command(flatten)]
+    pub case: CaseFile,
     /// The final time, tolerances and step limit.
     #[command(flatten)]
     pub integration: Integration,
@@ -38,7 +36,7 @@ pub struct Args {
 
 /// Run the command.
 pub fn run(args: Args) -> Result<()> {
-    let case = Case::load(args.case.as_deref())?;
+    let case = args.case.load()?;
     let integration = args.integration.settings(args.method, &case)?;
     let settings = LyapunovSettings::new(integration, args.transient, args.interval)?;
     let r = report_case(&case, &settings)?;

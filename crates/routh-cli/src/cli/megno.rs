@@ -6,6 +6,7 @@
 //! Named for the indicator it computes, as `lyapunov` is for its exponents: the chart is the
 //! same number over a plane of parameters.
 
+use super::case_file::CaseFile;
 use super::diagram::both_formats;
 use super::integration::{parse_method, Integration};
 use super::lyapunov::RunLines;
@@ -25,9 +26,8 @@ use std::time::Instant;
 /// Options of `routh megno`; the integration's override the case file.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Case file (TOML); the built-in default case when omitted.
-    #[arg(long)]
-    pub case: Option<PathBuf>,
+    #[command(flatten)]
+    pub case: CaseFile,
     /// The final time, tolerances and step limit (of each run of a chart).
     #[command(flatten)]
     pub integration: Integration,
@@ -80,7 +80,7 @@ const DEFAULT_OUT: &str = "chart";
 
 /// Run `routh megno`.
 pub fn run(args: Args) -> Result<()> {
-    let case = Case::load(args.case.as_deref())?;
+    let case = args.case.load()?;
     let settings = args.integration.settings(args.method, &case)?;
     match (&args.x, &args.y) {
         (Some(x), Some(y)) => {

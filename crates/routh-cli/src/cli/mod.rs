@@ -22,6 +22,7 @@ macro_rules! outln {
 
 mod animate;
 mod audit;
+mod case_file;
 mod diagram;
 mod exact;
 mod explore;

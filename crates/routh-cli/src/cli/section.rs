@@ -2,11 +2,11 @@
 //! plane `NAME = NUMBER` ([`routh::section::section`]): the table of crossings (CSV), a
 //! figure of two components of them (PNG and SVG) and the summary, as text or JSON.
 
+use super::case_file::CaseFile;
 use super::diagram::both_formats;
 use super::integration::{parse_method, Integration};
 use super::plot::create_dir;
 use super::Readable;
-use routh::case::Case;
 use routh::figure::SectionFigure;
 use routh::integrate::Method;
 use routh::section::{section, write_csv, Report};
@@ -18,9 +18,8 @@ use std::path::PathBuf;
 /// Options of `routh section`; the integration's override the case file.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Case file (TOML); the built-in default case when omitted.
-    #[arg(long)]
-    pub case: Option<PathBuf>,
+    #[command(flatten)]
+    pub case: CaseFile,
     /// The plane of the section, `NAME = NUMBER`, NAME a component of the state as in `routh
     /// simulate`'s CSV: gamma1, gamma2, gamma3, M1, M2 or M3.
     #[arg(long)]
@@ -94,7 +93,7 @@ pub fn run(args: Args) -> Result<()> {
     let crossing = parse_surface(&args.surface, "surface")?;
     let direction = parse_direction(&args.direction, "direction")?;
     let [x_axis, y_axis] = axes(args.axes.as_deref(), crossing.component())?;
-    let case = Case::load(args.case.as_deref())?;
+    let case = args.case.load()?;
     let settings = args.integration.settings(args.method, &case)?;
     let x0 = case.initial.to_array();
     let (starts, found, mut report) = section(

@@ -1,6 +1,7 @@
 //! `routh simulate`: integrate a case and report the integrals' drift; optionally write
 //! dense-output samples to CSV.
 
+use super::case_file::CaseFile;
 use super::integration::{parse_method, Integration};
 use super::{Readable, ReportStream};
 use routh::case::{Case, SlidingStart};
@@ -23,9 +24,8 @@ const DEFAULT_CSV_SAMPLES: usize = 1001;
 /// Options of `routh simulate`; each overrides the case file.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Case file (TOML); the built-in default case when omitted.
-    #[arg(long)]
-    pub case: Option<PathBuf>,
+    #[command(flatten)]
+    pub case: CaseFile,
     /// The final time, tolerances and step limit.
     #[command(flatten)]
     pub integration: Integration,
@@ -79,7 +79,7 @@ fn csv_destination(args: &Args) -> Option<PathBuf> {
 
 /// Run the command.
 pub fn run_command(args: Args) -> Result<()> {
-    let case = Case::load_any_contact(args.case.as_deref())?;
+    let case = args.case.load_any_contact()?;
     let out = csv_destination(&args);
     let samples = match (args.samples, &out) {
         (Some(n), _) if n < 2 => {

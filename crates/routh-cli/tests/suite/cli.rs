@@ -3038,7 +3038,7 @@ mod plot {
 mod exact_scaling {
     //! `routh exact` in other units and with bounded output (issue 33): the reproducers as a user
     //! types them. The numerics behind them are tested in the library
-    //! (`crates/routh/tests/suite/quadrature.rs`, module `exact_in_any_units`).
+    //! (`crates/routh/tests/sphere/quadrature.rs`, module `exact_in_any_units`).
 
     use crate::common;
 

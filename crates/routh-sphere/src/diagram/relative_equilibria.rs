@@ -73,7 +73,7 @@ impl RelativeEquilibrium {
     /// units of its motion (`Units::of`) and returned in the body's units, with `state` as
     /// given. In the body's units Q'' and its round-off came out of the reduction with the
     /// powers of m R^2 of its terms: for the copy of a balanced vertical spin with m = 1.3e22,
-    /// R = 1e9 the type was "undecided" where the original's was elliptic (tests/suite/scaling.rs).
+    /// R = 1e9 the type was "undecided" where the original's was elliptic (tests/sphere/scaling.rs).
     pub fn new(body: &Body, theta: f64, state: State, precession: f64) -> Result<Self> {
         let units = Units::of(body, &state.omega(body));
         let scaled = units.body(body)?;

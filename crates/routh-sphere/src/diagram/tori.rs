@@ -85,7 +85,7 @@ const POLE_HALVINGS: i32 = 48;
 /// ([`POLE_HALVINGS`]), where a motion within the first step of the axis has a critical point
 /// and its neighbour closer than one step (the minimum of Q at an unstable steady precession
 /// 4e-4 from the lower pole and the maximum beside it were both in the first step, and the
-/// count called the critical value regular; tests/suite/scaling.rs).
+/// count called the critical value regular; tests/sphere/scaling.rs).
 fn critical_points(red: &Reduction) -> Result<Vec<f64>> {
     let slope = |u: f64| red.q_derivatives(u).1;
     let step = PI / CRITICAL_POINT_SAMPLES as f64;
@@ -121,7 +121,7 @@ const TURNING: &str = "the turning points of Q";
 /// `1 - u^2` while their slopes do not, so the terms alone understate the round-off there:
 /// the steady precession at tilt 0.01 of a balanced ball (a = 0, I1 = I3) left Q = 5e-21
 /// above its double root, far above `q_scale` epsilons, and the count called its value
-/// regular, with a torus of width 1.5e-10 (found by tests/suite/scaling.rs).
+/// regular, with a torus of width 1.5e-10 (found by tests/sphere/scaling.rs).
 fn negligible(red: &Reduction, u: f64, q: f64) -> bool {
     q.abs() <= CRITICAL_TOLERANCE * (red.q_scale(u) + u.abs() * red.q_slope_scale(u))
 }

@@ -1,16 +1,11 @@
-//! The integration tests of the library, one test binary (each binary of its own linked the
-//! library and instantiated its integrators again: one binary builds in a fraction of the
-//! time). Run one module with `cargo test -p routh --test suite quadrature::`.
+//! The integration tests of the integrators and the model, one test binary (each binary
+//! links the library and instantiates its integrators again); those of the Routh sphere's
+//! mathematics are the binary `sphere`, built beside this one on the second core. Run one
+//! module with `cargo test -p routh --test suite integrators::`.
 
 #[path = "../support/properties.rs"]
 mod properties;
-#[path = "../support/exact_sweep.rs"]
-mod sweep_cases;
 
 mod contact;
-mod geometry;
 mod integrators;
 mod model;
-mod quadrature;
-mod scaling;
-mod steady;

@@ -24,6 +24,7 @@ use routh::case::Case;
 use routh::field::vector_field;
 use routh::integrals::Integrals;
 use routh::integrate::{drive, stepper, Control, Drive, IntegrateError, Method, Options, Stats};
+use routh::plot::{render_figure_sized, Figure, Format};
 use routh::projection::LevelSet;
 use routh::simulate::{project_every, ReducedSystem};
 use std::convert::Infallible;
@@ -158,13 +159,22 @@ fn series(rows: &[serde_json::Value]) -> Series {
     out
 }
 
+/// The work-precision chart of `results`, one panel per case.
+struct Chart(serde_json::Value);
+
+impl Figure for Chart {
+    fn draw_on<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<(), plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>> {
+        draw(root, &self.0)
+    }
+}
+
 fn draw<DB: plotters::prelude::DrawingBackend>(
-    root: plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
     results: &serde_json::Value,
-) -> Result<(), Box<dyn std::error::Error>>
-where
-    DB::ErrorType: 'static,
-{
+) -> Result<(), plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>> {
     use plotters::prelude::*;
     root.fill(&WHITE)?;
     let cases = results["cases"].as_object().expect("cases");
@@ -234,24 +244,11 @@ where
 }
 
 fn plot(results: &str, stem: &str) {
-    use plotters::prelude::*;
-    plotters::style::register_font(
-        "sans-serif",
-        FontStyle::Normal,
-        include_bytes!("../../../assets/DejaVuSans.ttf"),
-    )
-    .unwrap_or_else(|_| panic!("the shipped DejaVu Sans parses"));
     let text = std::fs::read_to_string(results).expect("results file is readable");
-    let results: serde_json::Value = serde_json::from_str(&text).expect("results are JSON");
-    let size = (1500, 520);
-    draw(
-        BitMapBackend::new(&format!("{stem}.png"), size).into_drawing_area(),
-        &results,
-    )
-    .expect("PNG drawn");
-    draw(
-        SVGBackend::new(&format!("{stem}.svg"), size).into_drawing_area(),
-        &results,
-    )
-    .expect("SVG drawn");
+    let chart = Chart(serde_json::from_str(&text).expect("results are JSON"));
+    for format in [Format::Png, Format::Svg] {
+        let path = format!("{stem}.{}", format.extension());
+        render_figure_sized(&chart, Path::new(&path), format, (1500, 520))
+            .unwrap_or_else(|e| panic!("{path}: {e}"));
+    }
 }

@@ -163,7 +163,7 @@ mod exact_decisions {
         // the sphere, omega with components log-uniform from 0.03 to 30; 100 states within 1e-3
         // of the top-heavy vertical spin, 50 above and 50 below Routh's threshold. All are
         // regular values (none is steady or on a separatrix to round-off: those are decided by
-        // the tests above and in tests/suite/quadrature.rs): at t = 10 the quadrature must solve every
+        // the tests above and in tests/sphere/quadrature.rs): at t = 10 the quadrature must solve every
         // one and agree with DOP853 to 1e-8 (issue 14), and its error estimate must not be far
         // below the measured error.
         let mut rng = Random(20261123);
@@ -727,7 +727,7 @@ mod quadrature_reference {
     //! The data file `tests/data/quadrature_reference.csv` was written by this test in its write
     //! mode on commit 1276152 (before the quadrature was made cheaper, issue 13, and before the
     //! field was written with exact identities, issue 12):
-    //! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test suite quadrature:: quadrature_reference`.
+    //! `ROUTH_WRITE_QUADRATURE_REFERENCE=1 cargo test -p routh --test sphere quadrature:: quadrature_reference`.
     //! 31 lines were rewritten by issue 33 (every other line still agrees with the stored one;
     //! the rewrite kept the stored line wherever the new one agrees with it to this test's
     //! tolerances, and took the new one elsewhere): the two states built on the separatrix of

@@ -6,7 +6,7 @@
 //!
 //! `cargo bench --bench exact_sweep` (N cases: `EXACT_SWEEP_CASES=N`).
 
-#[path = "../tests/support/exact_sweep.rs"]
+#[path = "../../routh/tests/support/exact_sweep.rs"]
 mod exact_sweep;
 
 use exact_sweep::{cases, distance, dop853, quadrature, Outcome, AGREEMENT, T};

@@ -2,8 +2,9 @@
 //! the TOML parser's type and length errors, whose own text names neither the key nor the
 //! value (issue 33: "in [initial]: invalid length 2, expected an array of length 3").
 
-use routh_io::case::{Case, DEFAULT_CASE};
-use routh_io::sweep::spec::Spec;
+use super::{Case, DEFAULT_CASE};
+#[cfg(feature = "sweep")]
+use crate::sweep::spec::Spec;
 
 /// The default case with the line that starts with `key =` in `[table]` replaced by
 /// `key = value` (appended to the table when the key is not written there).
@@ -133,6 +134,7 @@ fn missing_and_unknown_keys_are_named() {
 
 /// The `[sweep]` table's own checks name the key, the value and the rule for wrong types
 /// and lengths as well.
+#[cfg(feature = "sweep")]
 #[test]
 fn sweep_type_errors_name_key_and_value() {
     let cases = [
