@@ -24,6 +24,7 @@ pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod row;
+pub mod run;
 pub mod section;
 pub mod surface;
 #[cfg(feature = "sweep")]

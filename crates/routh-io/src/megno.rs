@@ -6,6 +6,7 @@ use crate::ball::AsBall;
 use crate::case::Case;
 use crate::error::AppResult as Result;
 use crate::integrate::megno::Indicators;
+use crate::run::{Run, Work};
 use crate::simulate::Settings;
 use routh_ball::megno::ball_megno;
 use serde::Serialize;
@@ -38,17 +39,9 @@ impl History {
 /// The report of one run: the settings, the indicators at `t_end` and their history.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Report {
-    /// The case file (or `<built-in default>`); absent for a body and a state given as such.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub case: Option<String>,
-    /// The integrator.
-    pub method: String,
-    /// The final time.
-    pub t_end: f64,
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
+    /// The case, the integrator, the final time and the tolerances.
+    #[serde(flatten)]
+    pub run: Run,
     /// MEGNO `Y(t_end)`.
     pub megno: f64,
     /// Its mean `<Y>(t_end)`: about 2 on a torus, 0 on a stable periodic orbit, growing as
@@ -58,20 +51,15 @@ pub struct Report {
     pub fli: f64,
     /// The indicators along the run.
     pub history: History,
-    /// Accepted steps.
-    pub steps: usize,
-    /// Rejected steps.
-    pub rejected: usize,
-    /// Field evaluations (each one of the state and its tangent vector together).
-    pub rhs_evals: usize,
-    /// Wall-clock time of the run, in seconds.
-    pub elapsed_s: f64,
+    /// The work of the run.
+    #[serde(flatten)]
+    pub work: Work,
 }
 
 /// The indicators of the motion of `case` with `settings`, reported.
 pub fn report_case(case: &Case, settings: &Settings) -> Result<Report> {
     let mut report = report(&case.ball, &case.initial.to_array(), settings)?;
-    report.case = Some(case.source.clone());
+    report.run.case = Some(case.source.clone());
     Ok(report)
 }
 
@@ -81,18 +69,11 @@ pub fn report(ball: &impl AsBall, x0: &[f64; 6], settings: &Settings) -> Result<
     let start = Instant::now();
     let run = ball_megno(ball, x0, settings)?;
     Ok(Report {
-        case: None,
-        method: settings.method().to_string(),
-        t_end: settings.t_end(),
-        rtol: settings.rtol(),
-        atol: settings.atol(),
+        run: Run::of(settings, settings.t_end()),
         megno: run.last.megno,
         mean_megno: run.last.mean_megno,
         fli: run.last.fli,
         history: History::of(&run.history),
-        steps: run.stats.steps,
-        rejected: run.stats.rejected,
-        rhs_evals: run.stats.rhs_evals,
-        elapsed_s: start.elapsed().as_secs_f64(),
+        work: Work::of(&run.stats, start),
     })
 }

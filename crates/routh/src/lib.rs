@@ -88,7 +88,7 @@ pub mod diagram {
 pub use routh_io::sweep;
 #[cfg(feature = "io")]
 pub use routh_io::{
-    animate, case, explore, output, row, surface, table, AppError, AppResult, FileError,
+    animate, case, explore, output, row, run, surface, table, AppError, AppResult, FileError,
 };
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};

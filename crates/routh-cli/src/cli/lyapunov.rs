@@ -6,6 +6,7 @@ use super::integration::{parse_method, Integration};
 use super::{print_json, Readable};
 use routh::integrate::Method;
 use routh::lyapunov::{report_case, LyapunovSettings, Report};
+use routh::run::{Run, Work};
 use routh::AppResult as Result;
 
 /// Options of `routh lyapunov`; each overrides the case file.
@@ -52,38 +53,32 @@ pub fn run(args: Args) -> Result<()> {
 pub(super) struct RunLines<'a> {
     /// The command's name.
     pub command: &'a str,
-    /// The case file.
-    pub case: Option<&'a str>,
-    /// The method.
-    pub method: &'a str,
-    /// Its tolerances `(rtol, atol)`.
-    pub tolerances: (f64, f64),
-    /// Accepted and rejected steps, field evaluations.
-    pub work: (usize, usize, usize),
-    /// Wall-clock time, in seconds.
-    pub elapsed_s: f64,
+    /// The case and the settings.
+    pub run: &'a Run,
+    /// The work.
+    pub work: &'a Work,
 }
 
 impl std::fmt::Display for RunLines<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let (steps, rejected, evals) = self.work;
+        let (run, work) = (self.run, self.work);
         writeln!(
             f,
             "routh {}: {}",
             self.command,
-            self.case.unwrap_or_default()
+            run.case.as_deref().unwrap_or_default()
         )?;
         writeln!(
             f,
             "  method   {} (rtol {}, atol {})",
-            self.method,
-            Readable(self.tolerances.0),
-            Readable(self.tolerances.1)
+            run.method,
+            Readable(run.rtol),
+            Readable(run.atol)
         )?;
         writeln!(
             f,
-            "  work     {steps} steps ({rejected} rejected), {evals} field evaluations in {:.3} s",
-            self.elapsed_s
+            "  work     {} steps ({} rejected), {} field evaluations in {:.3} s",
+            work.steps, work.rejected, work.rhs_evals, work.elapsed_s
         )
     }
 }
@@ -93,17 +88,14 @@ fn report_text(r: &Report) -> String {
     use std::fmt::Write;
     let mut text = RunLines {
         command: "lyapunov",
-        case: r.case.as_deref(),
-        method: &r.method,
-        tolerances: (r.rtol, r.atol),
-        work: (r.steps, r.rejected, r.rhs_evals),
-        elapsed_s: r.elapsed_s,
+        run: &r.run,
+        work: &r.work,
     }
     .to_string();
     let _ = writeln!(
         text,
         "  time     {} (averaged after {}, renormalised every {})",
-        Readable(r.t_end),
+        Readable(r.run.t_end),
         Readable(r.transient),
         Readable(r.interval)
     );

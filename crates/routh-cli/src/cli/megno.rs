@@ -196,14 +196,11 @@ fn report_text(r: &Report) -> String {
     use std::fmt::Write;
     let mut text = RunLines {
         command: "megno",
-        case: r.case.as_deref(),
-        method: &r.method,
-        tolerances: (r.rtol, r.atol),
-        work: (r.steps, r.rejected, r.rhs_evals),
-        elapsed_s: r.elapsed_s,
+        run: &r.run,
+        work: &r.work,
     }
     .to_string();
-    let _ = writeln!(text, "  time     {}", Readable(r.t_end));
+    let _ = writeln!(text, "  time     {}", Readable(r.run.t_end));
     let _ = writeln!(
         text,
         "  mean MEGNO <Y> = {:.6}  (2: torus, 0: periodic, large: chaos)",
