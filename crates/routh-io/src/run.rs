@@ -1,5 +1,5 @@
-//! What the reports of `routh lyapunov` and `routh megno` say of their run, written once for
-//! both: its case, integrator, final time and tolerances ([`Run`]) and the work it took
+//! What the reports of `routh lyapunov`, `routh megno` and `routh section` say of their run,
+//! written once for the three: its case, integrator, final time and tolerances ([`Run`]) and the work it took
 //! ([`Work`]). Each report flattens the two into its own JSON object, so that the keys
 //! (`case`, `method`, `t_end`, `rtol`, `atol`, `steps`, `rejected`, `rhs_evals`,
 //! `elapsed_s`) are those of one object.
@@ -42,11 +42,12 @@ impl Run {
 /// The work of a run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Work {
-    /// Accepted steps (of every interval's run, for a spectrum).
+    /// Accepted steps (of every run: a spectrum's intervals, a section's initial states).
     pub steps: usize,
     /// Rejected steps.
     pub rejected: usize,
-    /// Field evaluations, each one of the state and its tangent vectors together.
+    /// Field evaluations (of the tangent flow: each one of the state and its tangent vectors
+    /// together).
     pub rhs_evals: usize,
     /// Wall-clock time of the run, in seconds.
     pub elapsed_s: f64,

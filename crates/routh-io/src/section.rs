@@ -11,6 +11,7 @@ use crate::integrate::section::Point;
 use crate::integrate::Direction;
 use crate::problem::Plane;
 use crate::row::{write_csv_file, Cell};
+use crate::run::{Run, Work};
 use crate::simulate::Settings;
 use crate::surface::{component_names, direction_name};
 use crate::table::{sample_cells, sample_columns};
@@ -22,21 +23,13 @@ use std::time::Instant;
 /// The summary of a section.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Report {
-    /// The case file (or `<built-in default>`); absent without a case (Python).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub case: Option<String>,
+    /// The case, the integrator, the final time of each run and the tolerances.
+    #[serde(flatten)]
+    pub run: Run,
     /// The plane, `NAME = NUMBER`.
     pub surface: String,
     /// The crossings that count: `up`, `down` or `both`.
     pub direction: &'static str,
-    /// The integrator.
-    pub method: String,
-    /// The final time of each run.
-    pub t_end: f64,
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
     /// The initial states on the energy level (the case's first).
     pub initial_states: usize,
     /// The number of crossings of all the runs.
@@ -52,14 +45,9 @@ pub struct Report {
     pub max_relative_surface_value: f64,
     /// The largest relative drift of H1 from the level over the crossings.
     pub max_energy_drift: f64,
-    /// Accepted steps of all the runs.
-    pub steps: usize,
-    /// Rejected steps.
-    pub rejected: usize,
-    /// Field evaluations.
-    pub rhs_evals: usize,
-    /// Wall-clock time, in seconds.
-    pub elapsed_s: f64,
+    /// The work of all the runs.
+    #[serde(flatten)]
+    pub work: Work,
 }
 
 /// The plane as `NAME = NUMBER`.
@@ -86,13 +74,9 @@ pub fn section(
     let starts = energy_family(ball, x0, initial)?;
     let s = ball_section(ball, &starts, settings, plane, direction)?;
     let report = Report {
-        case: None,
+        run: Run::of(settings, settings.t_end()),
         surface: surface_text(plane),
         direction: direction_name(direction),
-        method: settings.method().to_string(),
-        t_end: settings.t_end(),
-        rtol: settings.rtol(),
-        atol: settings.atol(),
         initial_states: starts.len(),
         crossings: s.points.len(),
         energy: s.energy,
@@ -100,10 +84,7 @@ pub fn section(
         surface_unit: s.surface_unit,
         max_relative_surface_value: s.max_surface_value / s.surface_unit,
         max_energy_drift: s.max_energy_drift,
-        steps: s.stats.steps,
-        rejected: s.stats.rejected,
-        rhs_evals: s.stats.rhs_evals,
-        elapsed_s: start.elapsed().as_secs_f64(),
+        work: Work::of(&s.stats, start),
     };
     Ok((starts, s, report))
 }

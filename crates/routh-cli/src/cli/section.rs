@@ -104,7 +104,7 @@ pub fn run(args: Args) -> Result<()> {
         direction,
         args.initial,
     )?;
-    report.case = Some(case.source.clone());
+    report.run.case = Some(case.source.clone());
     let out = args
         .out
         .clone()
@@ -142,17 +142,17 @@ pub fn run(args: Args) -> Result<()> {
         "routh section: {} ({}) of {}",
         r.surface,
         r.direction,
-        r.case.as_deref().unwrap_or_default()
+        r.run.case.as_deref().unwrap_or_default()
     )?;
     outln!(
         "  {} crossings of {} runs on H1 = {} to t = {} ({}, rtol {}, atol {})",
         r.crossings,
         r.initial_states,
         r.energy,
-        Readable(r.t_end),
-        r.method,
-        Readable(r.rtol),
-        Readable(r.atol)
+        Readable(r.run.t_end),
+        r.run.method,
+        Readable(r.run.rtol),
+        Readable(r.run.atol)
     )?;
     outln!(
         "  largest distance from the plane {:e} (unit {:e}), largest relative energy drift {:e}",
