@@ -8,6 +8,10 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 venv="$root/target/python-venv"
 wheels="$root/target/wheels"
+# The bindings' own target directory: their dependencies (numpy's, pyo3's) take other features
+# than the command-line tool's, so that nothing of target/release would be shared, and .ci/run
+# builds the tool's release binary there at the same time (each build holds its directory).
+build="$root/target/python"
 command -v python3 >/dev/null || { echo "python3 not found: CPython >= 3.9 is required" >&2; exit 1; }
 command -v cargo >/dev/null || { echo "cargo not found: the machine's Rust toolchain is required" >&2; exit 1; }
 python3 --version
@@ -17,8 +21,7 @@ cargo --version
 # components; a toolchain without them is said, not failed).
 if cargo fmt --version >/dev/null 2>&1 && cargo clippy --version >/dev/null 2>&1; then
     cargo fmt --manifest-path "$root/python/Cargo.toml" --check
-    CARGO_TARGET_DIR="$root/target/python-clippy" \
-        cargo clippy --manifest-path "$root/python/Cargo.toml" --release --all-targets -- -D warnings
+    CARGO_TARGET_DIR="$build" cargo clippy --manifest-path "$root/python/Cargo.toml" --release --all-targets -- -D warnings
 else
     echo "rustfmt or clippy not installed: the bindings' lint is skipped" >&2
 fi
@@ -31,7 +34,7 @@ pip install --quiet pytest numpy scipy matplotlib mypy pyarrow pandas "dask[dist
 # The wheel: `pip wheel` runs the build backend declared in python/pyproject.toml (maturin,
 # fetched into an isolated environment), exactly as `pip install ./python` does.
 rm -rf "$wheels"
-pip wheel --no-deps --wheel-dir "$wheels" "$root/python"
+CARGO_TARGET_DIR="$build" "$venv/bin/pip" --disable-pip-version-check wheel --no-deps --wheel-dir "$wheels" "$root/python"
 wheel=$(ls "$wheels"/routh-*.whl)
 echo "built $wheel"
 pip install --force-reinstall --no-deps "$wheel"
