@@ -15,7 +15,7 @@ use super::{Field, Job, Lanes};
 use crate::pair::DenseCache;
 use crate::scalar::Scalar;
 use crate::tableau::{dense_at, dense_rows, A, B, BHH, ER};
-use crate::taylor::tape::Isa;
+use crate::taylor::tape::{All, Compiled, Isa, Sets};
 use crate::{
     rk_start, scaled_error, Clock, IntegrateError, Law, OdeSystem, Options, Stats, StepControl,
     Stepper,
@@ -43,10 +43,22 @@ pub fn integrate_in_lanes<F: Field<N>, Q: Queue<N>, const N: usize>(
     opts: &Options,
     queue: &mut Q,
 ) {
+    // Only the sets that run each width here are compiled in (`Compiled`): 8 lanes with
+    // AVX-512, 4 with AVX2 or the baseline.
     if lanes() == 8 {
-        integrate::<F, Q, N, 8>(field, opts, queue)
+        integrate_among::<F, Q, N, 8, Compiled<true, false, false>>(
+            Isa::detect(),
+            field,
+            opts,
+            queue,
+        )
     } else {
-        integrate::<F, Q, N, 4>(field, opts, queue)
+        integrate_among::<F, Q, N, 4, Compiled<false, true, true>>(
+            Isa::detect(),
+            field,
+            opts,
+            queue,
+        )
     }
 }
 
@@ -161,6 +173,16 @@ pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
     opts: &Options,
     queue: &mut Q,
 ) {
+    integrate_among::<F, Q, N, L, All>(isa, field, opts, queue)
+}
+
+/// [`integrate_on`] with the copies of the loop for the sets `C` only ([`Compiled`]).
+fn integrate_among<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize, C: Sets>(
+    isa: Isa,
+    field: &F,
+    opts: &Options,
+    queue: &mut Q,
+) {
     let zero = [Lanes::splat(0.0); N];
     let mut method = Dop853Lanes::<F, N, L> {
         field,
@@ -169,7 +191,7 @@ pub fn integrate_on<F: Field<N>, Q: Queue<N>, const N: usize, const L: usize>(
         f: zero,
         k: [zero; 16],
     };
-    Runs::integrate(isa, &mut method, queue);
+    Runs::integrate::<C, _, _>(isa, &mut method, queue);
 }
 
 impl<F: Field<N>, const N: usize, const L: usize> LaneMethod<N, L> for Dop853Lanes<'_, F, N, L> {

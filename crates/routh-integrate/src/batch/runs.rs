@@ -10,7 +10,7 @@
 use super::lanes::{lane_of, set_lane};
 use super::Lanes;
 use crate::compensated::compensated_add;
-use crate::taylor::tape::Isa;
+use crate::taylor::tape::{Isa, Sets};
 use crate::{check_start, IntegrateError, Outcome, Stats, StepControl, Stepper, Stop};
 
 /// One run: integrate from `(t0, y0)` to `t_end`.
@@ -81,16 +81,31 @@ impl<const N: usize, const L: usize> Runs<N, L> {
     /// contraction into fused multiply-adds: Rust does not contract, and
     /// [`Scalar::mul_add`](crate::scalar::Scalar::mul_add) decides at compile time), so a lane
     /// stays bitwise the one-at-a-time run (tests/batch.rs, under every set).
-    pub fn integrate<M: LaneMethod<N, L>, Q: Queue<N>>(isa: Isa, method: &mut M, queue: &mut Q) {
+    ///
+    /// Only the copies of the loop for the sets `S` are compiled in
+    /// ([`Compiled`](crate::taylor::tape::Compiled)); a set asked for and not compiled runs
+    /// in the narrowest one compiled: the same numbers, at another speed.
+    pub fn integrate<S: Sets, M, Q>(isa: Isa, method: &mut M, queue: &mut Q)
+    where
+        M: LaneMethod<N, L>,
+        Q: Queue<N>,
+    {
         assert!(isa.available(), "{isa:?} is not available on this CPU");
+        let run = S::run_as(isa);
+        assert!(
+            run.available(),
+            "{run:?}, run for {isa:?}, is not available on this CPU"
+        );
         #[cfg(target_arch = "x86_64")]
-        match isa {
+        match run {
             // SAFETY: the CPU has the features each function is compiled for (`available`).
-            Isa::Avx512 => return unsafe { Self::integrate_avx512(method, queue) },
-            Isa::Avx2Fma => return unsafe { Self::integrate_avx2_fma(method, queue) },
-            Isa::Baseline => {}
+            Isa::Avx512 if S::AVX512 => return unsafe { Self::integrate_avx512(method, queue) },
+            Isa::Avx2Fma if S::AVX2 => return unsafe { Self::integrate_avx2_fma(method, queue) },
+            _ => {}
         }
-        Self::integrate_with(method, queue);
+        if S::BASELINE {
+            Self::integrate_with(method, queue);
+        }
     }
 
     /// [`Runs::integrate`] compiled for AVX-512F and VL (and AVX2, FMA).

@@ -20,14 +20,15 @@ use super::lanes::{lane_of, set_lane};
 use super::runs::{LaneMethod, Queue, Runs};
 use super::{Job, Lanes};
 use crate::taylor::coefficient::Coefficient;
-use crate::taylor::tape::Isa;
+use crate::taylor::tape::{All, Compiled, Isa, Sets};
 use crate::taylor::{taylor_order, Kernels, SeriesRule, Tape};
 use crate::{Clock, IntegrateError, Law, OdeSystem, Options, Scales, Stats, StepControl, Stepper};
+use std::marker::PhantomData;
 
 /// The Taylor method in lanes: the system (for the units of each run), the tape with the
 /// coefficients of every lane and each lane's order; the lanes' states and step control are
 /// `Runs`'.
-struct TaylorLanes<'s, S: ?Sized, const N: usize, const L: usize, K> {
+struct TaylorLanes<'s, S: ?Sized, const N: usize, const L: usize, K, C> {
     sys: &'s S,
     tape: Tape<N, Lanes<L>, K>,
     opts: Options,
@@ -36,6 +37,9 @@ struct TaylorLanes<'s, S: ?Sized, const N: usize, const L: usize, K> {
     scales: [Scales<N>; L],
     /// The order of each lane's step under way, then of its last accepted step (0: free).
     order: [usize; L],
+    /// The instruction sets whose expansions of the tape (and copies of the loop) are
+    /// compiled in ([`Compiled`]).
+    sets: PhantomData<C>,
 }
 
 /// The number of lanes [`integrate`] uses on this CPU: 8 with AVX-512 (one register of
@@ -60,10 +64,12 @@ pub fn integrate<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize>(
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
+    // Only the sets that run each width here are compiled in (`Compiled`): 8 lanes with
+    // AVX-512 or AVX2, 4 with the baseline.
     if lanes() == 8 {
-        integrate_in::<S, Q, N, 8>(sys, opts, queue)
+        integrate_among::<S, Q, N, 8, Compiled<true, true, false>>(Isa::detect(), sys, opts, queue)
     } else {
-        integrate_in::<S, Q, N, 4>(sys, opts, queue)
+        integrate_among::<S, Q, N, 4, Compiled<false, false, true>>(Isa::detect(), sys, opts, queue)
     }
 }
 
@@ -85,25 +91,43 @@ pub fn integrate_in_on<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize, co
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
+    integrate_among::<S, Q, N, L, All>(isa, sys, opts, queue)
+}
+
+/// [`integrate_in_on`] with the copies of the loop and of the tape's expansion for the sets
+/// `C` only ([`Compiled`]; the tape's own set, [`Isa::detect`], one of them).
+fn integrate_among<S, Q, const N: usize, const L: usize, C: Sets>(
+    isa: Isa,
+    sys: &S,
+    opts: &Options,
+    queue: &mut Q,
+) -> Result<(), IntegrateError>
+where
+    S: OdeSystem<N> + ?Sized,
+    Q: Queue<N>,
+{
     let max_order = taylor_order(opts.rtol().min(opts.atol()));
     let tape = Tape::record(sys, max_order).ok_or(IntegrateError::Unsupported {
         method: "taylor",
         reason: "the system's field is not recorded through Scalar (OdeSystem::record)",
     })?;
-    let mut method = TaylorLanes::<S, N, L, S::Kernels> {
+    let mut method = TaylorLanes::<S, N, L, S::Kernels, C> {
         sys,
         tape: tape.with_coefficients(),
         opts: *opts,
         rule: SeriesRule::new(opts.rtol(), opts.atol(), max_order),
         scales: [Scales::one(); L],
         order: [0; L],
+        sets: PhantomData,
     };
-    Runs::integrate(isa, &mut method, queue);
+    Runs::integrate::<C, _, _>(isa, &mut method, queue);
     Ok(())
 }
 
-impl<S: OdeSystem<N> + ?Sized, const N: usize, const L: usize, K: Kernels> LaneMethod<N, L>
-    for TaylorLanes<'_, S, N, L, K>
+impl<S, const N: usize, const L: usize, K: Kernels, C: Sets> LaneMethod<N, L>
+    for TaylorLanes<'_, S, N, L, K, C>
+where
+    S: OdeSystem<N> + ?Sized,
 {
     /// As [`Taylor::new`](crate::Taylor::new): the lane's tape as new, the scales of its run.
     fn start(&mut self, l: usize, job: &Job<N>) -> Result<StepControl, (IntegrateError, Stats)> {
@@ -161,7 +185,7 @@ impl<S: OdeSystem<N> + ?Sized, const N: usize, const L: usize, K: Kernels> LaneM
         let t = Lanes(std::array::from_fn(|l| {
             runs.control[l].map_or(t_busy, |c| c.t())
         }));
-        self.tape.expand(t, &runs.y, top);
+        self.tape.expand_among::<C>(t, &runs.y, top);
         // The norms of the series' orders 0, p - 1 and p, of all lanes at once when the busy
         // lanes share their order (`max_norm` lane by lane: the same maxima in the same order).
         let same = (0..L).all(|l| runs.control[l].is_none() || order[l] == top);
@@ -241,7 +265,7 @@ impl<S: OdeSystem<N> + ?Sized, const N: usize, const L: usize, K: Kernels> LaneM
     }
 }
 
-impl<S: ?Sized, const N: usize, const L: usize, K: Kernels> TaylorLanes<'_, S, N, L, K> {
+impl<S: ?Sized, const N: usize, const L: usize, K: Kernels, C> TaylorLanes<'_, S, N, L, K, C> {
     /// The increments `sum_{k=1..p} y^[k] h^k` of all lanes at once, each by Horner's rule
     /// from its own order `p = order[l]` down (the sums of
     /// [`Taylor`](crate::Taylor), lane by lane).

@@ -410,6 +410,46 @@ impl Isa {
     }
 }
 
+/// The instruction sets whose copies of a loop are compiled in: AVX-512 if `AVX512`, AVX2
+/// with FMA if `AVX2`, the baseline if `BASE` (a copy not compiled costs no build time: the
+/// loops of the lanes and the expansions of the tape are the largest code of the crates that run lanes).
+/// What runs in production is one width per instruction set ([`crate::batch::lanes`],
+/// [`crate::batch::taylor::lanes`]), so its entry points compile only the sets of that width; the
+/// entry points that take the set (tests, benchmarks) compile all three.
+pub(crate) struct Compiled<const AVX512: bool, const AVX2: bool, const BASE: bool>;
+
+/// Every set compiled in.
+pub(crate) type All = Compiled<true, true, true>;
+
+/// The sets compiled in, as the loops and expansions read them ([`Compiled`]).
+pub(crate) trait Sets {
+    /// AVX-512's copy is compiled in.
+    const AVX512: bool;
+    /// AVX2's (with FMA) copy is compiled in.
+    const AVX2: bool;
+    /// The baseline's copy is compiled in (always on other architectures than x86-64, where
+    /// [`Isa::detect`] finds only the baseline).
+    const BASELINE: bool;
+
+    /// The set that runs what asks for `isa`: `isa` if compiled in, else the narrowest set
+    /// compiled in.
+    fn run_as(isa: Isa) -> Isa {
+        match isa {
+            Isa::Avx512 if Self::AVX512 => Isa::Avx512,
+            Isa::Avx2Fma if Self::AVX2 => Isa::Avx2Fma,
+            _ if Self::BASELINE => Isa::Baseline,
+            _ if Self::AVX2 => Isa::Avx2Fma,
+            _ => Isa::Avx512,
+        }
+    }
+}
+
+impl<const AVX512: bool, const AVX2: bool, const BASE: bool> Sets for Compiled<AVX512, AVX2, BASE> {
+    const AVX512: bool = AVX512;
+    const AVX2: bool = AVX2;
+    const BASELINE: bool = BASE || cfg!(not(target_arch = "x86_64"));
+}
+
 /// A field `y' = f(t, y)` of dimension `N` as a compiled expression tape, with the storage of
 /// the Taylor coefficients (of type `T`: [`Coefficient`]) of all its slots up to order
 /// `max_order`.
@@ -760,15 +800,30 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
     /// coefficients `y^[0..=p]` set to NaN, so that a step taken from them is NaN (its
     /// integrator reports it); expanding that lane again gives NaN until it is cleared.
     pub fn expand(&mut self, t: T, y: &[T; N], p: usize) {
+        self.expand_among::<All>(t, y, p);
+    }
+
+    /// [`Tape::expand`] with only the copies for the sets `S` compiled in ([`Compiled`]):
+    /// the tape's set ([`Isa::detect`] when it was recorded) must be one of them, as the
+    /// expansions of the sets differ in their fused multiply-adds.
+    #[inline(always)]
+    pub(crate) fn expand_among<S: Sets>(&mut self, t: T, y: &[T; N], p: usize) {
+        assert!(
+            S::run_as(self.isa) == self.isa,
+            "the expansion for {:?} is not compiled in",
+            self.isa
+        );
         #[cfg(target_arch = "x86_64")]
         match self.isa {
             // SAFETY: `isa` comes from `Isa::detect`: the CPU has the features each function
             // is compiled for.
-            Isa::Avx512 => return unsafe { self.expand_avx512(t, y, p) },
-            Isa::Avx2Fma => return unsafe { self.expand_avx2_fma(t, y, p) },
-            Isa::Baseline => {}
+            Isa::Avx512 if S::AVX512 => return unsafe { self.expand_avx512(t, y, p) },
+            Isa::Avx2Fma if S::AVX2 => return unsafe { self.expand_avx2_fma(t, y, p) },
+            _ => {}
         }
-        self.expand_with::<false, false>(t, y, p);
+        if S::BASELINE {
+            self.expand_with::<false, false>(t, y, p);
+        }
     }
 
     /// [`Tape::expand`] compiled for AVX2 and FMA.
