@@ -84,7 +84,7 @@ impl<const N: usize, const L: usize> Runs<N, L> {
     ///
     /// Only the copies of the loop for the sets `S` are compiled in
     /// ([`Compiled`](crate::taylor::tape::Compiled)); a set asked for and not compiled runs
-    /// in the narrowest one compiled: the same numbers, at another speed.
+    /// in another ([`Sets::run_as`]): the same numbers, at another speed.
     pub fn integrate<S: Sets, M, Q>(isa: Isa, method: &mut M, queue: &mut Q)
     where
         M: LaneMethod<N, L>,

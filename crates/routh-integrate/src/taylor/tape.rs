@@ -431,12 +431,13 @@ pub(crate) trait Sets {
     /// [`Isa::detect`] finds only the baseline).
     const BASELINE: bool;
 
-    /// The set that runs what asks for `isa`: `isa` if compiled in, else the narrowest set
-    /// compiled in.
+    /// The set that runs what asks for `isa`: `isa` if compiled in, else the widest set
+    /// compiled in that is narrower, else (none is) the narrowest compiled in, which the
+    /// callers check the CPU has.
     fn run_as(isa: Isa) -> Isa {
         match isa {
             Isa::Avx512 if Self::AVX512 => Isa::Avx512,
-            Isa::Avx2Fma if Self::AVX2 => Isa::Avx2Fma,
+            Isa::Avx512 | Isa::Avx2Fma if Self::AVX2 => Isa::Avx2Fma,
             _ if Self::BASELINE => Isa::Baseline,
             _ if Self::AVX2 => Isa::Avx2Fma,
             _ => Isa::Avx512,
@@ -1139,7 +1140,53 @@ fn operands(node: &Node) -> impl Iterator<Item = u32> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Tape, Var};
+    use super::{All, Compiled, Isa, Sets, Tape, Var};
+
+    /// The set that runs what asks for a set is compiled in: the set asked for when that is
+    /// compiled in, else the widest narrower one compiled, else the narrowest compiled (every
+    /// choice of the flags with a set, every set asked for).
+    #[test]
+    fn a_set_runs_in_a_set_compiled_in() {
+        fn check<S: Sets>() -> Vec<(Isa, Isa)> {
+            [Isa::Baseline, Isa::Avx2Fma, Isa::Avx512]
+                .map(|asked| (asked, S::run_as(asked)))
+                .into()
+        }
+        let compiled = |run: Isa, flags: (bool, bool, bool)| match run {
+            Isa::Avx512 => flags.0,
+            Isa::Avx2Fma => flags.1,
+            Isa::Baseline => flags.2 || cfg!(not(target_arch = "x86_64")),
+        };
+        let cases = [
+            ((true, true, true), check::<All>()),
+            ((true, true, false), check::<Compiled<true, true, false>>()),
+            (
+                (true, false, false),
+                check::<Compiled<true, false, false>>(),
+            ),
+            ((false, true, true), check::<Compiled<false, true, true>>()),
+            (
+                (false, false, true),
+                check::<Compiled<false, false, true>>(),
+            ),
+            (
+                (false, true, false),
+                check::<Compiled<false, true, false>>(),
+            ),
+        ];
+        for (flags, runs) in cases {
+            for (asked, run) in runs {
+                assert!(compiled(run, flags), "{flags:?}: {asked:?} runs as {run:?}");
+                let all = [Isa::Baseline, Isa::Avx2Fma, Isa::Avx512];
+                let narrower = all
+                    .into_iter()
+                    .filter(|&s| compiled(s, flags) && s.doubles() <= asked.doubles())
+                    .max_by_key(|s| s.doubles());
+                let narrowest = all.into_iter().find(|&s| compiled(s, flags));
+                assert_eq!(Some(run), narrower.or(narrowest), "{flags:?}: {asked:?}");
+            }
+        }
+    }
     use crate::batch::Lanes;
     use crate::scalar::Scalar;
     use crate::OdeSystem;
