@@ -31,7 +31,12 @@ pub const LANES: usize = 8;
 /// throughput benchmark, as 4 lanes were faster in the SSE2 build too (BENCHMARKS.md,
 /// "Sweeps"); with AVX-512, 8 lanes were 1.02x faster than 4 (2026-11-25).
 pub fn lanes() -> usize {
-    match Isa::detect() {
+    width(Isa::detect())
+}
+
+/// The number of lanes of [`lanes`] with the instruction set `isa`.
+const fn width(isa: Isa) -> usize {
+    match isa {
         Isa::Avx512 => 8,
         Isa::Avx2Fma | Isa::Baseline => 4,
     }
@@ -43,22 +48,16 @@ pub fn integrate_in_lanes<F: Field<N>, Q: Queue<N>, const N: usize>(
     opts: &Options,
     queue: &mut Q,
 ) {
-    // Only the sets that run each width here are compiled in (`Compiled`): 8 lanes with
-    // AVX-512, 4 with AVX2 or the baseline.
+    use Isa::{Avx2Fma, Avx512, Baseline};
+    // Only the sets that run each width here are compiled in (`Compiled`, from `width`).
     if lanes() == 8 {
-        integrate_among::<F, Q, N, 8, Compiled<true, false, false>>(
-            Isa::detect(),
-            field,
-            opts,
-            queue,
-        )
+        type Eight =
+            Compiled<{ width(Avx512) == 8 }, { width(Avx2Fma) == 8 }, { width(Baseline) == 8 }>;
+        integrate_among::<F, Q, N, 8, Eight>(Isa::detect(), field, opts, queue)
     } else {
-        integrate_among::<F, Q, N, 4, Compiled<false, true, true>>(
-            Isa::detect(),
-            field,
-            opts,
-            queue,
-        )
+        type Four =
+            Compiled<{ width(Avx512) == 4 }, { width(Avx2Fma) == 4 }, { width(Baseline) == 4 }>;
+        integrate_among::<F, Q, N, 4, Four>(Isa::detect(), field, opts, queue)
     }
 }
 

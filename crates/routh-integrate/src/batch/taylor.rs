@@ -47,7 +47,12 @@ struct TaylorLanes<'s, S: ?Sized, const N: usize, const L: usize, K, C> {
 /// taylor8 1.15x taylor4 on an AVX2 Zen 3, BENCHMARKS.md "Sweeps"), 4 with the baseline (two
 /// SSE2 registers; eight lanes would be four registers an operation of its sixteen).
 pub fn lanes() -> usize {
-    match Isa::detect() {
+    width(Isa::detect())
+}
+
+/// The number of lanes of [`lanes`] with the instruction set `isa`.
+const fn width(isa: Isa) -> usize {
+    match isa {
         Isa::Baseline => 4,
         Isa::Avx2Fma | Isa::Avx512 => 8,
     }
@@ -64,12 +69,16 @@ pub fn integrate<S: OdeSystem<N> + ?Sized, Q: Queue<N>, const N: usize>(
     opts: &Options,
     queue: &mut Q,
 ) -> Result<(), IntegrateError> {
-    // Only the sets that run each width here are compiled in (`Compiled`): 8 lanes with
-    // AVX-512 or AVX2, 4 with the baseline.
+    use Isa::{Avx2Fma, Avx512, Baseline};
+    // Only the sets that run each width here are compiled in (`Compiled`, from `width`).
     if lanes() == 8 {
-        integrate_among::<S, Q, N, 8, Compiled<true, true, false>>(Isa::detect(), sys, opts, queue)
+        type Eight =
+            Compiled<{ width(Avx512) == 8 }, { width(Avx2Fma) == 8 }, { width(Baseline) == 8 }>;
+        integrate_among::<S, Q, N, 8, Eight>(Isa::detect(), sys, opts, queue)
     } else {
-        integrate_among::<S, Q, N, 4, Compiled<false, false, true>>(Isa::detect(), sys, opts, queue)
+        type Four =
+            Compiled<{ width(Avx512) == 4 }, { width(Avx2Fma) == 4 }, { width(Baseline) == 4 }>;
+        integrate_among::<S, Q, N, 4, Four>(Isa::detect(), sys, opts, queue)
     }
 }
 

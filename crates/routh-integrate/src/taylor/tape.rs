@@ -412,10 +412,11 @@ impl Isa {
 
 /// The instruction sets whose copies of a loop are compiled in: AVX-512 if `AVX512`, AVX2
 /// with FMA if `AVX2`, the baseline if `BASE` (a copy not compiled costs no build time: the
-/// loops of the lanes and the expansions of the tape are the largest code of the crates that run lanes).
-/// What runs in production is one width per instruction set ([`crate::batch::lanes`],
-/// [`crate::batch::taylor::lanes`]), so its entry points compile only the sets of that width; the
-/// entry points that take the set (tests, benchmarks) compile all three.
+/// loops of the lanes and the expansions of the tape are the largest code of the crates that
+/// run lanes). What runs in production is one width per instruction set
+/// ([`crate::batch::lanes`], [`crate::batch::taylor::lanes`]), so its entry points compile
+/// only the sets of that width; the entry points that take the set (tests, benchmarks)
+/// compile all three.
 pub(crate) struct Compiled<const AVX512: bool, const AVX2: bool, const BASE: bool>;
 
 /// Every set compiled in.
@@ -1141,6 +1142,9 @@ fn operands(node: &Node) -> impl Iterator<Item = u32> {
 #[cfg(test)]
 mod tests {
     use super::{All, Compiled, Isa, Sets, Tape, Var};
+    use crate::batch::Lanes;
+    use crate::scalar::Scalar;
+    use crate::OdeSystem;
 
     /// The set that runs what asks for a set is compiled in: the set asked for when that is
     /// compiled in, else the widest narrower one compiled, else the narrowest compiled (every
@@ -1187,10 +1191,6 @@ mod tests {
             }
         }
     }
-    use crate::batch::Lanes;
-    use crate::scalar::Scalar;
-    use crate::OdeSystem;
-
     /// `y' = 1 / y`: not finite at `y = 0`.
     struct Inverse;
 
