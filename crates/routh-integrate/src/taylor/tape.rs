@@ -824,13 +824,26 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
             _ => {}
         }
         if S::BASELINE {
-            self.expand_with::<false, false>(t, y, p);
+            self.expand_baseline(t, y, p);
         }
+    }
+
+    // Each set's expansion is a function of its own, never inlined into its caller: the loops
+    // of the lanes are compiled once for each set they run in (`batch::Runs::integrate`), and
+    // an expansion inlined there would be compiled again inside each copy of the loop, every
+    // set's inside every set's (a test binary that runs the three sets' loops: 354 s of CPU
+    // against 108 s, 2026-12-02). The call costs nothing beside an expansion's work.
+
+    /// [`Tape::expand`] in the baseline set (SSE2 on x86-64), without fused multiply-adds.
+    #[inline(never)]
+    fn expand_baseline(&mut self, t: T, y: &[T; N], p: usize) {
+        self.expand_with::<false, false>(t, y, p);
     }
 
     /// [`Tape::expand`] compiled for AVX2 and FMA.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
+    #[inline(never)]
     fn expand_avx2_fma(&mut self, t: T, y: &[T; N], p: usize) {
         self.expand_with::<true, false>(t, y, p);
     }
@@ -838,6 +851,7 @@ impl<const N: usize, T: Coefficient, K: Kernels> Tape<N, T, K> {
     /// [`Tape::expand`] compiled for AVX-512F and VL (and AVX2, FMA).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline(never)]
     fn expand_avx512(&mut self, t: T, y: &[T; N], p: usize) {
         // The histories of two orders at a time in `f64` and 8 lanes; one at a time in 4 lanes
         // (in registers of 4 doubles this Zen 4 loads two a cycle: the loads saved did not
