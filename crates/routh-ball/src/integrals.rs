@@ -9,6 +9,7 @@
 use crate::ball::{AsBall, Ball, Model};
 use crate::body::Body;
 use crate::scalar::{dot, split, Scalar};
+use crate::units::Dimension;
 use serde::Serialize;
 
 /// Energy integral (int-g): `H1 = (M, omega) + 2U`, twice the total energy. With `G = 0`
@@ -146,6 +147,18 @@ pub const INTEGRAL_NAMES: [&str; 5] = ["H1", "H2", "H3", "H4", "K"];
 
 /// Names of all tracked integrals, in the order of [`Integrals::all`].
 pub const ALL_INTEGRAL_NAMES: [&str; 7] = ["H1", "H2", "H3", "H4", "K", "MM", "Mgamma"];
+
+/// The dimension of each of [`ALL_INTEGRAL_NAMES`]: the unit in which a drift from zero is
+/// measured ([`crate::simulate::Drift`]; the dimensions proved by scaling in the tests).
+pub const ALL_INTEGRAL_DIMENSIONS: [Dimension; 7] = [
+    Dimension::ENERGY,
+    Dimension::MOMENTUM_SQUARED,
+    Dimension::MOMENTUM_LENGTH,
+    Dimension::NONE,
+    Dimension::MOMENTUM,
+    Dimension::MOMENTUM_SQUARED,
+    Dimension::MOMENTUM,
+];
 
 impl Integrals {
     /// Evaluate the integrals of the ball's model at `x`.

@@ -5,7 +5,7 @@ use crate::auto;
 use crate::ball::AsBall;
 use crate::body::Body;
 use crate::error::{Number, Result, RouthError};
-use crate::integrals::{Integrals, ALL_INTEGRAL_NAMES};
+use crate::integrals::{Integrals, ALL_INTEGRAL_DIMENSIONS, ALL_INTEGRAL_NAMES};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
     check_samples, drive, stepper, Control, Drive, EventFn, Method, OdeSystem, OnSample, Options,
@@ -13,7 +13,7 @@ use crate::integrate::{
 };
 use crate::projection::LevelSet;
 use crate::state::Point;
-use crate::units::Units;
+use crate::units::{Dimension, Units};
 use serde::Serialize;
 use std::cell::RefCell;
 
@@ -234,8 +234,44 @@ pub struct Drift {
     /// Value at t_end.
     #[serde(rename = "final")]
     pub last: f64,
-    /// `max_t |H(t) - H(0)| / |H(0)|` over all step ends and samples (absolute if H(0) = 0).
+    /// `max_t |H(t) - H(0)| / |H(0)|` over all step ends and samples; where `H(0) = 0`,
+    /// `max_t |H(t)|` in the unit of H's dimension (of R, m and the motion's time:
+    /// [`Units::of_dimension`]), so that the same motion in other units drifts as much.
     pub max_rel_drift: f64,
+    /// What the drift is measured in: `|H(0)|`, or the unit where `H(0) = 0`.
+    #[serde(skip)]
+    scale: f64,
+}
+
+impl Drift {
+    /// The drift of an integral worth `initial` at t = 0, of dimension `dimension`, along a
+    /// motion of units `units` (of its body and initial state: [`Units::of`]).
+    pub fn start(initial: f64, dimension: Dimension, units: &Units) -> Drift {
+        Drift {
+            initial,
+            last: initial,
+            max_rel_drift: 0.0,
+            scale: if initial == 0.0 {
+                units.of_dimension(dimension)
+            } else {
+                initial.abs()
+            },
+        }
+    }
+
+    /// What the drift is measured in: `|H(0)|`, or the unit of H's dimension where `H(0) = 0`.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// The integral is worth `h` at a step end or sample.
+    #[inline]
+    pub fn observe(&mut self, h: f64) {
+        self.last = h;
+        self.max_rel_drift = self
+            .max_rel_drift
+            .max((h - self.initial).abs() / self.scale);
+    }
 }
 
 /// What a simulation reports.
@@ -297,46 +333,37 @@ impl Stopwatch {
 /// The drift of the integrals along a run: their values at the start, at the last state seen,
 /// and the largest relative change (the `integrals` of a [`Summary`]).
 pub struct DriftTracker {
-    initial: [Option<f64>; 7],
-    max: [f64; 7],
-    last: [Option<f64>; 7],
+    drift: [Option<Drift>; 7],
 }
 
 impl DriftTracker {
     /// Starts at `x0`.
     pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
+        let units = Units::of(body, &Point::from_array(x0).omega(body)).binary();
         let initial = Integrals::at(body, x0).all();
         DriftTracker {
-            initial,
-            max: [0.0; 7],
-            last: initial,
+            drift: std::array::from_fn(|i| {
+                initial[i].map(|h| Drift::start(h, ALL_INTEGRAL_DIMENSIONS[i], &units))
+            }),
         }
     }
 
     /// Looks at the state `x`.
     pub fn observe(&mut self, body: &impl AsBall, x: &[f64; 6]) {
-        self.last = Integrals::at(body, x).all();
-        for i in 0..7 {
-            if let (Some(h0), Some(h)) = (self.initial[i], self.last[i]) {
-                let scale = if h0 == 0.0 { 1.0 } else { h0.abs() };
-                self.max[i] = self.max[i].max((h - h0).abs() / scale);
+        let now = Integrals::at(body, x).all();
+        for (drift, h) in self.drift.iter_mut().zip(now) {
+            if let (Some(drift), Some(h)) = (drift.as_mut(), h) {
+                drift.observe(h);
             }
         }
     }
 
     /// The drift of each integral so far.
     pub fn report(&self) -> std::collections::BTreeMap<&'static str, Drift> {
-        (0..7)
-            .filter_map(|i| {
-                Some((
-                    ALL_INTEGRAL_NAMES[i],
-                    Drift {
-                        initial: self.initial[i]?,
-                        last: self.last[i]?,
-                        max_rel_drift: self.max[i],
-                    },
-                ))
-            })
+        ALL_INTEGRAL_NAMES
+            .into_iter()
+            .zip(self.drift)
+            .filter_map(|(name, drift)| Some((name, drift?)))
             .collect()
     }
 }

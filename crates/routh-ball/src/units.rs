@@ -195,6 +195,47 @@ impl Units {
     }
 }
 
+/// The dimension of a quantity of the model: its powers of the unit of angular momentum
+/// `m R^2 / T`, of the length R and of the time T (every quantity of the model is a product
+/// of these: an energy is a momentum over a time). [`Units::of_dimension`] gives its unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Dimension {
+    /// The power of the angular momentum `m R^2 / T`.
+    pub momentum: i32,
+    /// The power of the length R.
+    pub length: i32,
+    /// The power of the time T.
+    pub time: i32,
+}
+
+impl Dimension {
+    /// A pure number (gamma, H4).
+    pub const NONE: Dimension = Dimension::new(0, 0, 0);
+    /// An angular momentum (M, K = g omega3, (M, gamma)).
+    pub const MOMENTUM: Dimension = Dimension::new(1, 0, 0);
+    /// A squared angular momentum (H2, (M, M)).
+    pub const MOMENTUM_SQUARED: Dimension = Dimension::new(2, 0, 0);
+    /// An angular momentum times a length (Jellett's H3 = (M, r)).
+    pub const MOMENTUM_LENGTH: Dimension = Dimension::new(1, 1, 0);
+    /// An energy, a momentum over a time (H1 = (M, omega) + 2U).
+    pub const ENERGY: Dimension = Dimension::new(1, 0, -1);
+
+    const fn new(momentum: i32, length: i32, time: i32) -> Dimension {
+        Dimension {
+            momentum,
+            length,
+            time,
+        }
+    }
+}
+
+impl Units {
+    /// The unit of a quantity of dimension `d` in these units.
+    pub fn of_dimension(&self, d: Dimension) -> f64 {
+        self.momentum().powi(d.momentum) * self.length.powi(d.length) * self.time.powi(d.time)
+    }
+}
+
 /// `body` scaled in mass by `k`, in length by `l` and in time by `s` (the scalings of the
 /// module docs): the same body in other units.
 pub fn scaled_body(body: &Body, [k, l, s]: [f64; 3]) -> Result<Body> {
@@ -241,6 +282,45 @@ mod tests {
         a.iter()
             .zip(b)
             .all(|(x, y)| (x - y).abs() <= tol * y.abs().max(1.0))
+    }
+
+    /// The dimensions of the integrals (`ALL_INTEGRAL_DIMENSIONS`) are theirs: each integral of
+    /// a ball in its problem's units, divided by the unit of its dimension, is the integral of
+    /// the dimensionless problem (`Units::ball`, `Units::point`), to 1e-13 relative (a few
+    /// roundings of each conversion, far below the factor of one wrong power: none of the
+    /// units is near 1 here). Over a Routh sphere with and without gravity, a Chaplygin
+    /// ball and an axial ball without gravity (H2 of (int)), every integral at least once.
+    #[test]
+    fn the_integrals_have_their_dimensions() {
+        use crate::integrals::{Integrals, ALL_INTEGRAL_DIMENSIONS, ALL_INTEGRAL_NAMES};
+        let routh = Body::new(2.0, 40.0, 12.0, 1700.0, 1700.0, 2100.0, 9.81).unwrap();
+        let balls = [
+            routh.ball(),
+            routh.without_gravity().ball(),
+            Ball::new(3.0, 0.05, [0.002, 0.003, 0.0045], [0.0; 3], 9.81).unwrap(),
+            Ball::new(2.0, 40.0, [1700.0, 1700.0, 2100.0], [0.0, 0.0, -12.0], 0.0).unwrap(),
+        ];
+        let mut seen = [false; 7];
+        for ball in &balls {
+            let x = [0.6, 0.0, 0.8, 310.0, -70.0, 1900.0];
+            let units = Units::of(ball, &Point::from_array(&x).omega(ball));
+            let dimensionless = units.ball(ball).unwrap();
+            let y = units.point(&Point::from_array(&x)).to_array();
+            let (h, h0) = (
+                Integrals::at(ball, &x).all(),
+                Integrals::at(&dimensionless, &y).all(),
+            );
+            for i in 0..7 {
+                let (Some(h), Some(h0)) = (h[i], h0[i]) else {
+                    continue;
+                };
+                seen[i] = true;
+                let back = h0 * units.of_dimension(ALL_INTEGRAL_DIMENSIONS[i]);
+                let name = ALL_INTEGRAL_NAMES[i];
+                assert!((back - h).abs() <= 1e-13 * h.abs(), "{name}: {back} {h}");
+            }
+        }
+        assert_eq!(seen, [true; 7]);
     }
 
     /// Copies of one motion in units from 1e-30 to 1e30 have the same dimensionless body and

@@ -180,9 +180,12 @@ pub fn path_plot(table: &Table) -> Result<Plot> {
     })
 }
 
-/// The running maximum over `[0, t]` of the relative drift `|H(s) - H(0)| / |H(0)|` (absolute
-/// when H(0) = 0) of each integral column present with finite values: the raw drift jumps
-/// over orders of magnitude from sample to sample, its running maximum reads at a glance.
+/// The running maximum over `[0, t]` of the relative drift `|H(s) - H(0)| / |H(0)|` of each
+/// integral column present with finite values: the raw drift jumps over orders of magnitude
+/// from sample to sample, its running maximum reads at a glance. A table holds no body, so
+/// the drift of an integral with H(0) = 0 cannot be measured in its unit (as the summaries'
+/// [`Drift`](crate::simulate::Drift) is): it is drawn as `|H(s)|`, in the table's units, and
+/// its label says so.
 pub fn drift_plot(table: &Table) -> Result<Plot> {
     let t = table.column("t")?;
     let mut series = Vec::new();
@@ -200,10 +203,12 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
                 Some((t, *worst))
             })
             .collect();
-        series.push(Series {
-            label: name.to_string(),
-            points,
-        });
+        let label = if h[0] == 0.0 {
+            format!("{name} (absolute: {name}(0) = 0)")
+        } else {
+            name.to_string()
+        };
+        series.push(Series { label, points });
     }
     if series.is_empty() {
         return Err(FileError::Table {

@@ -82,8 +82,8 @@ use crate::integrate::taylor::{Interpreted, Var};
 use crate::integrate::{OdeSystem, OnSample, RunUnits};
 use crate::scalar::{dot, split, Scalar};
 use crate::simulate::{integrate_observed, Drift, Settings, Summary};
-use crate::state::State;
-use crate::units::Units;
+use crate::state::{Point, State};
+use crate::units::{Dimension, Units};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -280,6 +280,20 @@ impl Rubber {
     }
 }
 
+/// The dimension of each integral of [`COLUMN_NAMES`] (H1 an energy, H4 a pure number, F a
+/// squared momentum: `(M, M)` and `m R (com, gamma) H1` alike; proved by scaling in the tests).
+const DIMENSIONS: [Dimension; INTEGRALS] = [
+    Dimension::ENERGY,
+    Dimension::NONE,
+    Dimension::MOMENTUM_SQUARED,
+];
+
+/// The dimension of the integral `name` of [`COLUMN_NAMES`].
+fn dimension(name: &str) -> Dimension {
+    let at = COLUMN_NAMES[..INTEGRALS].iter().position(|&n| n == name);
+    DIMENSIONS[at.expect("an integral of COLUMN_NAMES")]
+}
+
 /// The integrals of the rubber ball at `x`, by name.
 fn integrals(model: &Rubber, x: &[f64; 6]) -> Vec<(&'static str, f64)> {
     COLUMN_NAMES
@@ -299,16 +313,10 @@ struct Tracker {
 
 impl Tracker {
     fn new(model: &Rubber, x0: &[f64; 6]) -> Self {
+        let units = Units::of(&model.ball, &Point::from_array(x0).omega(&model.ball)).binary();
         let drift = integrals(model, x0)
             .into_iter()
-            .map(|(name, h)| {
-                let start = Drift {
-                    initial: h,
-                    last: h,
-                    max_rel_drift: 0.0,
-                };
-                (name, start)
-            })
+            .map(|(name, h)| (name, Drift::start(h, dimension(name), &units)))
             .collect();
         Tracker {
             model: *model,
@@ -320,13 +328,7 @@ impl Tracker {
     fn observe(&mut self, x: &[f64; 6]) {
         for (name, h) in integrals(&self.model, x) {
             let d = self.drift.get_mut(name).expect("tracked from the start");
-            let scale = if d.initial == 0.0 {
-                1.0
-            } else {
-                d.initial.abs()
-            };
-            d.last = h;
-            d.max_rel_drift = d.max_rel_drift.max((h - d.initial).abs() / scale);
+            d.observe(h);
         }
         self.twist = self.twist.max(self.model.relative_twist(x));
     }
@@ -383,6 +385,26 @@ mod tests {
     use crate::differential::{lie_derivative, Dual6};
     use crate::integrals::{jellett, quadratic_integral, routh_integral};
     use crate::state::Normalise;
+
+    /// The dimensions of the rubber ball's integrals (`DIMENSIONS`, in which their drift from
+    /// zero is measured): each, divided by the unit of its dimension, is the integral of the
+    /// dimensionless problem (`Units::ball`, `Units::point`) to 1e-13 relative (a few
+    /// roundings; one wrong power would be off by a unit far from 1), F without gravity.
+    #[test]
+    fn the_integrals_have_their_dimensions() {
+        let ball = Ball::new(2.0, 40.0, [1500.0, 1700.0, 2100.0], [3.0, 0.0, -12.0], 0.0).unwrap();
+        for x in states(&ball) {
+            let units = Units::of(&ball, &Point::from_array(&x).omega(&ball));
+            let dimensionless = Rubber::new(&units.ball(&ball).unwrap());
+            let y = units.point(&Point::from_array(&x)).to_array();
+            let (h, h0) = (Rubber::new(&ball).columns(&x), dimensionless.columns(&y));
+            for (i, name) in COLUMN_NAMES[..INTEGRALS].iter().enumerate() {
+                let (h, h0) = (h[i].expect("an integral"), h0[i].expect("an integral"));
+                let back = h0 * units.of_dimension(dimension(name));
+                assert!((back - h).abs() <= 1e-13 * h.abs(), "{name}: {back} {h}");
+            }
+        }
+    }
 
     /// Seven states on the constraint (|gamma| = 1, omega orthogonal to gamma), of tilts 0.3
     /// to 2.7 and azimuths around the axis, |omega| of 2 to 5.

@@ -75,9 +75,9 @@ use crate::integrate::{
     drive, stepper, Control, Drive, OdeSystem, OnSample, Options, RunUnits, Stop,
 };
 use crate::scalar::{cross, dot, lift, Scalar};
-use crate::simulate::Settings;
+use crate::simulate::{Drift, Settings};
 use crate::state::{Normalise, State, UNIT_TOLERANCE};
-use crate::units::Units;
+use crate::units::{Dimension, Units};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -309,10 +309,7 @@ impl OdeSystem<DIM> for Sliding {
     }
 
     fn units(&self, y0: &[f64; DIM]) -> RunUnits<DIM> {
-        let (_, omega, v) = parts(y0);
-        let speed = dot(&v, &v).sqrt() / self.ball.radius();
-        let rate = dot(&omega, &omega).sqrt().max(speed);
-        let units = Units::with_rate(&self.ball, rate).binary();
+        let units = self.problem_units(y0);
         let (w, s, e) = (
             units.time().recip(),
             units.length() / units.time(),
@@ -322,6 +319,17 @@ impl OdeSystem<DIM> for Sliding {
             time: units.time(),
             components: [1.0, 1.0, 1.0, w, w, w, s, s, s, e],
         }
+    }
+}
+
+impl Sliding {
+    /// The units of a motion from `y0` (R, m and the time of its spin or of its rolling speed
+    /// over R, rounded to powers of two: [`Units::with_rate`], [`Units::binary`]).
+    fn problem_units(&self, y0: &[f64; DIM]) -> Units {
+        let (_, omega, v) = parts(y0);
+        let speed = dot(&v, &v).sqrt() / self.ball.radius();
+        let rate = dot(&omega, &omega).sqrt().max(speed);
+        Units::with_rate(&self.ball, rate).binary()
     }
 }
 
@@ -403,13 +411,14 @@ impl Observation {
 /// How the balances of a run held: the largest changes over its step ends and samples.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Balance {
-    /// `max |J - J(0)| / |J(0)|` (absolute if `J(0) = 0`); `None` where Jellett's `(L, r)` is
-    /// not an integral ([`Sliding::has_jellett`]).
+    /// `max |J - J(0)| / |J(0)|` (in the unit of J's dimension if `J(0) = 0`: [`Drift`]);
+    /// `None` where Jellett's `(L, r)` is not an integral ([`Sliding::has_jellett`]).
     pub jellett: Option<f64>,
-    /// `max |(H1 + W) - H1(0)| / |H1(0)|`: the energy balance, loss = friction work.
+    /// `max |(H1 + W) - H1(0)| / |H1(0)|` (in the unit of energy if `H1(0) = 0`: [`Drift`]):
+    /// the energy balance, loss = friction work.
     pub energy_balance: f64,
-    /// The largest increase of H1 between consecutive step ends, relative to `|H1(0)|`
-    /// (zero when the energy never increases).
+    /// The largest increase of H1 between consecutive step ends, relative to `|H1(0)|` (or
+    /// the unit of energy, as the balance) (zero when the energy never increases).
     pub energy_increase: f64,
     /// `max |(v_P, gamma)|` over `R / T` (the motion's speed): the residual of the constraint.
     pub vertical_slip: f64,
@@ -452,6 +461,10 @@ pub struct SlidingSummary {
 struct Tracker {
     model: Sliding,
     first: Observation,
+    /// Jellett's integral, where it is one.
+    jellett: Option<Drift>,
+    /// The energy plus the friction's work, which stays H1(0).
+    energy: Drift,
     last_energy: f64,
     /// `R / T`, the speed of the residual of the constraint.
     speed: f64,
@@ -461,12 +474,15 @@ struct Tracker {
 impl Tracker {
     fn new(model: &Sliding, y0: &[f64; DIM]) -> Self {
         let first = model.observe(0.0, y0);
-        let units = model.units(y0);
+        let units = model.problem_units(y0);
+        let jellett = Drift::start(first.jellett, Dimension::MOMENTUM_LENGTH, &units);
         Tracker {
             model: *model,
             first,
+            jellett: model.has_jellett().then_some(jellett),
+            energy: Drift::start(first.energy, Dimension::ENERGY, &units),
             last_energy: first.energy,
-            speed: model.ball.radius() / units.time,
+            speed: model.ball.radius() / units.time(),
             balance: Balance {
                 jellett: model.has_jellett().then_some(0.0),
                 energy_balance: 0.0,
@@ -480,19 +496,16 @@ impl Tracker {
 
     fn observe(&mut self, y: &[f64; DIM]) {
         let now = self.model.observe(0.0, y);
-        let relative = |value: f64, initial: f64| {
-            let scale = if initial == 0.0 { 1.0 } else { initial.abs() };
-            (value - initial).abs() / scale
-        };
         let b = &mut self.balance;
-        if let Some(j) = b.jellett.as_mut() {
-            *j = j.max(relative(now.jellett, self.first.jellett));
+        if let Some(j) = self.jellett.as_mut() {
+            j.observe(now.jellett);
+            b.jellett = Some(j.max_rel_drift);
         }
-        let h1 = self.first.energy;
-        b.energy_balance = b.energy_balance.max(relative(now.energy + now.work, h1));
+        self.energy.observe(now.energy + now.work);
+        b.energy_balance = self.energy.max_rel_drift;
         b.energy_increase = b
             .energy_increase
-            .max((now.energy - self.last_energy) / h1.abs());
+            .max((now.energy - self.last_energy) / self.energy.scale());
         self.last_energy = now.energy;
         b.vertical_slip = b
             .vertical_slip

@@ -1959,7 +1959,7 @@ mod units {
 
     use routh::integrate::{solve, Method, Options, Stats};
     use routh::simulate::{run, ReducedSystem, Settings, Summary};
-    use routh::state::{Normalise, State};
+    use routh::state::{Normalise, Point, State};
     use routh::units::{scaled_body, scaled_state, Units};
     use routh::Body;
 
@@ -2059,6 +2059,47 @@ mod units {
                     }
                 }
             }
+        }
+    }
+
+    /// An integral that starts at zero drifts as much in every copy in binary units, to the
+    /// bit: Jellett's H3 = (M, r) of the upright ball (gamma = e3, r along e3) turned by a
+    /// horizontal M is 0 at t = 0 and stays 0 up to round-off, and its drift is measured in
+    /// the unit of its dimension (a momentum times a length, `Units::of_dimension`), which
+    /// scales as H3 does. Tolerance zero (powers of two, as in
+    /// [`a_copy_in_binary_units_takes_the_same_steps_to_the_bit`]). The control: H3 at the end,
+    /// its absolute drift, is `k l^3 / s` times the reference's in each copy (a drift measured
+    /// in absolute terms, as it was, would differ by that factor).
+    #[test]
+    fn an_integral_from_zero_drifts_as_much_in_other_units() {
+        let body = Body::default();
+        let x = State::of_point(
+            &Point {
+                gamma: [0.0, 0.0, 1.0],
+                m: [0.4, 0.3, 0.0],
+            },
+            Normalise::Reject,
+        )
+        .unwrap();
+        let t_end = 20.0 * Units::of(&body, &x.omega(&body)).time();
+        let reference = simulated(&body, &x, t_end, Method::Dop853);
+        let h3 = reference.integrals["H3"];
+        assert_eq!(h3.initial, 0.0);
+        assert!(h3.last != 0.0 && h3.max_rel_drift > 0.0, "{h3:?}");
+        assert!(h3.max_rel_drift < 1e-12, "{h3:?}");
+        for factors in BINARY {
+            let [k, l, s] = factors;
+            let (b, y) = (
+                scaled_body(&body, factors).unwrap(),
+                scaled_state(&x, factors).unwrap(),
+            );
+            let copy = simulated(&b, &y, s * t_end, Method::Dop853).integrals["H3"];
+            assert_eq!(copy.last, h3.last * (k * l * l / s * l), "{factors:?}");
+            assert_eq!(
+                copy.max_rel_drift.to_bits(),
+                h3.max_rel_drift.to_bits(),
+                "{factors:?}: {copy:?} {h3:?}"
+            );
         }
     }
 
