@@ -18,8 +18,19 @@ use serde::Serialize;
 pub fn energy<D: Scalar>(body: &impl AsBall, x: &[D; 6]) -> D {
     let ball = body.ball();
     let (gamma, m_vec) = split(x);
-    let omega = ball.angular_velocity(&gamma, &m_vec);
-    dot(&m_vec, &omega) + ball.potential(&gamma) * 2.0
+    energy_of(
+        &ball,
+        &gamma,
+        &m_vec,
+        &ball.angular_velocity(&gamma, &m_vec),
+    )
+}
+
+/// [`energy`] at `(gamma, M)` whose angular velocity is `omega` (so that [`Integrals::at`]
+/// solves (om-m) once for H1 and K).
+#[inline(always)]
+fn energy_of<D: Scalar>(ball: &Ball, gamma: &[D; 3], m_vec: &[D; 3], omega: &[D; 3]) -> D {
+    dot(m_vec, omega) + ball.potential(gamma) * 2.0
 }
 
 /// Jellett's integral (int): `H3 = (M, r)`.
@@ -40,7 +51,13 @@ pub fn geometric<D: Scalar>(x: &[D; 6]) -> D {
 #[inline]
 pub fn routh_integral<D: Scalar>(body: &Body, x: &[D; 6]) -> D {
     let (gamma, m_vec) = split(x);
-    body.routh_g(&gamma) * body.angular_velocity(&gamma, &m_vec)[2]
+    routh_integral_of(body, &gamma, &body.angular_velocity(&gamma, &m_vec))
+}
+
+/// [`routh_integral`] at gamma with the angular velocity `omega`.
+#[inline(always)]
+fn routh_integral_of<D: Scalar>(body: &Body, gamma: &[D; 3], omega: &[D; 3]) -> D {
+    body.routh_g(gamma) * omega[2]
 }
 
 /// The quadratic integral in the form printed after (raus-int),
@@ -169,9 +186,14 @@ impl Integrals {
             Model::RouthSphere => ball.axial_body("Routh's integrals").ok(),
             _ => None,
         };
-        let h1 = energy(&ball, x);
+        let (gamma, m_vec) = split(x);
+        let omega = ball.angular_velocity(&gamma, &m_vec);
+        let h1 = energy_of(&ball, &gamma, &m_vec, &omega);
         let (h3, k) = match &routh {
-            Some(body) => (Some(jellett(body, x)), Some(routh_integral(body, x))),
+            Some(body) => (
+                Some(jellett(body, x)),
+                Some(routh_integral_of(body, &gamma, &omega)),
+            ),
             None => (None, None),
         };
         let h2 = match (&routh, k, h3) {

@@ -244,15 +244,16 @@ pub struct Drift {
 }
 
 impl Drift {
-    /// The drift of an integral worth `initial` at t = 0, of dimension `dimension`, along a
-    /// motion of units `units` (of its body and initial state: [`Units::of`]).
-    pub fn start(initial: f64, dimension: Dimension, units: &Units) -> Drift {
+    /// The drift of an integral worth `initial` at t = 0, whose dimension has the unit
+    /// `unit()` in the units of the motion (of its body and initial state: [`Units::of`],
+    /// [`Units::of_dimension`]; asked for only where `initial = 0`).
+    pub fn start(initial: f64, unit: impl FnOnce() -> f64) -> Drift {
         Drift {
             initial,
             last: initial,
             max_rel_drift: 0.0,
             scale: if initial == 0.0 {
-                units.of_dimension(dimension)
+                unit()
             } else {
                 initial.abs()
             },
@@ -339,11 +340,15 @@ pub struct DriftTracker {
 impl DriftTracker {
     /// Starts at `x0`.
     pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
-        let units = Units::of(body, &Point::from_array(x0).omega(body)).binary();
+        let units = std::cell::OnceCell::new();
+        let unit = |d: Dimension| {
+            let units = units.get_or_init(|| Units::of(body, &Point::from_array(x0).omega(body)));
+            units.binary().of_dimension(d)
+        };
         let initial = Integrals::at(body, x0).all();
         DriftTracker {
             drift: std::array::from_fn(|i| {
-                initial[i].map(|h| Drift::start(h, ALL_INTEGRAL_DIMENSIONS[i], &units))
+                initial[i].map(|h| Drift::start(h, || unit(ALL_INTEGRAL_DIMENSIONS[i])))
             }),
         }
     }

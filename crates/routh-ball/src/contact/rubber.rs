@@ -316,7 +316,12 @@ impl Tracker {
         let units = Units::of(&model.ball, &Point::from_array(x0).omega(&model.ball)).binary();
         let drift = integrals(model, x0)
             .into_iter()
-            .map(|(name, h)| (name, Drift::start(h, dimension(name), &units)))
+            .map(|(name, h)| {
+                (
+                    name,
+                    Drift::start(h, || units.of_dimension(dimension(name))),
+                )
+            })
             .collect();
         Tracker {
             model: *model,

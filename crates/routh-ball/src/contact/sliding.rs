@@ -475,12 +475,13 @@ impl Tracker {
     fn new(model: &Sliding, y0: &[f64; DIM]) -> Self {
         let first = model.observe(0.0, y0);
         let units = model.problem_units(y0);
-        let jellett = Drift::start(first.jellett, Dimension::MOMENTUM_LENGTH, &units);
+        let unit = |d: Dimension| move || units.of_dimension(d);
+        let jellett = Drift::start(first.jellett, unit(Dimension::MOMENTUM_LENGTH));
         Tracker {
             model: *model,
             first,
             jellett: model.has_jellett().then_some(jellett),
-            energy: Drift::start(first.energy, Dimension::ENERGY, &units),
+            energy: Drift::start(first.energy, unit(Dimension::ENERGY)),
             last_energy: first.energy,
             speed: model.ball.radius() / units.time(),
             balance: Balance {
