@@ -144,17 +144,26 @@ fn usable(u: f64) -> f64 {
 
 /// `x 2^e`, exact unless the result leaves the normal range (the power applied in parts,
 /// so that no factor overflows or underflows on its own).
+#[inline(always)]
 fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
     const PART: i32 = 1000;
     while e > PART {
-        x *= 2f64.powi(PART);
+        x *= power_of_two(PART);
         e -= PART;
     }
     while e < -PART {
-        x *= 2f64.powi(-PART);
+        x *= power_of_two(-PART);
         e += PART;
     }
-    x * 2f64.powi(e)
+    x * power_of_two(e)
+}
+
+/// `2^e` for `|e| <= 1000`, made of its exponent's bits (exactly `2f64.powi(e)`, without the
+/// library call: the step of the Taylor lanes takes two a lane, 3 % of its time as calls).
+#[inline(always)]
+fn power_of_two(e: i32) -> f64 {
+    debug_assert!(e.abs() <= 1000);
+    f64::from_bits(((e + 1023) as u64) << 52)
 }
 
 impl<const N: usize> Scales<N> {
@@ -922,3 +931,22 @@ pub fn solve_dense<S: OdeSystem<N>, const N: usize>(
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+#[cfg(test)]
+mod tests {
+    use super::{power_of_two, times_power_of_two};
+
+    /// The powers of two made of their bits are the library's `powi`, bit for bit, over the
+    /// whole range they are used in; and `x 2^e` beyond it is applied in exact parts (a
+    /// factor 2^2000 then 2^-2000 gives `x` back).
+    #[test]
+    fn powers_of_two_are_the_library_s_to_the_bit() {
+        for e in -1000..=1000 {
+            assert_eq!(power_of_two(e).to_bits(), 2f64.powi(e).to_bits(), "2^{e}");
+        }
+        let x = 0.3_f64;
+        let there = times_power_of_two(x * 2f64.powi(-1000), 2000);
+        assert_eq!(times_power_of_two(there, -2000), x * 2f64.powi(-1000));
+        assert_eq!(times_power_of_two(1.5, 1030), f64::INFINITY);
+    }
+}
