@@ -342,8 +342,9 @@ impl DriftTracker {
     pub fn new(body: &impl AsBall, x0: &[f64; 6]) -> Self {
         let units = std::cell::OnceCell::new();
         let unit = |d: Dimension| {
-            let units = units.get_or_init(|| Units::of(body, &Point::from_array(x0).omega(body)));
-            units.binary().of_dimension(d)
+            units
+                .get_or_init(|| Units::of_motion(body, x0))
+                .of_dimension(d)
         };
         let initial = Integrals::at(body, x0).all();
         DriftTracker {

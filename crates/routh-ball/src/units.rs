@@ -171,12 +171,20 @@ impl Units {
     ///
     /// [`OdeSystem::units`]: crate::integrate::OdeSystem::units
     pub fn of_reduced(ball: &impl AsBall, x: &[f64; 6]) -> RunUnits<6> {
-        let units = Units::of(ball, &Point::from_array(x).omega(ball)).binary();
+        let units = Units::of_motion(ball, x);
         let p = units.momentum();
         RunUnits {
             time: units.time(),
             components: [1.0, 1.0, 1.0, p, p, p],
         }
+    }
+
+    /// The units of a motion of `ball` from the reduced state `x = (gamma, M)` ([`Units::of`]
+    /// at its angular velocity), rounded to powers of two ([`Units::binary`]): those of its
+    /// integration ([`Units::of_reduced`]) and of the drift of its integrals
+    /// ([`crate::simulate::Drift`]).
+    pub fn of_motion(ball: &impl AsBall, x: &[f64; 6]) -> Units {
+        Units::of(ball, &Point::from_array(x).omega(ball)).binary()
     }
 
     /// A state of these units back in the problem's units ([`Units::point_back`]; an error

@@ -20,6 +20,7 @@
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::INTEGRAL_NAMES;
 use crate::output::write_atomic;
+use crate::simulate::Drift;
 use crate::table::Table;
 use plotters::coord::combinators::IntoLogRange;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
@@ -194,13 +195,13 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
         if !h[0].is_finite() {
             continue;
         }
-        let scale = if h[0] == 0.0 { 1.0 } else { h[0].abs() };
+        // The unit 1 of the table's units where H(0) = 0 (the label says so).
         let points = t
             .iter()
             .zip(h)
-            .scan(0.0_f64, |worst, (&t, &v)| {
-                *worst = worst.max((v - h[0]).abs() / scale);
-                Some((t, *worst))
+            .scan(Drift::start(h[0], || 1.0), |drift, (&t, &v)| {
+                drift.observe(v);
+                Some((t, drift.max_rel_drift))
             })
             .collect();
         let label = if h[0] == 0.0 {

@@ -82,7 +82,7 @@ use crate::integrate::taylor::{Interpreted, Var};
 use crate::integrate::{OdeSystem, OnSample, RunUnits};
 use crate::scalar::{dot, split, Scalar};
 use crate::simulate::{integrate_observed, Drift, Settings, Summary};
-use crate::state::{Point, State};
+use crate::state::State;
 use crate::units::{Dimension, Units};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -313,7 +313,7 @@ struct Tracker {
 
 impl Tracker {
     fn new(model: &Rubber, x0: &[f64; 6]) -> Self {
-        let units = Units::of(&model.ball, &Point::from_array(x0).omega(&model.ball)).binary();
+        let units = Units::of_motion(&model.ball, x0);
         let drift = integrals(model, x0)
             .into_iter()
             .map(|(name, h)| {
@@ -389,7 +389,7 @@ mod tests {
     use crate::body::Body;
     use crate::differential::{lie_derivative, Dual6};
     use crate::integrals::{jellett, quadratic_integral, routh_integral};
-    use crate::state::Normalise;
+    use crate::state::{Normalise, Point};
 
     /// The dimensions of the rubber ball's integrals (`DIMENSIONS`, in which their drift from
     /// zero is measured): each, divided by the unit of its dimension, is the integral of the

@@ -22,7 +22,7 @@ const TWO_54: f64 = 18_014_398_509_481_984.0;
 /// `2^m` for an integer `m` (as a double) with `-1022 <= m <= 1023`: the exponent field
 /// `m + 1023` in the low bits of `m + 1023 + 2^52`, shifted into place.
 #[inline(always)]
-fn two_to(m: f64) -> f64 {
+pub(crate) fn two_to(m: f64) -> f64 {
     f64::from_bits((m + (1023.0 + 4_503_599_627_370_496.0)).to_bits() << 52)
 }
 

@@ -38,7 +38,7 @@
 pub mod codegen;
 pub mod coefficient;
 mod convolution;
-mod elementary;
+pub(crate) mod elementary;
 pub mod kernels;
 pub mod recurrence;
 pub mod tape;
