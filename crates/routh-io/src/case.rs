@@ -21,8 +21,8 @@
 //! max_steps = 10000000
 //! [contact]         # optional: the contact law, rolling without slipping by default
 //! law = "sliding"   # "rolling" (the default: the paper's system), "rubber" or "sliding"
-//! friction = "viscous"      # optional with "sliding" (the only friction so far)
-//! mu = 0.3                  # with "sliding": F = -mu N v_P
+//! friction = "viscous"      # optional with "sliding": "viscous" (the default) or "coulomb"
+//! mu = 0.3                  # with "sliding": F = -mu N v_P (viscous), |F| <= mu N (coulomb)
 //! ```
 //!
 //! With `law = "rubber"` (rolling without slipping or twisting, `routh_ball::contact::rubber`)
@@ -43,7 +43,7 @@ use crate::ball::{AsBall, Ball};
 use crate::body::Body;
 use crate::contact::rubber::Rubber;
 use crate::contact::sliding::{Sliding, DIM};
-use crate::contact::Contact;
+use crate::contact::{Contact, Friction};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrate::Method;
 use crate::simulate::{Settings, SettingsBuilder};
@@ -175,13 +175,15 @@ impl ContactTable {
                  law = \"{law}\" has no friction"
             )),
             ("sliding", friction, mu) => {
-                if let Some(other) = friction.as_deref().filter(|f| *f != "viscous") {
-                    return Err(format!(
-                        "in [contact]: unknown friction = \"{other}\"; known: \"viscous\""
-                    ));
-                }
+                let name = friction.as_deref().unwrap_or("viscous");
+                let friction = Friction::named(name).ok_or_else(|| {
+                    format!(
+                        "in [contact]: unknown friction = \"{name}\"; known: \"viscous\", \
+                         \"coulomb\""
+                    )
+                })?;
                 let mu = mu.ok_or("in [contact]: law = \"sliding\" needs `mu`")?;
-                Contact::sliding(mu).map_err(|e| format!("in [contact]: {e}"))
+                Contact::sliding(friction, mu).map_err(|e| format!("in [contact]: {e}"))
             }
             (other, _, _) => Err(format!(
                 "in [contact]: unknown law = \"{other}\"; known: \"rolling\", \"rubber\", \
@@ -342,8 +344,8 @@ impl Case {
         };
         let sliding = match contact {
             Contact::Rolling | Contact::Rubber => None,
-            Contact::Sliding { mu, .. } => {
-                let model = Sliding::new(&ball, mu)?;
+            Contact::Sliding { friction, mu } => {
+                let model = Sliding::with_friction(&ball, friction, mu)?;
                 let y0 = model.initial(
                     initial.gamma(),
                     initial.omega(&ball),

@@ -6,7 +6,7 @@
 use crate::ball::Ball;
 use crate::case::{Case, Overrides, RubberStart, SlidingStart};
 use crate::contact::rubber::{run as run_rubber, RubberSummary};
-use crate::contact::sliding::{run as run_sliding, SlidingSummary, DIM};
+use crate::contact::sliding::{run as run_sliding, Observation, SlidingSummary};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
 use crate::integrate::OdeSystem;
@@ -285,9 +285,8 @@ pub fn sliding_samples(
     on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
 ) -> Result<SlidingSummary> {
     let model = &start.model;
-    let mut on_sample = |t: f64, y: &[f64; DIM]| {
-        let cells: Vec<Cell> = model
-            .observe(t, y)
+    let mut on_sample = |now: &Observation| {
+        let cells: Vec<Cell> = now
             .values()
             .into_iter()
             .map(|v| Cell::Float(Some(v)))

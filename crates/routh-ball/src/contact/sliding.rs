@@ -67,12 +67,13 @@
 //! for the derivatives along the field that check the derivation (the tests), the Taylor
 //! method's tape ([`OdeSystem::record`]).
 
-use super::Contact;
+use super::coulomb::Transition;
+use super::{Contact, Friction};
 use crate::ball::{AsBall, Ball};
 use crate::error::{Number, Result, RouthError};
 use crate::integrate::taylor::Var;
 use crate::integrate::{
-    drive, stepper, Control, Drive, OdeSystem, OnSample, Options, RunUnits, Stop,
+    drive, stepper, Control, Drive, OdeSystem, Options, RunUnits, Stop,
 };
 use crate::scalar::{cross, dot, lift, Scalar};
 use crate::simulate::{Drift, Settings};
@@ -84,12 +85,30 @@ use std::time::Instant;
 /// The dimension of the state `x = (gamma, omega, v, W)`.
 pub const DIM: usize = 10;
 
-/// A ball on the plane with a slipping contact and viscous friction: the ball and `mu`,
-/// valid when built ([`Sliding::new`]).
+/// A ball on the plane with a slipping contact: the ball, the friction law and `mu`, valid
+/// when built ([`Sliding::new`], [`Sliding::with_friction`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sliding {
     ball: Ball,
+    friction: Friction,
     mu: f64,
+}
+
+/// Which way the friction of a field evaluation points, decided on the `f64` state (a
+/// dual number or a series cannot be compared): the friction per unit of normal force
+/// `phi`, `F = -N phi` ([`Sliding::friction_per_normal`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Heading {
+    /// As the law says at the state: `mu v_P` (viscous), `mu v_P / |v_P|` (Coulomb).
+    Law,
+    /// Coulomb's `mu v_P / sigma` with the signed slip speed `sigma = sign |v_P|`: with
+    /// `sign = -1` past the instant where the slip stops, the field continued smoothly
+    /// through it (the friction keeps its direction), so that the stop is a simple zero
+    /// of a smooth function ([`crate::contact::coulomb`]).
+    Signed(f64),
+    /// `mu d`, `d` a unit vector: Coulomb's friction where the slip is zero to round-off
+    /// and its direction is that of the slip about to start.
+    Along([f64; 3]),
 }
 
 /// The parts `(gamma, omega, v)` of a state.
@@ -108,11 +127,23 @@ impl Sliding {
     /// The ball `ball` sliding with the viscous friction coefficient `mu` (finite, `>= 0`:
     /// the rule of [`Contact::sliding`]).
     pub fn new(ball: &impl AsBall, mu: f64) -> Result<Self> {
-        Contact::sliding(mu)?;
+        Self::with_friction(ball, Friction::Viscous, mu)
+    }
+
+    /// The ball `ball` sliding with the friction law `friction` of coefficient `mu`
+    /// (finite, `>= 0`: the rule of [`Contact::sliding`]).
+    pub fn with_friction(ball: &impl AsBall, friction: Friction, mu: f64) -> Result<Self> {
+        Contact::sliding(friction, mu)?;
         Ok(Sliding {
             ball: ball.ball(),
+            friction,
             mu,
         })
+    }
+
+    /// The friction law.
+    pub fn friction(&self) -> Friction {
+        self.friction
     }
 
     /// The ball.
@@ -120,7 +151,7 @@ impl Sliding {
         self.ball
     }
 
-    /// The friction coefficient mu of `F = -mu N v_P`.
+    /// The friction coefficient mu (`F = -mu N v_P` viscous, `|F| = mu N` Coulomb).
     pub fn mu(&self) -> f64 {
         self.mu
     }
@@ -140,15 +171,43 @@ impl Sliding {
         std::array::from_fn(|i| v[i] + spin[i])
     }
 
-    /// The normal force N that keeps the ball on the plane (the module's formula).
+    /// The friction per unit of normal force, `phi` with `F = -N phi`: `mu v_P` (viscous),
+    /// `mu v_P / |v_P|` (Coulomb, while it slips), as `heading` says ([`Heading`]).
     #[inline(always)]
-    pub fn normal_force<D: Scalar>(&self, x: &[D; DIM]) -> D {
-        self.normal_force_with(x, &self.slip_velocity(x))
+    pub fn friction_per_normal<D: Scalar>(&self, slip: &[D; 3], heading: Heading) -> [D; 3] {
+        let mu = self.mu;
+        match (self.friction, heading) {
+            (Friction::Viscous, _) => slip.map(|s| s * mu),
+            (Friction::Coulomb, Heading::Along(d)) => d.map(|c| lift(c * mu)),
+            (Friction::Coulomb, Heading::Law) => {
+                let per_speed = dot(slip, slip).sqrt().recip() * mu;
+                slip.map(|s| s * per_speed)
+            }
+            (Friction::Coulomb, Heading::Signed(sign)) => {
+                let per_speed = dot(slip, slip).sqrt().recip() * (mu * sign);
+                slip.map(|s| s * per_speed)
+            }
+        }
     }
 
-    /// [`Sliding::normal_force`] with the slip `slip` computed already.
+    /// The normal force N that keeps the ball on the plane (the module's formula), with the
+    /// friction of the law at the state ([`Heading::Law`]).
     #[inline(always)]
-    fn normal_force_with<D: Scalar>(&self, x: &[D; DIM], slip: &[D; 3]) -> D {
+    pub fn normal_force<D: Scalar>(&self, x: &[D; DIM]) -> D {
+        self.normal_force_heading(x, Heading::Law)
+    }
+
+    /// [`Sliding::normal_force`] with the friction directed as `heading` says.
+    #[inline(always)]
+    pub fn normal_force_heading<D: Scalar>(&self, x: &[D; DIM], heading: Heading) -> D {
+        let slip = self.slip_velocity(x);
+        self.normal_force_with(x, &self.friction_per_normal(&slip, heading))
+    }
+
+    /// [`Sliding::normal_force`] with the friction per unit of normal force `phi` computed
+    /// already.
+    #[inline(always)]
+    fn normal_force_with<D: Scalar>(&self, x: &[D; DIM], phi: &[D; 3]) -> D {
         let ball = &self.ball;
         let (gamma, omega, _) = parts(x);
         let com = constant::<D>(ball.com());
@@ -160,19 +219,27 @@ impl Sliding {
         let centripetal = cross(&cross(&gamma, &omega), &omega);
         let numerator =
             -dot(&com, &centripetal) - dot(&a, &cross(&moment, &omega)) + ball.gravity();
-        let denominator = dot(&a, &k) - dot(&a, &cross(&r, slip)) * self.mu + ball.m().recip();
+        let denominator = dot(&a, &k) - dot(&a, &cross(&r, phi)) + ball.m().recip();
         numerator / denominator
     }
 
-    /// The field `x' = X(x)` of the module's equations.
+    /// The field `x' = X(x)` of the module's equations, with the friction of the law at the
+    /// state ([`Heading::Law`]).
     #[inline(always)]
     pub fn field<D: Scalar>(&self, x: &[D; DIM]) -> [D; DIM] {
+        self.field_heading(x, Heading::Law)
+    }
+
+    /// [`Sliding::field`] with the friction directed as `heading` says.
+    #[inline(always)]
+    pub fn field_heading<D: Scalar>(&self, x: &[D; DIM], heading: Heading) -> [D; DIM] {
         let ball = &self.ball;
         let (gamma, omega, v) = parts(x);
         let slip = self.slip_velocity(x);
-        let normal = self.normal_force_with(x, &slip);
-        // The contact force P = -N (gamma + mu v_P): the normal force and the friction.
-        let force: [D; 3] = std::array::from_fn(|i| -normal * (gamma[i] + slip[i] * self.mu));
+        let phi = self.friction_per_normal(&slip, heading);
+        let normal = self.normal_force_with(x, &phi);
+        // The contact force P = -N (gamma + phi): the normal force and the friction.
+        let force: [D; 3] = std::array::from_fn(|i| -normal * (gamma[i] + phi[i]));
         let inertia = ball.inertia();
         let moment: [D; 3] = std::array::from_fn(|i| omega[i] * inertia[i]);
         let gyroscopic = cross(&moment, &omega);
@@ -180,7 +247,8 @@ impl Sliding {
         let gamma_dot = cross(&gamma, &omega);
         let transport = cross(&v, &omega);
         let per_mass = ball.m().recip();
-        let power = normal * dot(&slip, &slip) * (2.0 * self.mu);
+        // Twice the power of the friction, -2 (F, v_P) = 2 N (phi, v_P).
+        let power = normal * dot(&phi, &slip) * 2.0;
         [
             gamma_dot[0],
             gamma_dot[1],
@@ -263,7 +331,10 @@ impl Sliding {
         let x = [
             gamma[0], gamma[1], gamma[2], omega[0], omega[1], omega[2], v[0], v[1], v[2], 0.0,
         ];
-        let normal = self.normal_force(&x);
+        let normal = match self.friction {
+            Friction::Viscous => self.normal_force(&x),
+            Friction::Coulomb => super::coulomb::initial_normal_force(self, &x),
+        };
         if !(normal > 0.0) {
             return Err(RouthError::State(format!(
                 "the normal force N = {} at t = 0 is not positive: the ball would leave the \
@@ -274,8 +345,15 @@ impl Sliding {
         Ok(x)
     }
 
-    /// The quantities a user reads at the state `x`, time `t`.
+    /// The quantities a user reads at the state `x`, time `t` (the normal force of the law
+    /// at the state: [`Sliding::normal_force`]).
     pub fn observe(&self, t: f64, x: &[f64; DIM]) -> Observation {
+        self.observe_with(t, x, self.normal_force(x))
+    }
+
+    /// [`Sliding::observe`] with the normal force `normal` (of the phase a run is in:
+    /// [`super::coulomb`]).
+    pub fn observe_with(&self, t: f64, x: &[f64; DIM], normal: f64) -> Observation {
         let (gamma, omega, velocity) = parts(x);
         let slip = self.slip_velocity(x);
         Observation {
@@ -285,7 +363,7 @@ impl Sliding {
             velocity,
             height: self.height(x),
             slip_speed: dot(&slip, &slip).sqrt(),
-            normal_force: self.normal_force(x),
+            normal_force: normal,
             jellett: self.jellett(x),
             energy: self.energy(x),
             work: x[9],
@@ -304,8 +382,9 @@ impl OdeSystem<DIM> for Sliding {
         self.field(y)
     }
 
+    /// The viscous field; none under Coulomb's friction (not smooth where the slip stops).
     fn record(&self, _t: Var, y: &[Var; DIM]) -> Option<[Var; DIM]> {
-        Some(self.field(y))
+        (self.friction == Friction::Viscous).then(|| self.field(y))
     }
 
     fn units(&self, y0: &[f64; DIM]) -> RunUnits<DIM> {
@@ -325,7 +404,7 @@ impl OdeSystem<DIM> for Sliding {
 impl Sliding {
     /// The units of a motion from `y0` (R, m and the time of its spin or of its rolling speed
     /// over R, rounded to powers of two: [`Units::with_rate`], [`Units::binary`]).
-    fn problem_units(&self, y0: &[f64; DIM]) -> Units {
+    pub(super) fn problem_units(&self, y0: &[f64; DIM]) -> Units {
         let (_, omega, v) = parts(y0);
         let speed = dot(&v, &v).sqrt() / self.ball.radius();
         let rate = dot(&omega, &omega).sqrt().max(speed);
@@ -381,6 +460,12 @@ pub const OBSERVATION_NAMES: [&str; 17] = [
 ];
 
 impl Observation {
+    /// The state `x = (gamma, omega, v, W)` observed.
+    pub fn state(&self) -> [f64; DIM] {
+        let ([g1, g2, g3], [w1, w2, w3], [v1, v2, v3]) = (self.gamma, self.omega, self.velocity);
+        [g1, g2, g3, w1, w2, w3, v1, v2, v3, self.work]
+    }
+
     /// The values, in the order of [`OBSERVATION_NAMES`].
     pub fn values(&self) -> [f64; 17] {
         let [g1, g2, g3] = self.gamma;
@@ -445,8 +530,13 @@ pub struct SlidingSummary {
     pub rejected: usize,
     /// Evaluations of the field.
     pub rhs_evals: usize,
+    /// The friction law, `viscous` or `coulomb`.
+    pub friction: &'static str,
     /// The friction coefficient mu.
     pub mu: f64,
+    /// The switches between sliding and rolling, in time order (Coulomb's friction only:
+    /// [`super::coulomb`]).
+    pub transitions: Vec<Transition>,
     /// The initial state.
     pub initial_state: Observation,
     /// The state reached.
@@ -472,8 +562,8 @@ struct Tracker {
 }
 
 impl Tracker {
-    fn new(model: &Sliding, y0: &[f64; DIM]) -> Self {
-        let first = model.observe(0.0, y0);
+    /// Starts at `y0`, observed as `first`.
+    fn new(model: &Sliding, first: Observation, y0: &[f64; DIM]) -> Self {
         let units = model.problem_units(y0);
         let unit = |d: Dimension| move || units.of_dimension(d);
         let jellett = Drift::start(first.jellett, unit(Dimension::MOMENTUM_LENGTH));
@@ -495,8 +585,8 @@ impl Tracker {
         }
     }
 
-    fn observe(&mut self, y: &[f64; DIM]) {
-        let now = self.model.observe(0.0, y);
+    /// The state `y`, observed as `now`.
+    fn observe(&mut self, now: &Observation, y: &[f64; DIM]) {
         let b = &mut self.balance;
         if let Some(j) = self.jellett.as_mut() {
             j.observe(now.jellett);
@@ -519,17 +609,21 @@ impl Tracker {
     }
 }
 
+/// The callback of [`run`]'s samples: the observation at each sample time.
+pub type OnObservation<'a, E> = dyn FnMut(&Observation) -> std::result::Result<(), E> + 'a;
+
 /// Integrate the sliding ball from `y0` ([`Sliding::initial`]) with the method, tolerances,
 /// samples, span and step limit of `settings` (projection is refused: the sliding ball has
 /// no level set of integrals to project onto), through the one driver ([`drive`]), until
 /// `t_end` or until the normal force vanishes (an event located by the one locator: the
-/// ball would leave the plane). `on_sample(t, y)` receives the samples; the balances are
-/// tracked at every step end. A failure of the integrator is an error.
+/// ball would leave the plane); under Coulomb's friction, through its phases of sliding and
+/// rolling ([`super::coulomb`]). `on_sample` receives the observations at the samples; the
+/// balances are tracked at every step end. A failure of the integrator is an error.
 pub fn run<E: From<RouthError>>(
     model: &Sliding,
     y0: [f64; DIM],
     settings: &Settings,
-    on_sample: &mut OnSample<'_, E, DIM>,
+    on_sample: &mut OnObservation<'_, E>,
 ) -> std::result::Result<SlidingSummary, E> {
     if settings.project() {
         return Err(RouthError::Option {
@@ -544,28 +638,56 @@ pub fn run<E: From<RouthError>>(
     let opts = Options::new(settings.rtol(), settings.atol())
         .and_then(|opts| opts.with_max_steps(settings.max_steps()))
         .map_err(RouthError::from)?;
-    let method = crate::auto::resolve(
-        settings.method(),
-        settings.rtol().min(settings.atol()),
-        false,
-    );
-    let mut stepper =
-        stepper(method, model, 0.0, y0, settings.t_end(), &opts).map_err(RouthError::from)?;
+    let tol = settings.rtol().min(settings.atol());
     let times = settings.sample_times();
-    let leaves = |_: f64, y: &[f64; DIM]| model.normal_force(y);
-    let plan = Drive {
-        samples: &times,
-        project: None,
-        event: Some(&leaves),
+    let (method, ending) = match model.friction {
+        Friction::Viscous => {
+            let method = crate::auto::resolve(settings.method(), tol, false);
+            let mut tracker = Tracker::new(model, model.observe(0.0, &y0), &y0);
+            let mut stepper = stepper(method, model, 0.0, y0, settings.t_end(), &opts)
+                .map_err(RouthError::from)?;
+            let leaves = |_: f64, y: &[f64; DIM]| model.normal_force(y);
+            let plan = Drive {
+                samples: &times,
+                project: None,
+                event: Some(&leaves),
+            };
+            let outcome = drive(
+                stepper.as_mut(),
+                &plan,
+                &mut |t, y| on_sample(&model.observe(t, y)),
+                &mut |t, y, _| {
+                    tracker.observe(&model.observe(t, y), y);
+                    Ok(Control::Continue)
+                },
+            )?;
+            if let Stop::Failed(e) = &outcome.stop {
+                return Err(RouthError::from(e.clone()).into());
+            }
+            let last = model.observe(outcome.t, &outcome.y);
+            tracker.observe(&last, &outcome.y);
+            (method, (outcome, last, Vec::new(), tracker))
+        }
+        Friction::Coulomb => {
+            let method = super::coulomb::method(settings.method(), tol)?;
+            let first = super::coulomb::first_observation(model, &y0);
+            let mut tracker = Tracker::new(model, first, &y0);
+            let end = super::coulomb::integrate(
+                model,
+                y0,
+                method,
+                &opts,
+                settings.t_end(),
+                &times,
+                on_sample,
+                &mut |now, y| tracker.observe(now, y),
+            )?;
+            tracker.observe(&end.last, &end.outcome.y);
+            (method, (end.outcome, end.last, end.transitions, tracker))
+        }
     };
-    let mut tracker = Tracker::new(model, &y0);
-    let outcome = drive(stepper.as_mut(), &plan, on_sample, &mut |_, y, _| {
-        tracker.observe(y);
-        Ok(Control::Continue)
-    })?;
-    tracker.observe(&outcome.y);
+    let (outcome, last, transitions, tracker) = ending;
     let (status, message) = match &outcome.stop {
-        Stop::Reached => ("ok", format!("t_end = {} reached", outcome.t)),
         Stop::Event => (
             "event",
             format!(
@@ -574,7 +696,7 @@ pub fn run<E: From<RouthError>>(
             ),
         ),
         Stop::Stopped => ("ok", format!("stopped at t = {}", outcome.t)),
-        Stop::Failed(e) => return Err(RouthError::from(e.clone()).into()),
+        _ => ("ok", format!("t_end = {} reached", outcome.t)),
     };
     let stats = outcome.stats;
     Ok(SlidingSummary {
@@ -585,9 +707,11 @@ pub fn run<E: From<RouthError>>(
         steps: stats.steps,
         rejected: stats.rejected,
         rhs_evals: stats.rhs_evals,
+        friction: model.friction.name(),
         mu: model.mu,
+        transitions,
         initial_state: tracker.first,
-        final_state: model.observe(outcome.t, &outcome.y),
+        final_state: last,
         balance: tracker.balance,
         elapsed_s: start.elapsed().as_secs_f64(),
     })
@@ -727,7 +851,7 @@ mod tests {
                     Normalise::Reject,
                 )
                 .unwrap();
-            run::<RouthError>(&model, y0, &settings, &mut |_, _| Ok(())).unwrap()
+            run::<RouthError>(&model, y0, &settings, &mut |_| Ok(())).unwrap()
         };
         let s = end(10.0);
         assert_eq!(s.status, "event", "{}", s.message);

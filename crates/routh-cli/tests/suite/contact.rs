@@ -158,8 +158,13 @@ fn bad_contacts_are_refused() {
     refused(
         "friction.toml",
         "\"viscous\"",
-        "\"coulomb\"",
-        "unknown friction = \"coulomb\"",
+        "\"dry\"",
+        "unknown friction = \"dry\"; known: \"viscous\", \"coulomb\"",
+    );
+    let coulomb = tippe_top_with("coulomb.toml", |t| t.replace("\"viscous\"", "\"coulomb\""));
+    assert_exit_2(
+        &["simulate", "--case", coulomb.to_str().unwrap(), "--method", "taylor"],
+        "is not available with Coulomb's friction",
     );
     refused(
         "mu.toml",

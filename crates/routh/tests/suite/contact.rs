@@ -50,8 +50,8 @@ fn simulate(
 ) -> (SlidingSummary, Vec<[f64; DIM]>) {
     let settings = settings(t_end, method, samples);
     let mut states = Vec::new();
-    let summary = run::<routh::RouthError>(model, y0, &settings, &mut |_, y| {
-        states.push(*y);
+    let summary = run::<routh::RouthError>(model, y0, &settings, &mut |now| {
+        states.push(now.state());
         Ok(())
     })
     .unwrap();
