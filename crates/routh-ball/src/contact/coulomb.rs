@@ -37,11 +37,11 @@ use super::sliding::{Heading, Observation, Sliding, DIM};
 use crate::error::{Result, RouthError};
 use crate::integrate::taylor::Interpreted;
 use crate::integrate::{
-    drive, stepper, Control, Drive, IntegrateError, Method, OdeSystem, Options, Outcome,
-    RunUnits, Stats, Stop,
+    drive, stepper, Control, Drive, IntegrateError, Method, OdeSystem, Options, Outcome, RunUnits,
+    Stats, Stop,
 };
 use crate::scalar::{cross, dot};
-use crate::simulate::ReducedSystem;
+use crate::simulate::{ReducedSystem, Settings};
 use serde::Serialize;
 
 /// What `auto` runs under Coulomb's friction: Vern9 at every tolerance (the table of
@@ -79,7 +79,10 @@ pub struct Transition {
 enum Phase {
     /// Sliding, the slip in the direction `reference` (a unit vector, body frame); `from_rest`:
     /// the phase starts at zero slip.
-    Sliding { reference: [f64; 3], from_rest: bool },
+    Sliding {
+        reference: [f64; 3],
+        from_rest: bool,
+    },
     /// Rolling without slipping.
     Rolling,
 }
@@ -178,9 +181,7 @@ fn at_rest(model: &Sliding, x: &[f64; DIM]) -> bool {
 /// The rolling law's state `(gamma, M)` of the sliding state `x` (its slip ignored).
 fn rolling_state(model: &Sliding, x: &[f64; DIM]) -> [f64; 6] {
     let gamma = [x[0], x[1], x[2]];
-    let m = model
-        .ball()
-        .angular_momentum(&gamma, &[x[3], x[4], x[5]]);
+    let m = model.ball().angular_momentum(&gamma, &[x[3], x[4], x[5]]);
     [gamma[0], gamma[1], gamma[2], m[0], m[1], m[2]]
 }
 
@@ -243,19 +244,19 @@ pub(super) fn first_observation(model: &Sliding, x0: &[f64; DIM]) -> Observation
 
 /// Integrates the ball `model` under Coulomb's friction from `x0` at t = 0 to `t_end` with
 /// `method` (of [`method`]) and `opts` (its step limit for the whole run, every phase's steps
-/// counted), through its phases (the module's rules); the samples `samples` (checked by the
-/// driver) handed to `on_sample`, every step end to `on_step`. A failure of the integrator is
+/// counted), through its phases (the module's rules); the samples of `settings` (checked by
+/// the driver) handed to `on_sample`, every step end to `on_step`. A failure of the integrator is
 /// an error.
 pub(super) fn integrate<E: From<RouthError>>(
     model: &Sliding,
     x0: [f64; DIM],
     method: Method,
     opts: &Options,
-    t_end: f64,
-    samples: &[f64],
+    settings: &Settings,
     on_sample: &mut dyn FnMut(&Observation) -> std::result::Result<(), E>,
     on_step: &mut dyn FnMut(&Observation, &[f64; DIM]),
 ) -> std::result::Result<Ending, E> {
+    let (t_end, samples) = (settings.t_end(), settings.sample_times());
     let units = model.problem_units(&x0);
     // The events' units: speed R / T and force m R / T^2.
     let speed = model.ball().radius() / units.time();
@@ -322,16 +323,20 @@ pub(super) fn integrate<E: From<RouthError>>(
                 )?;
                 let last = system.observe(outcome.t, &outcome.y);
                 let end = sliding_part(&outcome.y);
-                let next = if outcome.stop != Stop::Event {
-                    None
-                } else if last.normal_force / force <= last.slip_speed / speed {
+                let next = if outcome.stop != Stop::Event
+                    || last.normal_force / force <= last.slip_speed / speed
+                {
                     None
                 } else if last.slip_speed <= 1e-3 * slips[0] || at_rest(model, &end) {
                     // The slip stopped: the ball rolls from there (its slip set to zero, a
                     // change at round-off), or turns.
                     let y = sliding_state(model, &rolling_state(model, &end), end[9]);
                     let (next, _) = phase_at_rest(model, &y);
-                    let kind = if next == Phase::Rolling { "stick" } else { "turn" };
+                    let kind = if next == Phase::Rolling {
+                        "stick"
+                    } else {
+                        "turn"
+                    };
                     transitions.push(Transition { t: outcome.t, kind });
                     Some((next, y))
                 } else {
@@ -491,19 +496,37 @@ mod tests {
         let ball = Ball::new(1.0, 1.0, [0.4; 3], [0.0; 3], 9.81).unwrap();
         let model = Sliding::with_friction(&ball, Friction::Coulomb, 0.2).unwrap();
         let y0 = model
-            .initial([0.0, 0.0, -1.0], [0.0; 3], [1.0, 0.0, 0.0], Normalise::Reject)
+            .initial(
+                [0.0, 0.0, -1.0],
+                [0.0; 3],
+                [1.0, 0.0, 0.0],
+                Normalise::Reject,
+            )
             .unwrap();
         let (s, seen) = simulate(&model, y0, 1.0, 1e-12);
         let stop = 2.0 / (7.0 * 0.2 * 9.81);
         assert_eq!(s.transitions.len(), 1, "{:?}", s.transitions);
         assert_eq!(s.transitions[0].kind, "stick");
-        assert!((s.transitions[0].t - stop).abs() <= 1e-12 * stop, "{:?}", s.transitions);
+        assert!(
+            (s.transitions[0].t - stop).abs() <= 1e-12 * stop,
+            "{:?}",
+            s.transitions
+        );
         let hollow = 1.0 / (2.0 * 0.2 * 9.81);
         assert!((hollow - stop).abs() > 0.5 * stop, "control");
         let v = s.final_state.velocity;
         assert!((dot(&v, &v).sqrt() - 5.0 / 7.0).abs() <= 1e-10);
-        assert!((s.final_state.work - 2.0 / 7.0).abs() <= 1e-10, "{}", s.final_state.work);
-        assert!(s.final_state.slip_speed <= 1e-13 && seen.len() >= 200, "{} {}", s.final_state.slip_speed, seen.len());
+        assert!(
+            (s.final_state.work - 2.0 / 7.0).abs() <= 1e-10,
+            "{}",
+            s.final_state.work
+        );
+        assert!(
+            s.final_state.slip_speed <= 1e-13 && seen.len() >= 200,
+            "{} {}",
+            s.final_state.slip_speed,
+            seen.len()
+        );
         assert!(seen.iter().all(|o| o.t <= stop || o.slip_speed <= 1e-13));
     }
 
@@ -521,13 +544,27 @@ mod tests {
             let model = Sliding::with_friction(&body, Friction::Coulomb, mu).unwrap();
             let tilt = 0.1_f64;
             let y0 = model
-                .initial([tilt.sin(), 0.0, -tilt.cos()], [0.0, 0.0, 20.0], [0.0; 3], Normalise::Reject)
+                .initial(
+                    [tilt.sin(), 0.0, -tilt.cos()],
+                    [0.0, 0.0, 20.0],
+                    [0.0; 3],
+                    Normalise::Reject,
+                )
                 .unwrap();
             let (s, seen) = simulate(&model, y0, 20.0, 1e-10);
-            assert_eq!(s.transitions.iter().map(|t| t.kind).collect::<Vec<_>>(), ["stick"]);
+            assert_eq!(
+                s.transitions.iter().map(|t| t.kind).collect::<Vec<_>>(),
+                ["stick"]
+            );
             let b = s.balance;
-            assert!(b.jellett.unwrap() <= 1e-9 && b.energy_balance <= 1e-9, "{b:?}");
-            assert!(b.energy_increase <= 1e-12 && b.min_normal_force > 0.0, "{b:?}");
+            assert!(
+                b.jellett.unwrap() <= 1e-9 && b.energy_balance <= 1e-9,
+                "{b:?}"
+            );
+            assert!(
+                b.energy_increase <= 1e-12 && b.min_normal_force > 0.0,
+                "{b:?}"
+            );
             assert!(seen.iter().all(|o| (o.height - 0.7).abs() <= 0.01), "{mu}");
         }
     }

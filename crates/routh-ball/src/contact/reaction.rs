@@ -119,9 +119,13 @@ mod tests {
             let torque = cross(&r, &reaction.force);
             let gyro = cross(&omega, &moment);
             let lhs: [f64; 3] = std::array::from_fn(|i| inertia[i] * rate[i] + gyro[i]);
-            let size = lhs.iter().map(|c| c.abs()).sum::<f64>() + torque.iter().map(|c| c.abs()).sum::<f64>();
+            let size = lhs.iter().map(|c| c.abs()).sum::<f64>()
+                + torque.iter().map(|c| c.abs()).sum::<f64>();
             for i in 0..3 {
-                assert!((lhs[i] - torque[i]).abs() <= 1e-12 * size, "{lhs:?} vs {torque:?}");
+                assert!(
+                    (lhs[i] - torque[i]).abs() <= 1e-12 * size,
+                    "{lhs:?} vs {torque:?}"
+                );
             }
             let normal_only: [f64; 3] = std::array::from_fn(|i| -reaction.normal * x[i]);
             let off = cross(&r, &normal_only);

@@ -72,9 +72,7 @@ use super::{Contact, Friction};
 use crate::ball::{AsBall, Ball};
 use crate::error::{Number, Result, RouthError};
 use crate::integrate::taylor::Var;
-use crate::integrate::{
-    drive, stepper, Control, Drive, OdeSystem, Options, RunUnits, Stop,
-};
+use crate::integrate::{drive, stepper, Control, Drive, OdeSystem, Options, RunUnits, Stop};
 use crate::scalar::{cross, dot, lift, Scalar};
 use crate::simulate::{Drift, Settings};
 use crate::state::{Normalise, State, UNIT_TOLERANCE};
@@ -677,8 +675,7 @@ pub fn run<E: From<RouthError>>(
                 y0,
                 method,
                 &opts,
-                settings.t_end(),
-                &times,
+                settings,
                 on_sample,
                 &mut |now, y| tracker.observe(now, y),
             )?;

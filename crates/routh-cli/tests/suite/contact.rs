@@ -163,7 +163,13 @@ fn bad_contacts_are_refused() {
     );
     let coulomb = tippe_top_with("coulomb.toml", |t| t.replace("\"viscous\"", "\"coulomb\""));
     assert_exit_2(
-        &["simulate", "--case", coulomb.to_str().unwrap(), "--method", "taylor"],
+        &[
+            "simulate",
+            "--case",
+            coulomb.to_str().unwrap(),
+            "--method",
+            "taylor",
+        ],
         "is not available with Coulomb's friction",
     );
     refused(
