@@ -307,62 +307,26 @@ impl Case {
         let ball = values.ball(source)?;
         let initial = values.state(&ball, source)?;
         let integration = values.integration.settings()?;
-        let err = |message: String| FileError::Case {
-            file: source.to_string(),
-            message,
-        };
-        let contact = match document.get("contact") {
-            None => Contact::Rolling,
-            Some(_) => table::<ContactTable>(&document, "contact")
-                .and_then(|t| t.contact())
-                .map_err(err)?,
-        };
-        let velocity = values.initial.velocity;
-        if velocity.is_some() && !matches!(contact, Contact::Sliding { .. }) {
-            return Err(err(format!(
-                "in [initial]: `velocity` belongs to a sliding contact ([contact] law = \
-                 \"sliding\"); a rolling ball's velocity follows from omega (law = \"{}\")",
-                contact.law()
-            ))
+        if values.contact != Contact::Rolling && laws == Laws::Rolling {
+            return Err(FileError::Case {
+                file: source.to_string(),
+                message: format!(
+                    "[contact] law = \"{}\" is integrated by `routh simulate` (every law) and \
+                     `routh sweep` (the rolling and sliding laws) only (so far); this command \
+                     integrates the rolling law",
+                    values.contact.law()
+                ),
+            }
             .into());
         }
-        if contact != Contact::Rolling && laws == Laws::Rolling {
-            return Err(err(format!(
-                "[contact] law = \"{}\" is integrated by `routh simulate` only (so far); this \
-                 command integrates the rolling law",
-                contact.law()
-            ))
-            .into());
-        }
-        let rubber = match contact {
-            Contact::Rubber => {
-                let model = Rubber::new(&ball);
-                let x0 = model.start(&initial)?;
-                Some(RubberStart { model, x0 })
-            }
-            _ => None,
-        };
-        let sliding = match contact {
-            Contact::Rolling | Contact::Rubber => None,
-            Contact::Sliding { friction, mu } => {
-                let model = Sliding::with_friction(&ball, friction, mu)?;
-                let y0 = model.initial(
-                    initial.gamma(),
-                    initial.omega(&ball),
-                    velocity.unwrap_or([0.0; 3]),
-                    Normalise::Reject,
-                )?;
-                Some(SlidingStart { model, y0 })
-            }
-        };
         Ok(Case {
             source: source.to_string(),
+            rubber: values.rubber(&ball, &initial)?,
+            sliding: values.sliding(&ball, &initial)?,
             ball,
             initial,
             integration,
             document,
-            sliding,
-            rubber,
         })
     }
 
@@ -443,6 +407,7 @@ pub struct CaseValues {
     body: BodyTable,
     initial: InitialTable,
     integration: Integration,
+    contact: Contact,
 }
 
 impl CaseValues {
@@ -454,14 +419,78 @@ impl CaseValues {
             message,
         };
         reject_unknown_keys(document).map_err(err)?;
+        let initial: InitialTable = table(document, "initial").map_err(err)?;
+        let contact = match document.get("contact") {
+            None => Contact::Rolling,
+            Some(_) => table::<ContactTable>(document, "contact")
+                .and_then(|t| t.contact())
+                .map_err(err)?,
+        };
+        if initial.velocity.is_some() && !matches!(contact, Contact::Sliding { .. }) {
+            return Err(err(format!(
+                "in [initial]: `velocity` belongs to a sliding contact ([contact] law = \
+                 \"sliding\"); a rolling ball's velocity follows from omega (law = \"{}\")",
+                contact.law()
+            ))
+            .into());
+        }
         Ok(CaseValues {
             body: table(document, "body").map_err(err)?,
-            initial: table(document, "initial").map_err(err)?,
+            initial,
             integration: match document.get("integration") {
                 None => Integration::default(),
                 Some(_) => table(document, "integration").map_err(err)?,
             },
+            contact,
         })
+    }
+
+    /// The contact law of `[contact]` (rolling without it).
+    pub fn contact(&self) -> Contact {
+        self.contact
+    }
+
+    /// Set the coefficient `mu` of a sliding contact to `value`, checked as in `[contact]`
+    /// ([`Contact::sliding`]); refused for the other laws, which have no friction.
+    pub fn set_mu(&mut self, value: f64) -> std::result::Result<(), String> {
+        match self.contact {
+            Contact::Sliding { friction, .. } => {
+                self.contact = Contact::sliding(friction, value).map_err(|e| e.to_string())?;
+                Ok(())
+            }
+            other => Err(format!(
+                "needs [contact] law = \"sliding\" (law = \"{}\" has no friction)",
+                other.law()
+            )),
+        }
+    }
+
+    /// The rubber ball `ball` and its state on the constraint from `initial`, with `[contact]
+    /// law = "rubber"` ([`Rubber::start`] refuses a twisting state); `None` for the other laws.
+    pub fn rubber(&self, ball: &Ball, initial: &State) -> Result<Option<RubberStart>> {
+        if self.contact != Contact::Rubber {
+            return Ok(None);
+        }
+        let model = Rubber::new(ball);
+        let x0 = model.start(initial)?;
+        Ok(Some(RubberStart { model, x0 }))
+    }
+
+    /// The sliding ball `ball` and its state from `initial` and `[initial] velocity` (the
+    /// centre of mass at rest without it), with `[contact] law = "sliding"`, validated
+    /// ([`Sliding::initial`]); `None` for the other laws.
+    pub fn sliding(&self, ball: &Ball, initial: &State) -> Result<Option<SlidingStart>> {
+        let Contact::Sliding { friction, mu } = self.contact else {
+            return Ok(None);
+        };
+        let model = Sliding::with_friction(ball, friction, mu)?;
+        let y0 = model.initial(
+            initial.gamma(),
+            initial.omega(ball),
+            self.initial.velocity.unwrap_or([0.0; 3]),
+            Normalise::Reject,
+        )?;
+        Ok(Some(SlidingStart { model, y0 }))
     }
 
     /// Set the key `key` of `[body]` (`m`, `R`, `a`, `I1`, `I2`, `I3` or `G`) to `value`.

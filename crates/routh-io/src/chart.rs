@@ -145,6 +145,7 @@ impl ChartAxis {
             Some(Quantity::Omega(i)) => format!("initial omega{}", i + 1),
             Some(Quantity::Gamma(i)) => format!("initial gamma{}", i + 1),
             Some(Quantity::Body(key)) => format!("[body] {key}"),
+            Some(Quantity::Mu) => "[contact] mu".to_string(),
             None => return self.key.clone(),
         };
         format!("{} ({meaning})", self.key)

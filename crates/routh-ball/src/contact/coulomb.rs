@@ -569,6 +569,136 @@ mod tests {
         }
     }
 
+    /// The friction that rolling needs per unit of normal force, `|F| / N`, at `y = (gamma, M)`.
+    fn needed_ratio(body: &Body, y: &[f64; 6]) -> f64 {
+        let reaction = Reaction::of(body, y);
+        reaction.friction_size() / reaction.normal
+    }
+
+    /// The rolling state at `t` from `y0` by the paper's system alone (Vern9 at 1e-13, no
+    /// switch): a second integration, independent of the phases of [`integrate`].
+    fn rolled(body: &Body, y0: [f64; 6], t: f64) -> [f64; 6] {
+        let settings = Settings::builder()
+            .method(Method::Vern9)
+            .t_end(t)
+            .tolerances(1e-13, 1e-13)
+            .samples(0)
+            .build()
+            .unwrap();
+        crate::simulate::integrate_observed::<_, RouthError, 6>(
+            body,
+            &ReducedSystem(body),
+            y0,
+            &settings,
+            None,
+            &mut |_, _| Ok(()),
+            &mut |_| {},
+        )
+        .unwrap()
+        .y
+    }
+
+    /// The body `(m, R, a, I1, I3, G)` in other units: masses times `mass`, lengths times
+    /// `length`, times times `time` (G in length / time^2).
+    fn in_units(b: [f64; 6], mass: f64, length: f64, time: f64) -> Body {
+        let inertia = mass * length * length;
+        Body::new(
+            b[0] * mass,
+            b[1] * length,
+            b[2] * length,
+            b[3] * inertia,
+            b[3] * inertia,
+            b[4] * inertia,
+            b[5] * length / (time * time),
+        )
+        .unwrap()
+    }
+
+    /// The slip's onset: the tippe top (a = 0.3, I1 = 0.37, I3 = 0.4) rolling from tilt 0.3
+    /// with omega = (0, 2, 1) needs a friction `|F| / N` that grows from 0.061 to 0.20 within
+    /// its first 0.3 time units; with mu halfway
+    /// between the ratio at t = 0 and its largest value over the first unit of time, the run
+    /// starts rolling and its first switch is a `slip` where the ratio reaches mu. That time is
+    /// found again from the paper's system alone (a second integration, Vern9 at 1e-13, and
+    /// bisection on the ratio to 1e-14 of t): the two agree to 1e-9 of t (the states of two
+    /// integrations at 1e-12 and 1e-13 differ by about 1e-11, the ratio's slope is of order
+    /// one). Past the onset the ball slides with Jellett's integral and H1 + W kept (1e-9),
+    /// the energy rising between step ends by no more than the integration's error while it
+    /// rolls (1e-10 of H1: a hundred times the tolerance, either sign, per step).
+    /// The same run in other units (masses x 1e12, lengths x 1e-2, times x 1e-3) has the same
+    /// switches, of the same kinds, at the same times in its unit of time (1e-9 of t), and the
+    /// same relative balances: every threshold of the phases is relative.
+    #[test]
+    fn the_slip_starts_where_rolling_needs_more_than_mu_n_in_any_units() {
+        let b = [1.0, 1.0, 0.3, 0.37, 0.4, 9.81];
+        let body = in_units(b, 1.0, 1.0, 1.0);
+        let (tilt, omega) = (0.3_f64, [0.0, 2.0, 1.0]);
+        let gamma = [tilt.sin(), 0.0, -tilt.cos()];
+        let y0 = rolling_of(&body, &gamma, omega);
+        let times: Vec<f64> = (0..=200).map(|k| k as f64 / 200.0).collect();
+        let mut state = y0;
+        let mut ratios = vec![needed_ratio(&body, &y0)];
+        for pair in times.windows(2) {
+            let step = rolled(&body, state, pair[1] - pair[0]);
+            state = step;
+            ratios.push(needed_ratio(&body, &state));
+        }
+        let largest = ratios.iter().cloned().fold(0.0, f64::max);
+        assert!(largest > 1.5 * ratios[0], "{ratios:?}");
+        let mu = 0.5 * (ratios[0] + largest);
+        let above = ratios.iter().position(|&r| r > mu).unwrap();
+        let (mut lo, mut hi) = (times[above - 1], times[above]);
+        while hi - lo > 1e-14 * hi {
+            let mid = 0.5 * (lo + hi);
+            if needed_ratio(&body, &rolled(&body, y0, mid)) > mu {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        let onset = 0.5 * (lo + hi);
+        let mut runs = Vec::new();
+        for (mass, length, time) in [(1.0, 1.0, 1.0), (1e12, 1e-2, 1e-3)] {
+            let body = in_units(b, mass, length, time);
+            let model = Sliding::with_friction(&body, Friction::Coulomb, mu).unwrap();
+            let x0 = sliding_state(
+                &model,
+                &rolling_of(&body, &gamma, omega.map(|w| w / time)),
+                0.0,
+            );
+            let (s, _) = simulate(&model, x0, 2.0 * time, 1e-12);
+            runs.push((s, time));
+        }
+        let (base, _) = &runs[0];
+        assert_eq!(base.transitions[0].kind, "slip", "{:?}", base.transitions);
+        assert!(
+            (base.transitions[0].t - onset).abs() <= 1e-9 * onset,
+            "{} {onset}",
+            base.transitions[0].t
+        );
+        for (s, time) in &runs {
+            let bal = s.balance;
+            assert!(
+                bal.jellett.unwrap() <= 1e-9 && bal.energy_balance <= 1e-9,
+                "{bal:?}"
+            );
+            assert!(bal.energy_increase <= 1e-10, "{bal:?}");
+            assert_eq!(
+                s.transitions.iter().map(|t| t.kind).collect::<Vec<_>>(),
+                base.transitions.iter().map(|t| t.kind).collect::<Vec<_>>()
+            );
+            for (t, t0) in s.transitions.iter().zip(&base.transitions) {
+                assert!((t.t / time - t0.t).abs() <= 1e-9 * t0.t, "{t:?} {t0:?}");
+            }
+        }
+    }
+
+    /// The rolling law's `(gamma, M)` of the ball at `gamma` turning at `omega`.
+    fn rolling_of(body: &Body, gamma: &[f64; 3], omega: [f64; 3]) -> [f64; 6] {
+        let m = crate::ball::AsBall::ball(body).angular_momentum(gamma, &omega);
+        [gamma[0], gamma[1], gamma[2], m[0], m[1], m[2]]
+    }
+
     /// The Taylor method and RK4 are refused under Coulomb's friction, with the reason; auto
     /// runs Vern9.
     #[test]

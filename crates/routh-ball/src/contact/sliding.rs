@@ -72,7 +72,9 @@ use super::{Contact, Friction};
 use crate::ball::{AsBall, Ball};
 use crate::error::{Number, Result, RouthError};
 use crate::integrate::taylor::Var;
-use crate::integrate::{drive, stepper, Control, Drive, OdeSystem, Options, RunUnits, Stop};
+use crate::integrate::{
+    drive, stepper, Control, Drive, Method, OdeSystem, Options, RunUnits, Stop,
+};
 use crate::scalar::{cross, dot, lift, Scalar};
 use crate::simulate::{Drift, Settings};
 use crate::state::{Normalise, State, UNIT_TOLERANCE};
@@ -152,6 +154,16 @@ impl Sliding {
     /// The friction coefficient mu (`F = -mu N v_P` viscous, `|F| = mu N` Coulomb).
     pub fn mu(&self) -> f64 {
         self.mu
+    }
+
+    /// The method that runs `asked` at the tolerance `tol` under this friction: `auto` as one
+    /// run of the rolling law picks it ([`crate::auto::resolve`]) for the viscous friction, by
+    /// [`super::coulomb::method`] for Coulomb's (which refuses the Taylor method and RK4).
+    pub fn method(&self, asked: Method, tol: f64) -> Result<Method> {
+        match self.friction {
+            Friction::Viscous => Ok(crate::auto::resolve(asked, tol, false)),
+            Friction::Coulomb => super::coulomb::method(asked, tol),
+        }
     }
 
     /// Whether Jellett's integral [`Sliding::jellett`] is an integral: the centre of mass on
@@ -640,7 +652,7 @@ pub fn run<E: From<RouthError>>(
     let times = settings.sample_times();
     let (method, ending) = match model.friction {
         Friction::Viscous => {
-            let method = crate::auto::resolve(settings.method(), tol, false);
+            let method = model.method(settings.method(), tol)?;
             let mut tracker = Tracker::new(model, model.observe(0.0, &y0), &y0);
             let mut stepper = stepper(method, model, 0.0, y0, settings.t_end(), &opts)
                 .map_err(RouthError::from)?;
@@ -667,7 +679,7 @@ pub fn run<E: From<RouthError>>(
             (method, (outcome, last, Vec::new(), tracker))
         }
         Friction::Coulomb => {
-            let method = super::coulomb::method(settings.method(), tol)?;
+            let method = model.method(settings.method(), tol)?;
             let first = super::coulomb::first_observation(model, &y0);
             let mut tracker = Tracker::new(model, first, &y0);
             let end = super::coulomb::integrate(

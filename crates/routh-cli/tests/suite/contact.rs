@@ -199,7 +199,7 @@ fn bad_contacts_are_refused() {
     );
     assert_exit_2(
         &["steady", "--case", "cases/tippe_top.toml"],
-        "is integrated by `routh simulate` only",
+        "is integrated by `routh simulate` (every law) and `routh sweep`",
     );
     assert_exit_2(
         &["simulate", "--case", "cases/tippe_top.toml", "--full"],
@@ -282,7 +282,7 @@ fn bad_rubber_cases_are_refused() {
     for command in ["exact", "steady", "sweep", "lyapunov"] {
         assert_exit_2(
             &[command, "--case", "cases/rubber.toml"],
-            "[contact] law = \"rubber\" is integrated by `routh simulate` only",
+            "[contact] law = \"rubber\" is integrated by `routh simulate`",
         );
     }
     assert_exit_2(
@@ -292,5 +292,80 @@ fn bad_rubber_cases_are_refused() {
     assert_exit_2(
         &["simulate", "--case", "cases/rubber.toml", "--project"],
         "is not available for the rubber ball",
+    );
+}
+
+/// `routh sweep` of the tippe top over `contact.mu` and the spin (issue 35 item 5): the CSV
+/// has the contact's columns (`transitions` ... `work_final`) and the final state's gamma
+/// (its `final_M` empty: the sliding state has no M), every run ends `ok`, the spun top with
+/// friction turns upside down (`tilt_final` > 3) and the frictionless one does not (< 0.3);
+/// `--json` gives the same rows; the rolling law's columns are refused with exit code 2.
+#[test]
+fn a_sweep_of_the_sliding_top_over_mu() {
+    let case = tippe_top_with("sweep.toml", |text| {
+        text + "\n[sweep]\n\"contact.mu\" = { values = [0.0, 0.3] }\nspin = { values = [20.0] }\n"
+    });
+    let dir = case.parent().unwrap().to_path_buf();
+    let csv = dir.join("sweep.csv");
+    let out = routh(&[
+        "sweep",
+        "--case",
+        case.to_str().unwrap(),
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    for name in [
+        "contact.mu",
+        "spin",
+        "final_gamma3",
+        "transitions",
+        "tilt_final",
+        "work_final",
+    ] {
+        assert!(header.contains(&name), "{name}: {header:?}");
+    }
+    assert!(!header.contains(&"H1_drift"), "{header:?}");
+    let column =
+        |row: &[&str], name: &str| row[header.iter().position(|h| *h == name).unwrap()].to_string();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2);
+    for row in &rows {
+        assert_eq!(column(row, "status"), "ok");
+        assert_eq!(column(row, "final_M1"), "");
+        let mu: f64 = column(row, "contact.mu").parse().unwrap();
+        let tilt: f64 = column(row, "tilt_final").parse().unwrap();
+        assert!(
+            if mu > 0.0 { tilt > 3.0 } else { tilt < 0.3 },
+            "{mu}: {tilt}"
+        );
+    }
+    let json = json_of(&routh(&[
+        "sweep",
+        "--case",
+        case.to_str().unwrap(),
+        "--json",
+    ]));
+    let first = &json["rows"][1];
+    assert_eq!(
+        first["tilt_final"].as_f64().unwrap(),
+        column(&rows[1], "tilt_final").parse::<f64>().unwrap()
+    );
+    assert_exit_2(
+        &[
+            "sweep",
+            "--case",
+            case.to_str().unwrap(),
+            "--columns",
+            "integrals",
+        ],
+        "is not one of a sweep of law = \"sliding\"",
     );
 }

@@ -13,11 +13,15 @@
 //! | `quadrature` | `period_quadrature precession_quadrature` | the quadrature of `routh exact` of every run (Routh sphere only) |
 //! | `nutation` | `events`, `quadrature` and their differences `period_difference precession_difference` | both |
 //! | `user_events` | per user event `k` (`[sweep] events`, `--events`): `event{k}_count event{k}_first_t` | the planes' values at every step, a located crossing per crossing |
-//! | `all` | every column (the table of a sweep before `--columns`) | all of the above |
+//! | `contact` | a sliding contact's run ([`CONTACT_NAMES`]): `transitions`, `height_initial height_final height_min height_max tilt_final slip_speed_final normal_force_min jellett_initial jellett_drift energy_balance energy_increase work_final` | nothing: the run's balances |
+//! | `all` | every column of the sweep's contact law (the table of a sweep before `--columns`) | all of the above |
 //!
-//! The default, [`DEFAULT_GROUPS`], is `final`, `integrals` and `user_events`: the cheap
-//! columns, and the user's events when they are given (without events the group has no
-//! column). A column can also be named alone; the table keeps the columns' order whatever
+//! A sweep of the rolling law (the paper's system) has every group but `contact`; a sweep of
+//! `[contact] law = "sliding"` has `final` (its `final_M` null: the sliding state has no M)
+//! and `contact`, and refuses the others ([`Columns::of_law`]). The default, [`DEFAULT_GROUPS`],
+//! is `final`, `integrals` and `user_events` for the rolling law: the cheap columns, and the
+//! user's events when they are given (without events the group has no column); `final` and
+//! `contact` for the sliding law. A column can also be named alone; the table keeps the columns' order whatever
 //! the order asked, the user events' columns last, in the order of the events.
 
 use super::spec::{refuse, texts, Refusal};
@@ -41,10 +45,13 @@ pub enum Part {
     Difference,
     /// The crossings of the user's events ([`super::crossings`]).
     UserEvents,
+    /// The balances of a sliding run ([`super::contact`]).
+    Contact,
 }
 
-/// The groups of columns that can be asked for by name, with their parts.
-pub const GROUPS: [(&str, &[Part]); 7] = [
+/// The groups of columns that can be asked for by name, with their parts (`all`: those of
+/// the rolling law; [`Columns::of_law`] gives a sliding sweep's).
+pub const GROUPS: [(&str, &[Part]); 8] = [
     ("final", &[Part::Final]),
     ("integrals", &[Part::Integrals]),
     ("events", &[Part::Events]),
@@ -54,6 +61,7 @@ pub const GROUPS: [(&str, &[Part]); 7] = [
         &[Part::Events, Part::Quadrature, Part::Difference],
     ),
     ("user_events", &[Part::UserEvents]),
+    ("contact", &[Part::Contact]),
     (
         "all",
         &[
@@ -71,6 +79,30 @@ pub const GROUPS: [(&str, &[Part]); 7] = [
 /// drift, and the user's events when there are (before `--columns`, a table held every
 /// column: ask for `all`).
 pub const DEFAULT_GROUPS: [&str; 3] = ["final", "integrals", "user_events"];
+
+/// The columns of a sliding run ([`Part::Contact`]), in the table's order: the switches
+/// between sliding and rolling (Coulomb's friction; 0 for the viscous), the height of the
+/// centre of mass at the start, the end and its extremes, the tilt at the end (the angle
+/// from the downward vertical to the line from the geometric centre to the centre of mass:
+/// 0 in the low position, pi turned upside down; null for a centre of mass at the centre),
+/// the slip speed at the end, the least normal force, Jellett's integral at the start and
+/// its drift (null where it is not an integral), the energy balance and its largest
+/// increase, and the friction's work (the balances of `routh simulate`'s summary).
+pub const CONTACT_NAMES: [&str; 13] = [
+    "transitions",
+    "height_initial",
+    "height_final",
+    "height_min",
+    "height_max",
+    "tilt_final",
+    "slip_speed_final",
+    "normal_force_min",
+    "jellett_initial",
+    "jellett_drift",
+    "energy_balance",
+    "energy_increase",
+    "work_final",
+];
 
 /// The most user events of a sweep (each has two columns, a bit each in [`Columns`]).
 pub const MAX_EVENTS: usize = 32;
@@ -156,6 +188,14 @@ pub fn catalogue() -> Vec<Column> {
     ] {
         cols.push(column(name, Kind::Float, part));
     }
+    for name in CONTACT_NAMES {
+        let kind = if name == "transitions" {
+            Kind::Int
+        } else {
+            Kind::Float
+        };
+        cols.push(column(name, kind, Part::Contact));
+    }
     cols
 }
 
@@ -170,6 +210,10 @@ pub struct Columns {
     parts: u8,
     /// Every user event's columns were asked for (`user_events`, `all`, the default).
     every_event: bool,
+    /// `all` was asked for: every column of the sweep's law ([`Columns::of_law`]).
+    every: bool,
+    /// Nothing was asked for: the default of the sweep's law ([`Columns::of_law`]).
+    default: bool,
     /// The user events' columns named one by one.
     named_events: u64,
     /// The user events' columns of the table, once the sweep's events are known.
@@ -208,6 +252,8 @@ impl Columns {
             chosen: of_parts(&[Part::Run]),
             parts: 0,
             every_event: false,
+            every: false,
+            default: false,
             named_events: 0,
             events: 0,
         };
@@ -216,6 +262,7 @@ impl Columns {
             if let Some((_, parts)) = GROUPS.iter().find(|g| g.0 == name) {
                 columns.chosen |= of_parts(parts);
                 columns.every_event |= parts.contains(&Part::UserEvents);
+                columns.every |= name == "all";
             } else if let Some(i) = all.iter().position(|c| c.name == name) {
                 columns.chosen |= 1 << i;
             } else if let Some((k, which)) = event_column(name) {
@@ -226,9 +273,66 @@ impl Columns {
                 });
             }
         }
-        columns.parts = columns
-            .select(all)
-            .fold(0, |bits, c| bits | 1 << c.part as u8);
+        columns.parts = columns.parts_of_chosen();
+        Ok(columns)
+    }
+
+    /// The parts of the chosen columns (bit `part as u8`).
+    fn parts_of_chosen(&self) -> u8 {
+        self.select(catalogue())
+            .fold(0, |bits, c| bits | 1 << c.part as u8)
+    }
+
+    /// These columns in a sweep of the rolling law (`sliding = false`), or of the sliding
+    /// contact: there the default is `final` and `contact`, `all` is the run's, the final
+    /// state's and the contact's columns, and a column of the rolling law alone (integrals,
+    /// events, quadrature, user events) is refused, as the `contact` columns are in a sweep of
+    /// the rolling law; the error names the column.
+    pub fn of_law(self, sliding: bool) -> Result<Self, String> {
+        let rolling_only = [
+            Part::Integrals,
+            Part::Events,
+            Part::Quadrature,
+            Part::Difference,
+            Part::UserEvents,
+        ];
+        let mut columns = match (sliding, self.default, self.every) {
+            (true, true, _) => Self::parse(["final", "contact"]).expect("groups"),
+            (true, false, true) => Self::parse(["final", "contact"]).expect("groups"),
+            _ => self,
+        };
+        let (refused, law): (&[Part], &str) = if sliding {
+            columns.every_event = false;
+            (&rolling_only, "law = \"sliding\"")
+        } else {
+            (&[Part::Contact], "the rolling law")
+        };
+        let named = catalogue()
+            .into_iter()
+            .enumerate()
+            .find(|(i, c)| columns.chosen >> i & 1 == 1 && refused.contains(&c.part));
+        if let Some((_, column)) = named {
+            return Err(format!(
+                "column `{}` is not one of a sweep of {law} (its groups: {})",
+                column.name,
+                if sliding {
+                    "final, contact"
+                } else {
+                    "final, integrals, events, quadrature, nutation, user_events"
+                }
+            ));
+        }
+        if sliding && columns.named_events != 0 {
+            let bit = columns.named_events.trailing_zeros() as usize;
+            return Err(format!(
+                "column `{}` is not one of a sweep of {law} (it has no user events)",
+                event_columns(bit / 2)[bit % 2].0
+            ));
+        }
+        if sliding {
+            columns.parts = columns.parts_of_chosen();
+        }
+        (columns.every, columns.default) = (false, false);
         Ok(columns)
     }
 
@@ -316,6 +420,11 @@ impl Columns {
         self.asks(&[Part::UserEvents])
     }
 
+    /// Whether the table holds a sliding run's columns ([`Part::Contact`]).
+    pub fn has_contact(&self) -> bool {
+        self.asks(&[Part::Contact])
+    }
+
     /// Whether the quadrature of each run is computed.
     pub fn solves_quadrature(&self) -> bool {
         self.asks(&[Part::Quadrature, Part::Difference])
@@ -325,7 +434,10 @@ impl Columns {
 impl Default for Columns {
     /// [`DEFAULT_GROUPS`].
     fn default() -> Self {
-        Self::parse(DEFAULT_GROUPS).expect("groups")
+        Self {
+            default: true,
+            ..Self::parse(DEFAULT_GROUPS).expect("groups")
+        }
     }
 }
 
@@ -350,20 +462,52 @@ mod tests {
         assert!(e.locates_turning_points() && !e.solves_quadrature());
         let diff = parse(&["period_difference"]);
         assert!(diff.locates_turning_points() && diff.solves_quadrature());
+        let rolling = |c: Columns| c.of_law(false).unwrap();
         assert_eq!(
             Columns::all().select(catalogue()).count(),
-            catalogue().len()
+            catalogue().len() - CONTACT_NAMES.len()
         );
-        assert_eq!(parse(&["final", "integrals", "user_events"]), d);
         assert_eq!(
-            parse(&["nutation", "final", "integrals", "user_events"]),
-            Columns::all()
+            rolling(parse(&["final", "integrals", "user_events"])),
+            rolling(d)
+        );
+        assert_eq!(
+            rolling(parse(&["nutation", "final", "integrals", "user_events"])),
+            rolling(Columns::all())
         );
         // The always-written columns only, named or not.
         let run: Vec<String> = parse(&[]).select(catalogue()).map(|c| c.name).collect();
         assert_eq!(run[0], "t_end");
         assert_eq!(run.len(), 9);
         assert_eq!(parse(&["status"]), parse(&[]));
+    }
+
+    /// A sliding sweep's columns: by default and with `all` the final state's and the
+    /// contact's; a column of the rolling law alone refused, naming it, as `contact` is in a
+    /// sweep of the rolling law.
+    #[test]
+    fn a_sliding_sweep_has_the_contact_columns() {
+        let names = |c: Columns| c.select(catalogue()).map(|c| c.name).collect::<Vec<_>>();
+        let sliding = names(Columns::default().of_law(true).unwrap());
+        assert_eq!(sliding, names(Columns::all().of_law(true).unwrap()));
+        assert_eq!(sliding.len(), 9 + 6 + CONTACT_NAMES.len());
+        assert!(sliding.contains(&"tilt_final".to_string()));
+        assert!(Columns::default().of_law(true).unwrap().has_contact());
+        assert!(!Columns::default().of_law(false).unwrap().has_contact());
+        let parse = |names: &[&str]| Columns::parse(names.iter().copied()).unwrap();
+        let e = parse(&["H1_drift"]).of_law(true).unwrap_err();
+        assert!(
+            e.contains("`H1_drift`") && e.contains("final, contact"),
+            "{e}"
+        );
+        let e = parse(&["contact"]).of_law(false).unwrap_err();
+        assert!(e.contains("`transitions`"), "{e}");
+        let e = parse(&["event0_count"]).of_law(true).unwrap_err();
+        assert!(e.contains("no user events"), "{e}");
+        assert_eq!(
+            names(parse(&["jellett_drift"]).of_law(true).unwrap()).len(),
+            10
+        );
     }
 
     /// The user events' columns are those of the sweep's events: all of them with the group

@@ -1,5 +1,5 @@
 //! Sweeps: many runs of one case with some quantities varied (the body's parameters, the
-//! initial tilt, spin, omega or gamma), on a grid or a random design, run in parallel, each
+//! initial tilt, spin, omega or gamma, a sliding contact's mu), on a grid or a random design, run in parallel, each
 //! run reduced to one row (work, status, and the columns asked for: final state, integrals
 //! and drift, the nutation from events and from the quadrature, the crossings of the user's
 //! events; only those are computed),
@@ -13,10 +13,13 @@
 //! * [`columns`]: the columns of a table, their groups, and what each needs computed;
 //! * [`record`]: the row of a run and its cells;
 //! * [`runner`]: the case of each run and the parallel execution;
+//! * [`contact`]: the run and the row of a sweep of the sliding contact (`contact.mu`
+//!   sweepable);
 //! * [`table`]: what every writer shares, stop and resume; [`csv`] and `parquet` (feature
 //!   `parquet`): the writers; [`open`] chooses one by the file's extension.
 
 pub mod columns;
+pub mod contact;
 pub mod crossings;
 pub mod csv;
 pub mod design;

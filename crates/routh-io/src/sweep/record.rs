@@ -1,6 +1,7 @@
 //! The row of one run and the columns of a sweep's table (the same for CSV, Parquet and
 //! JSON, written through [`crate::row`]).
 
+use crate::contact::sliding::SlidingSummary;
 use crate::integrals::INTEGRAL_NAMES;
 use crate::row::{csv_line, write_csv_line, Cell, Kind};
 use crate::simulate::Summary;
@@ -57,6 +58,18 @@ pub struct Row {
     /// The crossings of each user event, in their order (empty if the run failed, or not
     /// asked for).
     pub user_events: Vec<Crossings>,
+    /// A sliding run's summary and its final tilt (None for the rolling law, or if it failed).
+    pub sliding: Option<SlidingRun>,
+}
+
+/// What a sweep's row keeps of a sliding run ([`super::columns::CONTACT_NAMES`]).
+#[derive(Debug, Clone)]
+pub struct SlidingRun {
+    /// The run's summary, as `routh simulate` reports it.
+    pub summary: SlidingSummary,
+    /// The angle from the downward vertical to the line from the geometric centre to the
+    /// centre of mass at the end (None for a centre of mass at the centre).
+    pub tilt_final: Option<f64>,
 }
 
 /// The columns of a sweep whose swept quantities are `swept` and whose table holds `chosen`:
@@ -106,16 +119,22 @@ impl Row {
             Cell::Text(self.message.clone()),
         ];
         let s = self.summary.as_ref();
+        let sliding = self.sliding.as_ref();
+        let work = |of: fn(&Summary) -> usize, of_sliding: fn(&SlidingSummary) -> usize| {
+            s.map(of).or(sliding.map(|r| of_sliding(&r.summary)))
+        };
         for count in [
-            s.map(|s| s.steps),
-            s.map(|s| s.rejected),
-            s.map(|s| s.rhs_evals),
+            work(|s| s.steps, |s| s.steps),
+            work(|s| s.rejected, |s| s.rejected),
+            work(|s| s.rhs_evals, |s| s.rhs_evals),
         ] {
             cells.push(Cell::Int(count.map(|c| c as u64)));
         }
         let state = s.map(|s| s.final_state.to_array());
+        let gamma = sliding.map(|r| r.summary.final_state.gamma);
         for i in 0..6 {
-            cells.push(Cell::Float(state.map(|x| x[i])));
+            let sliding_part = gamma.filter(|_| i < 3).map(|g| g[i]);
+            cells.push(Cell::Float(state.map(|x| x[i]).or(sliding_part)));
         }
         for name in INTEGRAL_NAMES {
             let d = s.and_then(|s| s.integrals.get(name));
@@ -144,8 +163,34 @@ impl Row {
             ]
             .map(Cell::Float),
         );
+        cells.extend(contact_cells(sliding));
         cells
     }
+}
+
+/// The cells of [`super::columns::CONTACT_NAMES`], in its order (null without a sliding run).
+fn contact_cells(run: Option<&SlidingRun>) -> Vec<Cell> {
+    let s = run.map(|r| &r.summary);
+    let b = s.map(|s| s.balance);
+    let mut cells = vec![Cell::Int(s.map(|s| s.transitions.len() as u64))];
+    cells.extend(
+        [
+            s.map(|s| s.initial_state.height),
+            s.map(|s| s.final_state.height),
+            b.map(|b| b.height_range[0]),
+            b.map(|b| b.height_range[1]),
+            run.and_then(|r| r.tilt_final),
+            s.map(|s| s.final_state.slip_speed),
+            b.map(|b| b.min_normal_force),
+            s.map(|s| s.initial_state.jellett),
+            b.and_then(|b| b.jellett),
+            b.map(|b| b.energy_balance),
+            b.map(|b| b.energy_increase),
+            s.map(|s| s.final_state.work),
+        ]
+        .map(Cell::Float),
+    );
+    cells
 }
 
 impl Row {
@@ -178,6 +223,7 @@ mod tests {
             events: None,
             quadrature: None,
             user_events: vec![],
+            sliding: None,
         };
         let settings = |columns| RunSettings {
             t_end: 1.0,

@@ -5,6 +5,7 @@
 //! one-at-a-time integrator: the rows are the same, bit for bit, only faster.
 
 use super::columns::{Columns, MAX_EVENTS};
+use super::contact;
 use super::crossings::{self, Watch};
 use super::design::Design;
 use super::record::{columns, NutationQuadrature, Row, RunSettings, Status};
@@ -13,7 +14,7 @@ use super::table::{not_this_sweep, TableWriter};
 use crate::ball::Ball;
 use crate::batch::{self, Job, Queue, LANES};
 use crate::body::Body;
-use crate::case::{Case, CaseValues, Overrides};
+use crate::case::{Case, CaseValues, Overrides, SlidingStart};
 use crate::error::{AppError, AppResult as Result, FileError, RouthError};
 use crate::integrate::{Method, Options, Outcome, Stepper, Stop};
 use crate::quadrature::ExactSolution;
@@ -91,6 +92,8 @@ pub struct Sweep {
     pub columns: Columns,
     /// The user's events, located along every run when their columns are asked for.
     pub events: Vec<SurfaceEvent>,
+    /// The runs slide (`[contact] law = "sliding"`): each is [`contact::row`]'s.
+    sliding: bool,
     /// Integrate the runs of one body together in SIMD lanes ([`crate::batch`]) when the
     /// method is DOP853 or Taylor (the default, `true`); `false` runs them one at a time. The rows are
     /// the same, bit for bit: only the speed differs.
@@ -347,12 +350,24 @@ impl Sweep {
         start: u64,
         stop: Option<u64>,
     ) -> Result<Self> {
-        let case = Case::parse(text, source)?;
+        let case = Case::parse_any_contact(text, source)?;
+        if case.rubber.is_some() {
+            return Err(FileError::Case {
+                file: source.to_string(),
+                message: "[contact] law = \"rubber\" is integrated by `routh simulate` only \
+                          (so far): `routh sweep` runs the rolling and the sliding laws"
+                    .into(),
+            }
+            .into());
+        }
+        let sliding = case.sliding.is_some();
         let asked = overrides.applied_to(&case).build()?;
-        let settings = asked
-            .to_builder()
-            .method(resolve(asked.method(), asked.rtol().min(asked.atol())))
-            .build()?;
+        let tol = asked.rtol().min(asked.atol());
+        let method = match &case.sliding {
+            Some(start) => start.model.method(asked.method(), tol)?,
+            None => resolve(asked.method(), tol),
+        };
+        let settings = asked.to_builder().method(method).build()?;
         let mut table: toml::Table = case.extra_table("sweep")?.ok_or_else(|| FileError::Case {
             file: source.to_string(),
             message: "no [sweep] table: `routh sweep` needs one (see cases/sweep.toml)".into(),
@@ -367,6 +382,15 @@ impl Sweep {
             (None, Some(listed)) => crossings::from_toml(&listed).map_err(refused)?,
             (None, None) => Vec::new(),
         };
+        if sliding && !events.is_empty() {
+            return Err(FileError::Case {
+                file: source.to_string(),
+                message: "events: a sweep of [contact] law = \"sliding\" has no user events \
+                          (so far: they are planes of the rolling law's state)"
+                    .into(),
+            }
+            .into());
+        }
         if events.len() > MAX_EVENTS {
             return Err(RouthError::Option {
                 name: "events",
@@ -393,6 +417,10 @@ impl Sweep {
                 .of_events(events.len())
                 .expect("the default names no single event column"),
         };
+        let columns = columns.of_law(sliding).map_err(|e| FileError::Case {
+            file: source.to_string(),
+            message: format!("columns: {e}"),
+        })?;
         let design = Spec::parse(&table).and_then(Design::new).map_err(refused)?;
         let base = CaseValues::read(&case.document, source)?;
         let sweeps_body = design
@@ -420,13 +448,17 @@ impl Sweep {
             settings,
             columns,
             events,
+            sliding,
             batch: true,
         };
         sweep
             .checked
             .clone()
             .into_par_iter()
-            .try_for_each(|k| sweep.case_of(k).map(|_| ()))
+            .try_for_each(|k| match sweep.sliding {
+                true => sweep.sliding_of(k).map(|_| ()),
+                false => sweep.case_of(k).map(|_| ()),
+            })
             .map_err(refused)?;
         Ok(sweep)
     }
@@ -522,35 +554,62 @@ impl Sweep {
                     case.set_gamma(i, v);
                     Ok(())
                 }
+                Quantity::Mu => case.set_mu(v),
             };
             done.map_err(|rule| refuse(&axis.name, v, &rule))?;
         }
         Ok(case)
     }
 
+    /// A value of run `k` that makes its case invalid (`e`), refused naming the swept values.
+    fn invalid(&self, k: u64, e: AppError) -> Refusal {
+        let named: Vec<String> = self
+            .names()
+            .iter()
+            .zip(self.design.point(k))
+            .map(|(n, v)| format!("{n} = {v}"))
+            .collect();
+        refuse(
+            &named.join(", "),
+            format!("(run {k})"),
+            &format!("makes the case invalid: {e}"),
+        )
+    }
+
+    /// The case's values, the validated ball and initial state of run `k`.
+    fn built(&self, k: u64) -> std::result::Result<(CaseValues, Ball, State), Refusal> {
+        let values = self.values_of(k)?;
+        let ball = match &self.fixed {
+            Some((ball, _)) => *ball,
+            None => values.ball(&self.source).map_err(|e| self.invalid(k, e))?,
+        };
+        let state = values
+            .state(&ball, &self.source)
+            .map_err(|e| self.invalid(k, e))?;
+        Ok((values, ball, state))
+    }
+
     /// The validated ball and initial state of run `k`, as the case file with the run's
     /// values put in would give them; an invalid one is refused naming the swept values.
     pub fn case_of(&self, k: u64) -> std::result::Result<(Ball, State), Refusal> {
-        let values = self.values_of(k)?;
-        let invalid = |e: AppError| {
-            let named: Vec<String> = self
-                .names()
-                .iter()
-                .zip(self.design.point(k))
-                .map(|(n, v)| format!("{n} = {v}"))
-                .collect();
-            refuse(
-                &named.join(", "),
-                format!("(run {k})"),
-                &format!("makes the case invalid: {e}"),
-            )
-        };
-        let ball = match &self.fixed {
-            Some((ball, _)) => *ball,
-            None => values.ball(&self.source).map_err(invalid)?,
-        };
-        let state = values.state(&ball, &self.source).map_err(invalid)?;
-        Ok((ball, state))
+        self.built(k).map(|(_, ball, state)| (ball, state))
+    }
+
+    /// The sliding ball and its validated initial state of run `k` of a sweep of the sliding
+    /// contact (as [`Sweep::case_of`], the contact's own checks added: a ball that would
+    /// leave the plane at once is refused).
+    pub fn sliding_of(&self, k: u64) -> std::result::Result<SlidingStart, Refusal> {
+        let (values, ball, state) = self.built(k)?;
+        values
+            .sliding(&ball, &state)
+            .map_err(|e| self.invalid(k, e))?
+            .ok_or_else(|| {
+                refuse(
+                    "[contact] law",
+                    "(not \"sliding\")",
+                    "needs a sliding contact",
+                )
+            })
     }
 
     /// A row of run `k` that could not be done, with the reason.
@@ -564,6 +623,7 @@ impl Sweep {
             events: None,
             quadrature: None,
             user_events: Vec::new(),
+            sliding: None,
         }
     }
 
@@ -619,15 +679,24 @@ impl Sweep {
             events: watch.and_then(Watch::nutation),
             quadrature,
             user_events: watch.map_or_else(Vec::new, |w| w.crossings().to_vec()),
+            sliding: None,
         }
     }
 
     /// Run number `k`: the integration of `routh simulate` on the run's case (the same
     /// numbers, bit for bit), the turning points and the user's events along it and the quadrature when the body
-    /// is a Routh sphere, each when its columns are asked for. A failure (or a panic) becomes
-    /// a row with status `failed`.
+    /// is a Routh sphere, each when its columns are asked for; in a sweep of the sliding
+    /// contact, the sliding run of `routh simulate` ([`contact::row`]). A failure (or a
+    /// panic) becomes a row with status `failed`.
     pub fn run(&self, k: u64) -> Row {
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            if self.sliding {
+                let start = self.sliding_of(k).map_err(|e| FileError::Case {
+                    file: self.source.clone(),
+                    message: e.to_string(),
+                })?;
+                return contact::row(k, self.design.point(k), &start, &self.settings);
+            }
             let (body, initial) = self.start(k)?;
             let x0 = initial.to_array();
             let mut watch = self.watch(&body);
@@ -671,6 +740,7 @@ impl Sweep {
     /// ([`Sweep::batch`]), DOP853 or Taylor, and a time span to integrate.
     fn in_lanes(&self) -> bool {
         self.batch
+            && !self.sliding
             && matches!(self.settings.method(), Method::Dop853 | Method::Taylor)
             && self.settings.t_end() > 0.0
     }

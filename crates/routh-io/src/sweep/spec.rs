@@ -24,7 +24,8 @@
 //! keys `body.m`, `body.R`, `body.a`, `body.I1`, `body.I2`, `body.I3`, `body.G`; `tilt` (the
 //! initial gamma becomes (sin tilt, 0, cos tilt)); `spin` (omega3); `omega1`, `omega2`,
 //! `omega3`; `gamma1`, `gamma2`, `gamma3`. The initial omega components need a case whose
-//! `[initial]` gives `omega` (not `M`). Axes are taken in the order of their keys sorted as
+//! `[initial]` gives `omega` (not `M`). `contact.mu`, the friction coefficient, needs a case
+//! of `[contact] law = "sliding"` (each run is then a sliding run: [`super::contact`]). Axes are taken in the order of their keys sorted as
 //! text, which is also the order of their columns. The key `columns = [...]`, the columns of
 //! the table, is [`super::columns`]'s.
 
@@ -69,6 +70,8 @@ pub enum Quantity {
     Omega(usize),
     /// A component (0, 1, 2) of the initial gamma.
     Gamma(usize),
+    /// The friction coefficient `mu` of a sliding contact (`contact.mu`).
+    Mu,
 }
 
 const BODY_KEYS: [&str; 7] = ["m", "R", "a", "I1", "I2", "I3", "G"];
@@ -87,6 +90,7 @@ impl Quantity {
                 .and_then(|i| ["1", "2", "3"].iter().position(|c| *c == i))
         };
         match key {
+            "contact.mu" => Some(Quantity::Mu),
             "tilt" => Some(Quantity::Tilt),
             "spin" => Some(Quantity::Spin),
             _ => component("omega")
@@ -351,7 +355,8 @@ impl Spec {
                 key,
                 value,
                 "unknown key: expected body.m, body.R, body.a, body.I1, body.I2, body.I3, \
-                 body.G, tilt, spin, omega1..3, gamma1..3, samples, design, seed or columns",
+                 body.G, tilt, spin, omega1..3, gamma1..3, contact.mu, samples, design, seed or \
+                 columns",
             )
         })?;
         let t: AxisTable = value.clone().try_into().map_err(|e: toml::de::Error| {
