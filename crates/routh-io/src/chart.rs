@@ -85,7 +85,8 @@ impl Regime {
 /// (ends included). Valid once built ([`ChartAxis::parse`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ChartAxis {
-    /// The quantity's key, as in `[sweep]`.
+    /// The quantity's key, as in `[sweep]` (or its name, for the axes of
+    /// [`crate::inversion`]).
     pub key: String,
     /// The first value.
     pub from: f64,
@@ -93,6 +94,28 @@ pub struct ChartAxis {
     pub to: f64,
     /// The number of points, 2 to [`MAX_POINTS`].
     pub n: usize,
+}
+
+/// The rule of a range without its three parts.
+const NOT_A_RANGE: &str = "must be FROM:TO:N";
+
+/// The `(FROM, TO, N)` of the range `FROM:TO:N`, or the rule it breaks: FROM < TO finite, N
+/// from 2 to [`MAX_POINTS`].
+fn points(range: &str) -> std::result::Result<(f64, f64, usize), &'static str> {
+    let parts: Vec<&str> = range.split(':').map(str::trim).collect();
+    let [from, to, n] = parts[..] else {
+        return Err(NOT_A_RANGE);
+    };
+    let (Ok(from), Ok(to)) = (from.parse::<f64>(), to.parse::<f64>()) else {
+        return Err("FROM and TO must be numbers");
+    };
+    if !(from.is_finite() && to.is_finite() && from < to) {
+        return Err("FROM and TO must be finite with FROM < TO");
+    }
+    match n.parse::<usize>() {
+        Ok(n) if (2..=MAX_POINTS).contains(&n) => Ok((from, to, n)),
+        _ => Err("N must be an integer from 2 to 1000"),
+    }
 }
 
 impl ChartAxis {
@@ -112,29 +135,36 @@ impl ChartAxis {
         if Quantity::from_key(key).is_none() {
             return Err(refused(
                 "KEY must be a quantity of [sweep]: body.m, body.R, body.a, body.I1, body.I2, \
-                 body.I3, body.G, tilt, spin, omega1..3 or gamma1..3",
+                 body.I3, body.G, tilt, spin, omega1..3, gamma1..3 or contact.mu",
             )
             .into());
         }
-        let parts: Vec<&str> = range.split(':').map(str::trim).collect();
-        let [from, to, n] = parts[..] else {
-            return Err(refused("must be KEY=FROM:TO:N").into());
-        };
-        let (Ok(from), Ok(to)) = (from.parse::<f64>(), to.parse::<f64>()) else {
-            return Err(refused("FROM and TO must be numbers").into());
-        };
-        if !(from.is_finite() && to.is_finite() && from < to) {
-            return Err(refused("FROM and TO must be finite with FROM < TO").into());
-        }
-        match n.parse::<usize>() {
-            Ok(n) if (2..=MAX_POINTS).contains(&n) => Ok(ChartAxis {
-                key: key.to_string(),
-                from,
-                to,
-                n,
-            }),
-            _ => Err(refused("N must be an integer from 2 to 1000").into()),
-        }
+        let (from, to, n) = points(range).map_err(|rule| match rule {
+            NOT_A_RANGE => refused("must be KEY=FROM:TO:N"),
+            rule => refused(rule),
+        })?;
+        Ok(ChartAxis {
+            key: key.to_string(),
+            from,
+            to,
+            n,
+        })
+    }
+
+    /// The axis `key` of the range `FROM:TO:N` given to the option `option`: FROM < TO finite,
+    /// N from 2 to [`MAX_POINTS`]; refused naming the option ([`RouthError::Option`]).
+    pub fn range(key: &str, range: &str, option: &'static str) -> Result<Self> {
+        let (from, to, n) = points(range).map_err(|rule| RouthError::Option {
+            name: option,
+            value: format!("{range:?}"),
+            rule,
+        })?;
+        Ok(ChartAxis {
+            key: key.to_string(),
+            from,
+            to,
+            n,
+        })
     }
 
     /// The axis's label in a figure: the key and what it sets.

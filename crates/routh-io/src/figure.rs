@@ -8,7 +8,9 @@
 //! * [`RotationNumberFigure`]: the rotation number W along the monodromy loop;
 //! * [`SectionFigure`]: a Poincaré section, the crossings of each run in a colour of its own;
 //! * [`RegimeChartFigure`]: a chart of regimes, the mean MEGNO over a parameter plane as a
-//!   heat map with its colour bar.
+//!   heat map with its colour bar;
+//! * [`InversionFigure`]: the tippe top's inversion region, the final tilt over (alpha,
+//!   I1 / I3) with the published boundaries.
 
 use crate::plot::{
     bounds, chart_ranges, plotting_area, tick_label, Figure, MARGIN, TITLE_HEIGHT, X_LABEL_AREA,
@@ -417,19 +419,48 @@ pub const MEGNO_SCALE_TOP: f64 = 8.0;
 /// blue at 0 and below (periodic, attractors), light blue at 1, pale yellow at 2 (tori),
 /// orange at 4, dark red at [`MEGNO_SCALE_TOP`] and above (chaos); grey for a failed run.
 pub fn megno_colour(mean_megno: f64) -> RGBColor {
-    const STOPS: [(f64, (f64, f64, f64)); 5] = [
-        (0.0, (49.0, 54.0, 149.0)),
-        (1.0, (116.0, 173.0, 209.0)),
-        (2.0, (255.0, 255.0, 191.0)),
-        (4.0, (244.0, 109.0, 67.0)),
-        (MEGNO_SCALE_TOP, (165.0, 0.0, 38.0)),
-    ];
-    if mean_megno.is_nan() {
+    ramp(
+        &[
+            (0.0, (49.0, 54.0, 149.0)),
+            (1.0, (116.0, 173.0, 209.0)),
+            (2.0, (255.0, 255.0, 191.0)),
+            (4.0, (244.0, 109.0, 67.0)),
+            (MEGNO_SCALE_TOP, (165.0, 0.0, 38.0)),
+        ],
+        mean_megno,
+    )
+}
+
+/// The colour of a final tilt of the centre of mass (ColorBrewer's RdYlBu, reversed): dark
+/// blue at 0 (upright), pale yellow at pi / 2, dark red at pi (inverted); grey for a failed
+/// run.
+pub fn tilt_colour(tilt: f64) -> RGBColor {
+    use std::f64::consts::PI;
+    ramp(
+        &[
+            (0.0, (49.0, 54.0, 149.0)),
+            (0.25 * PI, (116.0, 173.0, 209.0)),
+            (0.5 * PI, (255.0, 255.0, 191.0)),
+            (0.75 * PI, (244.0, 109.0, 67.0)),
+            (PI, (165.0, 0.0, 38.0)),
+        ],
+        tilt,
+    )
+}
+
+/// The colour of `v` on the piecewise linear scale `stops` (value, RGB), ascending, clamped
+/// to its ends; grey for NaN.
+fn ramp(stops: &[(f64, (f64, f64, f64))], v: f64) -> RGBColor {
+    if v.is_nan() {
         return RGBColor(150, 150, 150);
     }
-    let v = mean_megno.clamp(0.0, MEGNO_SCALE_TOP);
-    let i = STOPS.iter().rposition(|s| s.0 <= v).unwrap_or(0).min(3);
-    let ((a, ca), (b, cb)) = (STOPS[i], STOPS[i + 1]);
+    let v = v.clamp(stops[0].0, stops[stops.len() - 1].0);
+    let i = stops
+        .iter()
+        .rposition(|s| s.0 <= v)
+        .unwrap_or(0)
+        .min(stops.len() - 2);
+    let ((a, ca), (b, cb)) = (stops[i], stops[i + 1]);
     let u = (v - a) / (b - a);
     let mix = |p: f64, q: f64| (p + (q - p) * u).round() as u8;
     RGBColor(mix(ca.0, cb.0), mix(ca.1, cb.1), mix(ca.2, cb.2))
@@ -472,36 +503,128 @@ impl Figure for RegimeChartFigure<'_> {
                 megno_colour(v).filled(),
             )
         }))?;
-        let (_, bar_area) = strip.split_vertically(TITLE_HEIGHT);
-        let mut bar = ChartBuilder::on(&bar_area)
-            .margin(MARGIN)
-            .margin_left(0)
-            .x_label_area_size(X_LABEL_AREA)
-            .y_label_area_size(70)
-            .build_cartesian_2d(0.0..1.0, 0.0..MEGNO_SCALE_TOP)?;
-        bar.configure_mesh()
-            .disable_x_axis()
-            .disable_mesh()
-            .y_desc("mean MEGNO <Y>")
-            .y_label_formatter(&|v| {
-                if *v >= MEGNO_SCALE_TOP {
+        colour_bar(
+            &strip,
+            "mean MEGNO <Y>",
+            MEGNO_SCALE_TOP,
+            &megno_colour,
+            &|v| {
+                if v >= MEGNO_SCALE_TOP {
                     format!(">= {v}")
                 } else {
-                    tick_label(*v, MEGNO_SCALE_TOP)
+                    tick_label(v, MEGNO_SCALE_TOP)
                 }
-            })
-            .label_style(("sans-serif", 16))
-            .axis_desc_style(("sans-serif", 18))
-            .draw()?;
-        let steps = 160;
-        let dv = MEGNO_SCALE_TOP / f64::from(steps);
-        bar.draw_series((0..steps).map(|i| {
-            let v = f64::from(i) * dv;
+            },
+        )?;
+        Ok(())
+    }
+}
+
+/// A vertical colour bar on `strip` from 0 to `top`, `colour` its scale, `label` its ticks.
+fn colour_bar<DB: DrawingBackend>(
+    strip: &DrawingArea<DB, Shift>,
+    description: &str,
+    top: f64,
+    colour: &dyn Fn(f64) -> RGBColor,
+    label: &dyn Fn(f64) -> String,
+) -> Drawn<DB> {
+    let (_, bar_area) = strip.split_vertically(TITLE_HEIGHT);
+    let mut bar = ChartBuilder::on(&bar_area)
+        .margin(MARGIN)
+        .margin_left(0)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..1.0, 0.0..top)?;
+    bar.configure_mesh()
+        .disable_x_axis()
+        .disable_mesh()
+        .y_desc(description)
+        .y_label_formatter(&|v| label(*v))
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 18))
+        .draw()?;
+    let steps = 160;
+    let dv = top / f64::from(steps);
+    bar.draw_series((0..steps).map(|i| {
+        let v = f64::from(i) * dv;
+        Rectangle::new([(0.0, v), (1.0, v + dv)], colour(v + dv / 2.0).filled())
+    }))?;
+    Ok(())
+}
+
+/// The points of a curve of a figure.
+type Curve = Vec<(f64, f64)>;
+
+/// The inversion region of the tippe top ([`crate::inversion`]): the final tilt of each point
+/// of the plane (alpha, I1 / I3) as a heat map ([`tilt_colour`]) with its colour bar, and the
+/// published boundaries drawn on it: `I1 / I3 = 1 - alpha` and `1 + alpha` (black),
+/// `1 - alpha^2` (grey: where the threshold's theorem is proved) and the curve where Jellett's
+/// integral meets its threshold (magenta).
+pub struct InversionFigure<'a> {
+    /// The title above the chart.
+    pub title: String,
+    /// The alpha axis: first and last values, number of points.
+    pub x: (f64, f64, usize),
+    /// The I1 / I3 axis.
+    pub y: (f64, f64, usize),
+    /// The points `(alpha, ratio, final tilt)`, NaN for a failed run.
+    pub points: Vec<(f64, f64, f64)>,
+    /// The curve `lambda = lambda_thres`.
+    pub threshold: &'a [(f64, f64)],
+}
+
+impl Figure for InversionFigure<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        root.fill(&WHITE)?;
+        let (map, strip) = root.split_horizontally(root.dim_in_pixel().0 - COLOUR_BAR_STRIP);
+        let half = |(from, to, n): (f64, f64, usize)| 0.5 * (to - from) / (n - 1) as f64;
+        let (hx, hy) = (half(self.x), half(self.y));
+        let (xs, ys) = (
+            (self.x.0 - hx, self.x.1 + hx),
+            (self.y.0 - hy, self.y.1 + hy),
+        );
+        let mut chart = mesh(&map, &self.title, xs, ys, ("alpha = a / R", "I1 / I3"))?;
+        chart.draw_series(self.points.iter().map(|&(x, y, v)| {
             Rectangle::new(
-                [(0.0, v), (1.0, v + dv)],
-                megno_colour(v + dv / 2.0).filled(),
+                [(x - hx, y - hy), (x + hx, y + hy)],
+                tilt_colour(v).filled(),
             )
         }))?;
+        let n = 200;
+        let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+            (0..=n)
+                .map(|i| xs.0 + (xs.1 - xs.0) * f64::from(i) / f64::from(n))
+                .map(|a| (a, f(a)))
+                .filter(|&(_, q)| q >= ys.0 && q <= ys.1)
+                .collect()
+        };
+        let grey = RGBColor(110, 110, 110);
+        let magenta = RGBColor(200, 0, 160);
+        let curves: [(Curve, RGBColor, &str); 4] = [
+            (line(&|a| 1.0 - a), BLACK, "I1/I3 = 1 - alpha, 1 + alpha"),
+            (line(&|a| 1.0 + a), BLACK, ""),
+            (line(&|a| 1.0 - a * a), grey, "I1/I3 = 1 - alpha^2"),
+            (self.threshold.to_vec(), magenta, "Jellett = lambda_thres"),
+        ];
+        for (points, colour, label) in curves {
+            if points.len() < 2 {
+                continue;
+            }
+            let series = chart.draw_series(LineSeries::new(points, colour.stroke_width(3)))?;
+            if !label.is_empty() {
+                series.label(label).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(3))
+                });
+            }
+        }
+        legend(&mut chart, SeriesLabelPosition::LowerRight)?;
+        colour_bar(
+            &strip,
+            "final tilt of the centre of mass, rad",
+            std::f64::consts::PI,
+            &tilt_colour,
+            &|v| tick_label(v, std::f64::consts::PI),
+        )?;
         Ok(())
     }
 }

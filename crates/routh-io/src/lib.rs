@@ -18,6 +18,8 @@ pub mod error;
 pub mod explore;
 #[cfg(feature = "plot")]
 pub mod figure;
+#[cfg(feature = "sweep")]
+pub mod inversion;
 pub mod lyapunov;
 pub mod megno;
 pub mod output;

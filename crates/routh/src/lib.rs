@@ -84,11 +84,11 @@ pub mod diagram {
     pub use routh_sphere::diagram::*;
 }
 
-#[cfg(feature = "sweep")]
-pub use routh_io::sweep;
 #[cfg(feature = "io")]
 pub use routh_io::{
     animate, case, explore, output, row, run, surface, table, AppError, AppResult, FileError,
 };
 #[cfg(feature = "plot")]
 pub use routh_io::{figure, plot};
+#[cfg(feature = "sweep")]
+pub use routh_io::{inversion, sweep};

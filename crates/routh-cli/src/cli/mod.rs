@@ -28,6 +28,7 @@ mod exact;
 mod explore;
 mod flow;
 mod integration;
+mod inversion;
 mod lyapunov;
 mod megno;
 mod plot;
@@ -87,6 +88,9 @@ enum Command {
     /// Many runs of a case over the quantities of its [sweep] table (grid or random design),
     /// one row per run, written to CSV or Parquet.
     Sweep(sweep::Args),
+    /// The tippe top's inversion region over (a / R, I1 / I3) at one or more spins, beside the
+    /// published conditions (CSV, PNG, SVG).
+    Inversion(inversion::Args),
 }
 
 /// A number in a text summary: as `{}` prints it between 1e-4 and 1e6 (and zero, and the
@@ -193,6 +197,7 @@ pub fn main() -> ExitCode {
         Command::Lyapunov(args) => lyapunov::run(args),
         Command::Megno(args) => megno::run(args),
         Command::Section(args) => section::run(args),
+        Command::Inversion(args) => inversion::run(args),
     };
     let flushed = result.and_then(|()| {
         std::io::stdout()

@@ -369,3 +369,57 @@ fn a_sweep_of_the_sliding_top_over_mu() {
         "is not one of a sweep of law = \"sliding\"",
     );
 }
+
+/// `routh inversion` on a 3 x 3 plane of the built-in tippe top: its table, PNG and SVG are
+/// written, the JSON counts every point once and the agreement with the published conditions
+/// is a share; an alpha outside (0, 1) and a case of the rolling law are refused with exit
+/// code 2 and the reason.
+#[test]
+fn the_inversion_region_from_the_command_line() {
+    let dir = std::env::temp_dir().join(format!("routh-inversion-{}", std::process::id()));
+    let out = routh(&[
+        "inversion",
+        "--alpha",
+        "0.2:0.4:3",
+        "--ratio",
+        "0.7:1.3:3",
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json_of(&out);
+    let region = &v["regions"][0];
+    let c = &region["counts"];
+    let total: u64 = ["upright", "partial", "inverted", "failed"]
+        .iter()
+        .map(|k| c[k].as_u64().unwrap())
+        .sum();
+    assert_eq!(total, 9, "{v}");
+    assert_eq!(region["spin"], 20.0);
+    let share = region["agreement"].as_f64().unwrap();
+    assert!((0.0..=1.0).contains(&share), "{v}");
+    assert_ne!(v["method"], "auto", "the method that ran: {v}");
+    for name in ["region.csv", "region.png", "region.svg"] {
+        let size = std::fs::metadata(dir.join(name)).unwrap().len();
+        assert!(size > 500, "{name}: {size} bytes");
+    }
+    let csv = std::fs::read_to_string(dir.join("region.csv")).unwrap();
+    assert!(csv.starts_with("alpha,ratio,tilt_final,lambda,lambda_thres,predicted,outcome"));
+    assert_eq!(csv.lines().count(), 10);
+    assert_exit_2(&["inversion", "--alpha", "0.5:1.2:3"], "(0, 1)");
+    assert_exit_2(
+        &[
+            "inversion",
+            "--case",
+            "cases/default.toml",
+            "--ratio",
+            "0.7:1.3:3",
+        ],
+        "needs [contact] law = \"sliding\"",
+    );
+}
