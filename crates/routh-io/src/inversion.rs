@@ -524,4 +524,85 @@ mod tests {
             assert!((a.alpha - b.alpha).abs() <= 1e-12 && (a.ratio - b.ratio).abs() <= 1e-12);
         }
     }
+
+    /// The final state at `t_end` of a sliding run of the tippe top with `I1 = i1`.
+    fn asymptote(i1: f64, t_end: f64) -> crate::contact::sliding::Observation {
+        let text = TIPPE_TOP.replace("I1 = 0.37", &format!("I1 = {i1:?}"));
+        let case = Case::parse_any_contact(&text, "tippe top").unwrap();
+        let start = case.sliding.unwrap();
+        let settings = Overrides::default()
+            .applied_to(&case)
+            .t_end(t_end)
+            .tolerances(1e-11, 1e-11)
+            .build()
+            .unwrap();
+        crate::contact::sliding::run::<crate::error::AppError>(
+            &start.model,
+            start.y0,
+            &settings,
+            &mut |_| Ok(()),
+        )
+        .unwrap()
+        .final_state
+    }
+
+    /// The asymptotic states of the sliding top are steady motions of the rolling law, as
+    /// `routh steady` finds them: the viscous friction wears the slip away (slowly: 0.014 at
+    /// t = 100, 2e-5 at 1000, 3e-11 at 3000), and what is left rolls without slipping. The
+    /// issue's top ends spinning upside down (t = 3000: gamma3 = +1 to 1e-9, the slip below
+    /// 1e-8 of the speed R |omega|) at the spin that Jellett's integral fixes,
+    /// `lambda / (I3 (R + a))` (1e-9), above Routh's threshold of that vertical spin, and
+    /// `routh steady` calls it stable. The top with I1 / I3 = 1.5 (above 1 + alpha) ends
+    /// (t = 1500) at a constant tilt: one of the rolling law's steady precessions at that tilt
+    /// and spin has its omega_t (1e-6 of |omega|) and is stable.
+    #[test]
+    fn the_asymptotic_states_are_steady_motions_of_the_rolling_law() {
+        use routh_sphere::steady::{steady_precessions, vertical_spin, Decision};
+        let inverted = asymptote(0.37, 3000.0);
+        let body = Body::new(1.0, 1.0, 0.3, 0.37, 0.37, 0.4, 9.81).unwrap();
+        let speed = |o: &crate::contact::sliding::Observation| {
+            o.omega.iter().map(|w| w * w).sum::<f64>().sqrt()
+        };
+        assert!(
+            inverted.slip_speed < 1e-8 * speed(&inverted),
+            "{inverted:?}"
+        );
+        assert!((inverted.gamma[2] - 1.0).abs() < 1e-9, "{inverted:?}");
+        let spin = inverted.omega[2];
+        let by_jellett = inverted.jellett.abs() / (0.4 * 1.3);
+        assert!(
+            (spin.abs() - by_jellett).abs() <= 1e-9 * by_jellett,
+            "{spin} {by_jellett}"
+        );
+        let v = vertical_spin(&body, 1.0, spin).unwrap();
+        assert!(
+            v.centre_of_mass_above && spin.abs() > v.routh_threshold.unwrap(),
+            "{v:?}"
+        );
+        assert_eq!(v.verdict.decision, Decision::Stable, "{v:?}");
+
+        let partial = asymptote(0.6, 1500.0);
+        let body = Body::new(1.0, 1.0, 0.3, 0.6, 0.6, 0.4, 9.81).unwrap();
+        assert!(partial.slip_speed < 1e-8 * speed(&partial), "{partial:?}");
+        let [g1, g2, g3] = partial.gamma;
+        let s = (g1 * g1 + g2 * g2).sqrt();
+        let (theta, omega) = (g3.clamp(-1.0, 1.0).acos(), partial.omega);
+        assert!(s > 0.3, "a tilt between the poles: {partial:?}");
+        let omega_t = (omega[0] * g1 + omega[1] * g2) / s;
+        let size = speed(&partial);
+        let found = steady_precessions(&body, theta, omega[2]).unwrap();
+        let nearest = found
+            .iter()
+            .min_by(|a, b| {
+                (a.omega_t - omega_t)
+                    .abs()
+                    .total_cmp(&(b.omega_t - omega_t).abs())
+            })
+            .unwrap();
+        assert!(
+            (nearest.omega_t - omega_t).abs() <= 1e-6 * size,
+            "{omega_t} {found:?}"
+        );
+        assert_eq!(nearest.verdict.decision, Decision::Stable, "{nearest:?}");
+    }
 }
