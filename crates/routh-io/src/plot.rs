@@ -11,6 +11,9 @@
 //!   equal axis scales;
 //! * [`drift_plot`]: the relative drift `|H(t) - H(0)| / |H(0)|` of each integral, log scale;
 //! * [`gamma_plot`]: the trace of (gamma1, gamma2) in the body frame, equal axis scales;
+//! * [`contact_plots`]: of a sliding run, the height of the centre of mass, the slip speed,
+//!   the normal force over time and the drift of Jellett's integral and of the energy
+//!   balance;
 //! * [`difference_plot`]: `|a - b|` over time of the state columns of two tables sampled at
 //!   the same times (the quadrature solution against the integrator's).
 //!
@@ -195,15 +198,7 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
         if !h[0].is_finite() {
             continue;
         }
-        // The unit 1 of the table's units where H(0) = 0 (the label says so).
-        let points = t
-            .iter()
-            .zip(h)
-            .scan(Drift::start(h[0], || 1.0), |drift, (&t, &v)| {
-                drift.observe(v);
-                Some((t, drift.max_rel_drift))
-            })
-            .collect();
+        let points = running_drift(t, h);
         let label = if h[0] == 0.0 {
             format!("{name} (absolute: {name}(0) = 0)")
         } else {
@@ -229,6 +224,91 @@ pub fn drift_plot(table: &Table) -> Result<Plot> {
         legend: SeriesLabelPosition::UpperLeft,
         marks: Vec::new(),
     })
+}
+
+/// The running maximum of the relative drift of `h` from `h[0]` over the times `t` (in the
+/// unit 1 of the table's units where `h[0] = 0`: a table holds no body).
+fn running_drift(t: &[f64], h: &[f64]) -> Vec<(f64, f64)> {
+    t.iter()
+        .zip(h)
+        .scan(Drift::start(h[0], || 1.0), |drift, (&t, &v)| {
+            drift.observe(v);
+            Some((t, drift.max_rel_drift))
+        })
+        .collect()
+}
+
+/// A quantity of a sliding run over time: the column `column` of the table.
+fn time_plot(
+    table: &Table,
+    column: &str,
+    name: &'static str,
+    title: &str,
+    y: &str,
+) -> Result<Plot> {
+    Ok(Plot {
+        name,
+        title: title.into(),
+        x_label: "time t (s)".into(),
+        y_label: y.into(),
+        series: vec![column_series(table, "t", column, column)?],
+        log_y: false,
+        equal_scale: false,
+        legend: SeriesLabelPosition::UpperRight,
+        marks: Vec::new(),
+    })
+}
+
+/// The figures of a sliding run (a table of `routh simulate` with `[contact] law =
+/// "sliding"`): the height of the centre of mass, the slip speed and the normal force over
+/// time, and the balances: the drift of Jellett's integral and of the energy plus the
+/// friction's work (running maximum, log scale), both constant for any friction.
+pub fn contact_plots(table: &Table) -> Result<Vec<Plot>> {
+    let t = table.column("t")?;
+    let (jellett, balance) = (table.column("jellett")?, table.column("H1_plus_work")?);
+    Ok(vec![
+        time_plot(
+            table,
+            "height",
+            "height",
+            "Height of the centre of mass",
+            "height above the plane (m)",
+        )?,
+        time_plot(
+            table,
+            "slip_speed",
+            "slip_speed",
+            "Slip speed of the contact point",
+            "|v_P| (m/s)",
+        )?,
+        time_plot(
+            table,
+            "normal_force",
+            "normal_force",
+            "Normal force of the plane",
+            "N (newton)",
+        )?,
+        Plot {
+            name: "balance",
+            title: "Drift of Jellett's integral and of the energy plus the friction's work".into(),
+            x_label: "time t (s)".into(),
+            y_label: "max over [0, t] of the relative drift".into(),
+            series: vec![
+                Series {
+                    label: "Jellett (L, r)".into(),
+                    points: running_drift(t, jellett),
+                },
+                Series {
+                    label: "H1 + W (energy plus the friction's work)".into(),
+                    points: running_drift(t, balance),
+                },
+            ],
+            log_y: true,
+            equal_scale: false,
+            legend: SeriesLabelPosition::UpperLeft,
+            marks: Vec::new(),
+        },
+    ])
 }
 
 /// The trace of (gamma1, gamma2), the horizontal part of the normal in the body frame.
@@ -311,10 +391,16 @@ pub fn difference_plot(a: &Table, b: &Table, labels: (&str, &str)) -> Result<Plo
 }
 
 /// The four standard figures of a table; the path figure only when the table has the columns
-/// of `routh simulate --full`. Returns the figures and, for each left out, the reason.
+/// of `routh simulate --full`; of a sliding run's table, theta, [`contact_plots`] and the trace
+/// of gamma. Returns the figures and, for each left out, the reason.
 pub fn standard_plots(table: &Table) -> Result<(Vec<Plot>, Vec<String>)> {
     let mut plots = vec![theta_plot(table)?];
     let mut skipped = Vec::new();
+    if table.column("slip_speed").is_ok() {
+        plots.extend(contact_plots(table)?);
+        plots.push(gamma_plot(table)?);
+        return Ok((plots, skipped));
+    }
     match path_plot(table) {
         Ok(plot) => plots.push(plot),
         Err(e) => skipped.push(format!(

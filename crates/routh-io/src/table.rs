@@ -6,7 +6,7 @@
 use crate::ball::Ball;
 use crate::case::{Case, Overrides, RubberStart, SlidingStart};
 use crate::contact::rubber::{run as run_rubber, RubberSummary};
-use crate::contact::sliding::{run as run_sliding, Observation, SlidingSummary};
+use crate::contact::sliding::{run as run_sliding, Observation, SlidingSummary, OBSERVATION_NAMES};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
 use crate::integrate::OdeSystem;
@@ -322,9 +322,19 @@ pub fn rubber_samples(
 /// Simulate `case` with the full motion (its settings with `overrides` applied, checked as
 /// they are built: [`Overrides::applied_to`]) and tabulate `samples` equally spaced samples
 /// on [0, t_end]: the columns of [`sample_columns`] (empty integrals as NaN, as a CSV of
-/// `routh simulate --full` reads back).
+/// `routh simulate --full` reads back); of a sliding case, the columns of its samples
+/// ([`OBSERVATION_NAMES`]: no motion in space so far).
 pub fn simulate_full(case: &Case, overrides: &Overrides, samples: usize) -> Result<Table> {
     let settings = overrides.applied_to(case).samples(samples).build()?;
+    if let Some(start) = &case.sliding {
+        let names = OBSERVATION_NAMES.iter().map(|n| n.to_string()).collect();
+        let mut table = Table::new(&case.source, names);
+        sliding_samples(start, &settings, &mut |cells| {
+            let row: Vec<f64> = cells.iter().map(Cell::to_f64).collect();
+            table.push_row(&row)
+        })?;
+        return Ok(table);
+    }
     let names = sample_columns(true)
         .into_iter()
         .map(str::to_string)

@@ -1,6 +1,8 @@
 //! `routh plot`: the standard figures of a trajectory (theta(t), the paths on the plane, the
-//! drift of the integrals, the trace of (gamma1, gamma2)), from a simulation of a case or from
-//! a CSV file written by `routh simulate`; optionally the difference against a second CSV.
+//! drift of the integrals, the trace of (gamma1, gamma2); of a sliding contact, the height of
+//! the centre of mass, the slip speed, the normal force and the balances), from a simulation
+//! of a case or from a CSV file written by `routh simulate`; optionally the difference against
+//! a second CSV.
 
 use routh::case::{Case, Overrides};
 use routh::integrate::Method;
@@ -44,7 +46,16 @@ impl Source {
         if let Some(path) = &self.csv {
             return Table::read_csv(path);
         }
-        let case = Case::load(self.case.as_deref())?;
+        let case = Case::load_any_contact(self.case.as_deref())?;
+        if case.rubber.is_some() {
+            return Err(RouthError::Option {
+                name: "case",
+                value: case.source.clone(),
+                rule: "is of [contact] law = \"rubber\": `routh plot` draws the rolling and the \
+                       sliding laws (so far); `routh simulate --out` writes the rubber ball's samples",
+            }
+            .into());
+        }
         if !(2..=MAX_SAMPLES).contains(&self.samples) {
             return Err(RouthError::Option {
                 name: "samples",

@@ -423,3 +423,66 @@ fn the_inversion_region_from_the_command_line() {
         "needs [contact] law = \"sliding\"",
     );
 }
+
+/// `routh plot` of the tippe top (issue 35 item 5): theta, the height of the centre of mass,
+/// the slip speed, the normal force, the balances and the trace of gamma, each a PNG of the
+/// figure's size; the same from the CSV of `routh simulate`; the rubber ball refused.
+#[test]
+fn the_plots_of_a_sliding_run() {
+    let dir = std::env::temp_dir().join(format!("routh-plot-contact-{}", std::process::id()));
+    let out = routh(&[
+        "plot",
+        "--case",
+        "cases/tippe_top.toml",
+        "--t-end",
+        "8",
+        "--samples",
+        "400",
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json_of(&out);
+    let names: Vec<String> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let path = PathBuf::from(f.as_str().unwrap());
+            assert!(std::fs::metadata(&path).unwrap().len() > 10_000, "{path:?}");
+            path.file_stem().unwrap().to_string_lossy().into_owned()
+        })
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "theta",
+            "height",
+            "slip_speed",
+            "normal_force",
+            "balance",
+            "gamma_trace"
+        ]
+    );
+    let (csv, _) = samples_of("tippe_top", "100");
+    let path = dir.join("samples.csv");
+    std::fs::write(&path, csv).unwrap();
+    let from_csv = routh(&[
+        "plot",
+        "--csv",
+        path.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        from_csv.status.success(),
+        "{}",
+        String::from_utf8_lossy(&from_csv.stderr)
+    );
+    assert_exit_2(&["plot", "--case", "cases/rubber.toml"], "law = \"rubber\"");
+}
