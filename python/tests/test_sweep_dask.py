@@ -162,3 +162,23 @@ def test_parquet_of_the_cli_reads_back_equal_to_its_json(tmp_path):
         table.select(table.schema.names),
         routh.sweep(path=str(case)).select(table.schema.names),
     )
+
+
+def test_a_sweep_of_the_sliding_top_from_python():
+    """`routh.sweep` of the tippe top of cases/tippe_top.toml over `contact.mu` (issue 35): the
+    table has the contact's columns, the spun top with friction turns over (its final tilt
+    near pi) and the frictionless one does not; the rolling law's columns are refused."""
+    text = (ROOT / "cases" / "tippe_top.toml").read_text() + (
+        '\n[sweep]\n"contact.mu" = { values = [0.0, 0.3] }\n'
+    )
+    table = routh.sweep(text=text)
+    names = table.schema.names
+    for name in ("contact.mu", "transitions", "tilt_final", "jellett_drift", "final_gamma3"):
+        assert name in names, names
+    rows = table.to_pylist()
+    assert [r["status"] for r in rows] == ["ok", "ok"]
+    tilt = {r["contact.mu"]: r["tilt_final"] for r in rows}
+    assert tilt[0.3] > 3.0 and tilt[0.0] < 0.3, tilt
+    assert all(r["jellett_drift"] <= 1e-9 for r in rows)
+    with pytest.raises(ValueError, match="law = \"sliding\""):
+        routh.sweep(text=text, columns=["integrals"])
