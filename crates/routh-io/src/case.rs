@@ -419,7 +419,12 @@ impl CaseValues {
             message,
         };
         reject_unknown_keys(document).map_err(err)?;
+        let body: BodyTable = table(document, "body").map_err(err)?;
         let initial: InitialTable = table(document, "initial").map_err(err)?;
+        let integration = match document.get("integration") {
+            None => Integration::default(),
+            Some(_) => table(document, "integration").map_err(err)?,
+        };
         let contact = match document.get("contact") {
             None => Contact::Rolling,
             Some(_) => table::<ContactTable>(document, "contact")
@@ -435,12 +440,9 @@ impl CaseValues {
             .into());
         }
         Ok(CaseValues {
-            body: table(document, "body").map_err(err)?,
+            body,
             initial,
-            integration: match document.get("integration") {
-                None => Integration::default(),
-                Some(_) => table(document, "integration").map_err(err)?,
-            },
+            integration,
             contact,
         })
     }
