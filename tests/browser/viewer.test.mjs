@@ -268,3 +268,45 @@ test("screenshot for the README (only with ROUTH_SCREENSHOT)", async t => {
   writeFileSync(out, await page.screenshot());
   await page.close();
 });
+
+// The purple to magenta pixels of a PNG (red and blue both above green by 40), the colours of
+// a slipping trail: none of the ball's (orange, ivory, the blue cap, the red tip), the plane's
+// or a rolling trail's blue.
+const slipping = () => shot => {
+  let count = 0;
+  for (let i = 0; i < shot.data.length; i += 4) {
+    const [r, g, b] = [shot.data[i], shot.data[i + 1], shot.data[i + 2]];
+    if (r > g + 40 && b > g + 40) count++;
+  }
+  return count;
+};
+
+test("the tippe top turns over in the viewer, its slipping trail shaded apart", async t => {
+  // issue 35: `routh animate --case cases/tippe_top.toml` (sliding contact, viscous friction):
+  // the centre of mass drawn at R - a = 0.7 at t = 0 and at R + a = 1.3 at t = 20 (within
+  // 0.01: the samples' height), no console error, and the trail of the contact point shaded
+  // by its slip (magenta to purple where it slips; a rolling ball's page has none).
+  routh("animate", "--case", join(root, "cases", "tippe_top.toml"), "--samples", "801",
+        "--out", join(dir, "tippe"));
+  const { page, log } = await openViewer(join(dir, "tippe", "animation.html"));
+  const height = () => page.evaluate(() => window.routhViewer.bodyToWorld([0, 0, 0])[2]);
+  await setTime(page, 0);
+  const low = await height();
+  await setTime(page, 20);
+  const high = await height();
+  t.diagnostic(`centre of mass at t = 0: ${low}, at t = 20: ${high}`);
+  assert.ok(Math.abs(low - 0.7) < 0.01 && Math.abs(high - 1.3) < 0.01, `${low} ${high}`);
+  const shot = await page.locator("#view canvas").screenshot();
+  const purple = await analyse(`(${slipping.toString()})()`, shot);
+  t.diagnostic(`slipping trail pixels: ${purple}`);
+  assert.ok(purple > 100, `slipping trail pixels ${purple}`);
+  if (process.env.ROUTH_TIPPE_SCREENSHOT) writeFileSync(process.env.ROUTH_TIPPE_SCREENSHOT, shot);
+  const rolling = await openViewer(casePage);
+  await setTime(rolling.page, T_END);
+  const control = await analyse(`(${slipping.toString()})()`,
+                                await rolling.page.locator("#view canvas").screenshot());
+  assert.ok(control < purple / 4, `a rolling ball's page: ${control} slipping pixels`);
+  assert.deepEqual(log.errors, []);
+  await rolling.page.close();
+  await page.close();
+});

@@ -84,9 +84,7 @@ impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
         let state = Point::from_array(&x);
         let omega = state.omega(self.body);
         let q = quaternion(y);
-        let k = QUATERNION_RESTORING_FRACTION / Units::of(self.body, &omega).binary().time();
-        let q_dot = q * Quaternion::new(0.0, omega[0], omega[1], omega[2]) * 0.5
-            - q * (k * (q.norm_squared() - 1.0));
+        let q_dot = quaternion_rate(&q, &omega, Units::of(self.body, &omega).binary().time());
         let r = self.body.ball().contact_vector(&state.gamma);
         let velocity = rotate(&q, &cross(&r, &omega));
         let mut dy = [0.0; FULL_DIM];
@@ -111,6 +109,16 @@ impl<B: AsBall> OdeSystem<FULL_DIM> for FullMotion<'_, B> {
             components,
         }
     }
+}
+
+/// `dq/dt = q * (0, omega) / 2 - k (|q|^2 - 1) q` for the body-frame angular velocity
+/// `omega`, `k` [`QUATERNION_RESTORING_FRACTION`] of the motion's rate `1 / time` (the
+/// module's kinematics): of the rolling ball and of the sliding one
+/// ([`crate::contact::sliding::SlidingMotion`]).
+pub fn quaternion_rate(q: &Quaternion<f64>, omega: &[f64; 3], time: f64) -> Quaternion<f64> {
+    let k = QUATERNION_RESTORING_FRACTION / time;
+    q * Quaternion::new(0.0, omega[0], omega[1], omega[2]) * 0.5
+        - q * (k * (q.norm_squared() - 1.0))
 }
 
 /// The quaternion `(qw, qx, qy, qz)` stored in `y[6..10]`.

@@ -24,7 +24,7 @@
 
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::motion::{rotate, FULL_COLUMN_NAMES};
-use crate::plot::{drift_plot, theta_plot};
+use crate::plot::{balance_plot, drift_plot, theta_plot};
 use crate::table::Table;
 use nalgebra::Quaternion;
 use serde::Serialize;
@@ -56,6 +56,9 @@ fn viewer_parts() -> [(&'static str, String); 3] {
         ),
     ]
 }
+
+/// The decades of slip speed below the largest over which a sliding contact's trail is shaded.
+const SLIP_DECADES: f64 = 4.0;
 
 /// The columns a frame needs, in the order of [`frame_rows`]: t, gamma and the columns of
 /// `routh simulate --full` ([`FULL_COLUMN_NAMES`]).
@@ -231,8 +234,23 @@ pub fn html(table: &Table) -> Result<String> {
         "theta",
         f32_column(theta.series[0].points.iter().map(|p| p.1)),
     );
-    // A CSV without integral columns still animates; the page says the drift is missing.
-    let drift = drift_plot(table)
+    // A sliding contact's trail is shaded by its slip speed, on a log scale over the four
+    // decades below the largest (0: rolling, or a slip 1e-4 of the largest; 1: the largest).
+    if let Ok(slip) = table.column("slip_speed") {
+        let top = slip.iter().copied().fold(0.0, f64::max);
+        let share = |v: f64| {
+            if top > 0.0 && v > 0.0 {
+                (1.0 + (v / top).log10() / SLIP_DECADES).clamp(0.0, 1.0)
+            } else {
+                0.0
+            }
+        };
+        columns.insert("slip", f32_column(slip.iter().map(|&v| share(v))));
+    }
+    // A CSV without integral columns still animates; the page says the drift is missing. A
+    // sliding contact's drift is that of its balances (its H1 is no integral).
+    let drift = balance_plot(table)
+        .or_else(|_| drift_plot(table))
         .map(|plot| plot.series)
         .unwrap_or_default()
         .into_iter()

@@ -264,8 +264,6 @@ fn time_plot(
 /// time, and the balances: the drift of Jellett's integral and of the energy plus the
 /// friction's work (running maximum, log scale), both constant for any friction.
 pub fn contact_plots(table: &Table) -> Result<Vec<Plot>> {
-    let t = table.column("t")?;
-    let (jellett, balance) = (table.column("jellett")?, table.column("H1_plus_work")?);
     Ok(vec![
         time_plot(
             table,
@@ -288,27 +286,35 @@ pub fn contact_plots(table: &Table) -> Result<Vec<Plot>> {
             "Normal force of the plane",
             "N (newton)",
         )?,
-        Plot {
-            name: "balance",
-            title: "Drift of Jellett's integral and of the energy plus the friction's work".into(),
-            x_label: "time t (s)".into(),
-            y_label: "max over [0, t] of the relative drift".into(),
-            series: vec![
-                Series {
-                    label: "Jellett (L, r)".into(),
-                    points: running_drift(t, jellett),
-                },
-                Series {
-                    label: "H1 + W (energy plus the friction's work)".into(),
-                    points: running_drift(t, balance),
-                },
-            ],
-            log_y: true,
-            equal_scale: false,
-            legend: SeriesLabelPosition::UpperLeft,
-            marks: Vec::new(),
-        },
+        balance_plot(table)?,
     ])
+}
+
+/// The balances of a sliding run: the drift of Jellett's integral and of H1 + W (running
+/// maximum, log scale), both constant for any friction.
+pub fn balance_plot(table: &Table) -> Result<Plot> {
+    let t = table.column("t")?;
+    let (jellett, balance) = (table.column("jellett")?, table.column("H1_plus_work")?);
+    Ok(Plot {
+        name: "balance",
+        title: "Drift of Jellett's integral and of the energy plus the friction's work".into(),
+        x_label: "time t (s)".into(),
+        y_label: "max over [0, t] of the relative drift".into(),
+        series: vec![
+            Series {
+                label: "Jellett (L, r)".into(),
+                points: running_drift(t, jellett),
+            },
+            Series {
+                label: "H1 + W (energy plus the friction's work)".into(),
+                points: running_drift(t, balance),
+            },
+        ],
+        log_y: true,
+        equal_scale: false,
+        legend: SeriesLabelPosition::UpperLeft,
+        marks: Vec::new(),
+    })
 }
 
 /// The trace of (gamma1, gamma2), the horizontal part of the normal in the body frame.

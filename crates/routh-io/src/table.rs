@@ -6,7 +6,9 @@
 use crate::ball::Ball;
 use crate::case::{Case, Overrides, RubberStart, SlidingStart};
 use crate::contact::rubber::{run as run_rubber, RubberSummary};
-use crate::contact::sliding::{run as run_sliding, Observation, SlidingSummary, OBSERVATION_NAMES};
+use crate::contact::sliding::{
+    run as run_sliding, run_in_space, Observation, SlidingSummary, OBSERVATION_NAMES,
+};
 use crate::error::{AppError, AppResult as Result, FileError};
 use crate::integrals::{Integrals, INTEGRAL_NAMES};
 use crate::integrate::OdeSystem;
@@ -277,23 +279,37 @@ pub fn simulate_samples(
 /// cells of each dense sample to `on_row`, in the columns of
 /// [`OBSERVATION_NAMES`](crate::contact::sliding::OBSERVATION_NAMES) (the state, the height of
 /// the centre of mass, the slip speed, the normal force, Jellett's integral, the energy and the
-/// work of friction): the samples of `routh simulate` for that contact. Returns the run's
-/// summary.
+/// work of friction), with `full` those of the motion in space after them
+/// ([`FULL_COLUMN_NAMES`]: the viscous friction only, [`run_in_space`]): the samples of `routh
+/// simulate` for that contact ([`sliding_columns`]). Returns the run's summary.
 pub fn sliding_samples(
     start: &SlidingStart,
     settings: &Settings,
+    full: bool,
     on_row: &mut dyn FnMut(&[Cell]) -> Result<()>,
 ) -> Result<SlidingSummary> {
     let model = &start.model;
-    let mut on_sample = |now: &Observation| {
-        let cells: Vec<Cell> = now
-            .values()
+    let cells = |now: &Observation, space: &[f64]| -> Vec<Cell> {
+        now.values()
             .into_iter()
+            .chain(space.iter().copied())
             .map(|v| Cell::Float(Some(v)))
-            .collect();
-        on_row(&cells)
+            .collect()
     };
-    run_sliding(model, start.y0, settings, &mut on_sample)
+    if full {
+        return run_in_space(model, start.y0, settings, &mut |now, space| {
+            on_row(&cells(now, space))
+        });
+    }
+    run_sliding(model, start.y0, settings, &mut |now| {
+        on_row(&cells(now, &[]))
+    })
+}
+
+/// The columns of [`sliding_samples`].
+pub fn sliding_columns(full: bool) -> Vec<&'static str> {
+    let space: &[&str] = if full { &FULL_COLUMN_NAMES } else { &[] };
+    OBSERVATION_NAMES.iter().chain(space).copied().collect()
 }
 
 /// Simulate the rubber ball `start` (`[contact] law = "rubber"`) with `settings` and hand the
@@ -323,13 +339,18 @@ pub fn rubber_samples(
 /// they are built: [`Overrides::applied_to`]) and tabulate `samples` equally spaced samples
 /// on [0, t_end]: the columns of [`sample_columns`] (empty integrals as NaN, as a CSV of
 /// `routh simulate --full` reads back); of a sliding case, the columns of its samples
-/// ([`OBSERVATION_NAMES`]: no motion in space so far).
+/// ([`sliding_columns`], with the motion in space under the viscous friction).
 pub fn simulate_full(case: &Case, overrides: &Overrides, samples: usize) -> Result<Table> {
     let settings = overrides.applied_to(case).samples(samples).build()?;
     if let Some(start) = &case.sliding {
-        let names = OBSERVATION_NAMES.iter().map(|n| n.to_string()).collect();
+        // The motion in space where it is rebuilt (the viscous friction).
+        let full = start.model.friction() == crate::contact::Friction::Viscous;
+        let names = sliding_columns(full)
+            .into_iter()
+            .map(str::to_string)
+            .collect();
         let mut table = Table::new(&case.source, names);
-        sliding_samples(start, &settings, &mut |cells| {
+        sliding_samples(start, &settings, full, &mut |cells| {
             let row: Vec<f64> = cells.iter().map(Cell::to_f64).collect();
             table.push_row(&row)
         })?;

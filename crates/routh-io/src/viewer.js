@@ -6,7 +6,9 @@
      D.radius, D.a        the ball's R and offset a of the centre of mass
      D.gamma0             gamma at the first sample
      D.columns            arrays by name: t, qw, qx, qy, qz, x, y, z, contact_x, contact_y,
-                          theta (degrees)
+                          theta (degrees); optional slip: of a sliding contact, 0 to 1, the
+                          slip speed on a log scale over the four decades below its largest,
+                          which shades the trail from blue (rolling) to magenta (the fastest)
      D.drift              [{name, values}]: the running maximum relative drift of each integral
      D.thetaExtra         optional [{name, values}]: more curves on the theta chart (the exact
                           solution), at the same times
@@ -260,8 +262,22 @@ function create() {
       }
       ribbon.setAttribute("position", new THREE.Float32BufferAttribute(corners, 3));
       ribbon.setIndex(index);
+      if (C.slip) {
+        // A sliding contact: each sample's colour from the rolling blue to the slipping magenta.
+        const rolling = new THREE.Color(0x1f77b4), slipping = new THREE.Color(0xc51b7d);
+        const colours = new Float32Array(6 * N), c = new THREE.Color();
+        for (let i = 0; i < N; i++) {
+          c.copy(rolling).lerp(slipping, Math.min(Math.max(C.slip[i], 0), 1));
+          colours.set([c.r, c.g, c.b, c.r, c.g, c.b], 6 * i);
+        }
+        ribbon.setAttribute("color", new THREE.Float32BufferAttribute(colours, 3));
+      }
     }
-    motion.add(new THREE.Mesh(ribbon, new THREE.MeshBasicMaterial({ color: 0x1f77b4 })));
+    // Pulled towards the camera in depth, so that from afar it does not sink into the floor.
+    const lifted = { polygonOffset: true, polygonOffsetFactor: -4, polygonOffsetUnits: -4 };
+    motion.add(new THREE.Mesh(ribbon, C.slip
+      ? new THREE.MeshBasicMaterial({ vertexColors: true, ...lifted })
+      : new THREE.MeshBasicMaterial({ color: 0x1f77b4, ...lifted })));
     contactDot = new THREE.Mesh(new THREE.CylinderGeometry(0.06 * R, 0.06 * R, 4e-3 * R, 24),
                                 new THREE.MeshBasicMaterial({ color: 0x0b3c66 }));
     contactDot.rotation.x = Math.PI / 2;

@@ -622,6 +622,11 @@ impl Tracker {
 /// The callback of [`run`]'s samples: the observation at each sample time.
 pub type OnObservation<'a, E> = dyn FnMut(&Observation) -> std::result::Result<(), E> + 'a;
 
+/// A callback of samples with the observation and `N` more numbers of the state there (the
+/// motion in space: [`run_in_space`]).
+pub type OnState<'a, E, const N: usize> =
+    dyn FnMut(&Observation, &[f64; N]) -> std::result::Result<(), E> + 'a;
+
 /// Integrate the sliding ball from `y0` ([`Sliding::initial`]) with the method, tolerances,
 /// samples, span and step limit of `settings` (projection is refused: the sliding ball has
 /// no level set of integrals to project onto), through the one driver ([`drive`]), until
@@ -635,51 +640,16 @@ pub fn run<E: From<RouthError>>(
     settings: &Settings,
     on_sample: &mut OnObservation<'_, E>,
 ) -> std::result::Result<SlidingSummary, E> {
-    if settings.project() {
-        return Err(RouthError::Option {
-            name: "project",
-            value: "true".into(),
-            rule: "is not available for the sliding contact (its energy is not an integral: \
-                   there is no level set to project onto)",
-        }
-        .into());
-    }
     let start = Instant::now();
-    let opts = Options::new(settings.rtol(), settings.atol())
-        .and_then(|opts| opts.with_max_steps(settings.max_steps()))
-        .map_err(RouthError::from)?;
-    let tol = settings.rtol().min(settings.atol());
-    let times = settings.sample_times();
-    let (method, ending) = match model.friction {
+    let (method, opts) = plan(model, settings)?;
+    match model.friction {
         Friction::Viscous => {
-            let method = model.method(settings.method(), tol)?;
-            let mut tracker = Tracker::new(model, model.observe(0.0, &y0), &y0);
-            let mut stepper = stepper(method, model, 0.0, y0, settings.t_end(), &opts)
-                .map_err(RouthError::from)?;
-            let leaves = |_: f64, y: &[f64; DIM]| model.normal_force(y);
-            let plan = Drive {
-                samples: &times,
-                project: None,
-                event: Some(&leaves),
-            };
-            let outcome = drive(
-                stepper.as_mut(),
-                &plan,
-                &mut |t, y| on_sample(&model.observe(t, y)),
-                &mut |t, y, _| {
-                    tracker.observe(&model.observe(t, y), y);
-                    Ok(Control::Continue)
-                },
-            )?;
-            if let Stop::Failed(e) = &outcome.stop {
-                return Err(RouthError::from(e.clone()).into());
-            }
-            let last = model.observe(outcome.t, &outcome.y);
-            tracker.observe(&last, &outcome.y);
-            (method, (outcome, last, Vec::new(), tracker))
+            let end = viscous(model, model, y0, method, &opts, settings, &mut |now, _| {
+                on_sample(now)
+            })?;
+            Ok(summarise(model, method, end, start))
         }
         Friction::Coulomb => {
-            let method = model.method(settings.method(), tol)?;
             let first = super::coulomb::first_observation(model, &y0);
             let mut tracker = Tracker::new(model, first, &y0);
             let end = super::coulomb::integrate(
@@ -692,38 +662,242 @@ pub fn run<E: From<RouthError>>(
                 &mut |now, y| tracker.observe(now, y),
             )?;
             tracker.observe(&end.last, &end.outcome.y);
-            (method, (end.outcome, end.last, end.transitions, tracker))
+            let ending = Ending {
+                stop: end.outcome.stop,
+                t: end.outcome.t,
+                stats: end.outcome.stats,
+                last: end.last,
+                transitions: end.transitions,
+                tracker,
+            };
+            Ok(summarise(model, method, ending, start))
         }
+    }
+}
+
+/// [`run`] with the motion in space ([`SlidingMotion`]): `on_sample` receives each sample's
+/// observation and the columns of [`motion_columns`] (the orientation, the centre of mass and
+/// the contact point in space). Viscous friction only, so far (Coulomb's phases would each
+/// need the motion added).
+pub fn run_in_space<E: From<RouthError>>(
+    model: &Sliding,
+    y0: [f64; DIM],
+    settings: &Settings,
+    on_sample: &mut OnState<'_, E, 9>,
+) -> std::result::Result<SlidingSummary, E> {
+    if model.friction != Friction::Viscous {
+        return Err(RouthError::Option {
+            name: "full",
+            value: "true".into(),
+            rule: "is available for the viscous friction only (so far): under Coulomb's \
+                   friction the motion in space is not rebuilt",
+        }
+        .into());
+    }
+    let start = Instant::now();
+    let (method, opts) = plan(model, settings)?;
+    let sys = SlidingMotion(model);
+    let end = viscous(
+        model,
+        &sys,
+        sys.initial(&y0),
+        method,
+        &opts,
+        settings,
+        &mut |now, y| on_sample(now, &motion_columns(model, y)),
+    )?;
+    Ok(summarise(model, method, end, start))
+}
+
+/// The method and the options of a run with `settings` (its projection refused).
+fn plan(model: &Sliding, settings: &Settings) -> Result<(Method, Options)> {
+    if settings.project() {
+        return Err(RouthError::Option {
+            name: "project",
+            value: "true".into(),
+            rule: "is not available for the sliding contact (its energy is not an integral: \
+                   there is no level set to project onto)",
+        });
+    }
+    let opts = Options::new(settings.rtol(), settings.atol())
+        .and_then(|opts| opts.with_max_steps(settings.max_steps()))?;
+    let method = model.method(settings.method(), settings.rtol().min(settings.atol()))?;
+    Ok((method, opts))
+}
+
+/// How a run ended: the driver's stop, time and work, the last observation, the switches and
+/// the balances.
+struct Ending {
+    stop: Stop,
+    t: f64,
+    stats: crate::integrate::Stats,
+    last: Observation,
+    transitions: Vec<Transition>,
+    tracker: Tracker,
+}
+
+/// The run of `sys` under the viscous friction of `model`, `sys`'s state starting with the
+/// sliding ball's (`y[..DIM]`; the motion in space may follow), from `y0`: the one driver
+/// with the normal force's zero as its event, the balances tracked at every step end, the
+/// samples handed to `on_sample` with the whole state.
+fn viscous<S: OdeSystem<N>, E: From<RouthError>, const N: usize>(
+    model: &Sliding,
+    sys: &S,
+    y0: [f64; N],
+    method: Method,
+    opts: &Options,
+    settings: &Settings,
+    on_sample: &mut OnState<'_, E, N>,
+) -> std::result::Result<Ending, E> {
+    let part = |y: &[f64; N]| -> [f64; DIM] { std::array::from_fn(|i| y[i]) };
+    let x0 = part(&y0);
+    let mut tracker = Tracker::new(model, model.observe(0.0, &x0), &x0);
+    let times = settings.sample_times();
+    let mut stepper =
+        stepper(method, sys, 0.0, y0, settings.t_end(), opts).map_err(RouthError::from)?;
+    let leaves = |_: f64, y: &[f64; N]| model.normal_force(&part(y));
+    let plan = Drive {
+        samples: &times,
+        project: None,
+        event: Some(&leaves),
     };
-    let (outcome, last, transitions, tracker) = ending;
-    let (status, message) = match &outcome.stop {
+    let outcome = drive(
+        stepper.as_mut(),
+        &plan,
+        &mut |t, y| on_sample(&model.observe(t, &part(y)), y),
+        &mut |t, y, _| {
+            let x = part(y);
+            tracker.observe(&model.observe(t, &x), &x);
+            Ok(Control::Continue)
+        },
+    )?;
+    if let Stop::Failed(e) = &outcome.stop {
+        return Err(RouthError::from(e.clone()).into());
+    }
+    let x = part(&outcome.y);
+    let last = model.observe(outcome.t, &x);
+    tracker.observe(&last, &x);
+    Ok(Ending {
+        stop: outcome.stop,
+        t: outcome.t,
+        stats: outcome.stats,
+        last,
+        transitions: Vec::new(),
+        tracker,
+    })
+}
+
+/// The summary of a run that ended as `end`, begun at `start`.
+fn summarise(model: &Sliding, method: Method, end: Ending, start: Instant) -> SlidingSummary {
+    let (status, message) = match &end.stop {
         Stop::Event => (
             "event",
             format!(
                 "the normal force vanished at t = {}: the ball leaves the plane",
-                outcome.t
+                end.t
             ),
         ),
-        Stop::Stopped => ("ok", format!("stopped at t = {}", outcome.t)),
-        _ => ("ok", format!("t_end = {} reached", outcome.t)),
+        Stop::Stopped => ("ok", format!("stopped at t = {}", end.t)),
+        _ => ("ok", format!("t_end = {} reached", end.t)),
     };
-    let stats = outcome.stats;
-    Ok(SlidingSummary {
+    SlidingSummary {
         method: method.to_string(),
         status,
         message,
-        t: outcome.t,
-        steps: stats.steps,
-        rejected: stats.rejected,
-        rhs_evals: stats.rhs_evals,
+        t: end.t,
+        steps: end.stats.steps,
+        rejected: end.stats.rejected,
+        rhs_evals: end.stats.rhs_evals,
         friction: model.friction.name(),
         mu: model.mu,
-        transitions,
-        initial_state: tracker.first,
-        final_state: last,
-        balance: tracker.balance,
+        transitions: end.transitions,
+        initial_state: end.tracker.first,
+        final_state: end.last,
+        balance: end.tracker.balance,
         elapsed_s: start.elapsed().as_secs_f64(),
-    })
+    }
+}
+
+/// The number of components of [`SlidingMotion`]'s state.
+pub const MOTION_DIM: usize = DIM + 6;
+
+/// The sliding ball with its motion in space (as [`crate::motion::FullMotion`] for the
+/// rolling ball): the state `(gamma, omega, v, W, q, X, Y)`, the quaternion of the rotation
+/// body to space (its kinematics [`crate::motion::quaternion_rate`]) and the horizontal
+/// position of the centre of mass, `(X, Y)' = (Q v)_xy` (its height is `(r, gamma)`). The
+/// first [`DIM`] components are integrated by the sliding field itself and do not depend on
+/// the others.
+#[derive(Debug, Clone, Copy)]
+pub struct SlidingMotion<'a>(pub &'a Sliding);
+
+impl SlidingMotion<'_> {
+    /// The state with the orientation of [`crate::motion::orientation_for`] of `x0`'s gamma
+    /// and the centre of mass above the origin.
+    pub fn initial(&self, x0: &[f64; DIM]) -> [f64; MOTION_DIM] {
+        let q = crate::motion::orientation_for(&[x0[0], x0[1], x0[2]]);
+        let mut y = [0.0; MOTION_DIM];
+        y[..DIM].copy_from_slice(x0);
+        y[DIM..DIM + 4].copy_from_slice(&[q.w, q.i, q.j, q.k]);
+        y
+    }
+}
+
+impl OdeSystem<MOTION_DIM> for SlidingMotion<'_> {
+    type Kernels = crate::integrate::taylor::Interpreted;
+
+    fn rhs(&self, _t: f64, y: &[f64; MOTION_DIM]) -> [f64; MOTION_DIM] {
+        let x: [f64; DIM] = std::array::from_fn(|i| y[i]);
+        let (_, omega, v) = parts(&x);
+        let q = nalgebra::Quaternion::new(y[DIM], y[DIM + 1], y[DIM + 2], y[DIM + 3]);
+        let time = self.0.problem_units(&x).time();
+        let q_dot = crate::motion::quaternion_rate(&q, &omega, time);
+        let velocity = crate::motion::rotate(&q, &v);
+        let mut dy = [0.0; MOTION_DIM];
+        dy[..DIM].copy_from_slice(&self.0.field(&x));
+        dy[DIM..DIM + 4].copy_from_slice(&[q_dot.w, q_dot.i, q_dot.j, q_dot.k]);
+        dy[DIM + 4] = velocity[0];
+        dy[DIM + 5] = velocity[1];
+        dy
+    }
+
+    /// The sliding state's units, 1 for the quaternion, R (a power of two) for the position.
+    fn units(&self, y0: &[f64; MOTION_DIM]) -> RunUnits<MOTION_DIM> {
+        let inner = self.0.units(&std::array::from_fn(|i| y0[i]));
+        let length = self
+            .0
+            .problem_units(&std::array::from_fn(|i| y0[i]))
+            .length();
+        let mut components = [1.0; MOTION_DIM];
+        components[..DIM].copy_from_slice(&inner.components);
+        components[DIM + 4] = length;
+        components[DIM + 5] = length;
+        RunUnits {
+            time: inner.time,
+            components,
+        }
+    }
+}
+
+/// The columns of the motion in space at `y` (of [`SlidingMotion`]), named as the rolling
+/// ball's ([`crate::motion::FULL_COLUMN_NAMES`]): the quaternion, the centre of mass `(X, Y,
+/// z)` with `z = (r, gamma)`, and the contact point `(x, y)` on the plane.
+pub fn motion_columns(model: &Sliding, y: &[f64; MOTION_DIM]) -> [f64; 9] {
+    let gamma = [y[0], y[1], y[2]];
+    let r = model.ball.contact_vector(&gamma);
+    let q = nalgebra::Quaternion::new(y[DIM], y[DIM + 1], y[DIM + 2], y[DIM + 3]);
+    let to_contact = crate::motion::rotate(&q, &r);
+    let (x, yy) = (y[DIM + 4], y[DIM + 5]);
+    [
+        q.w,
+        q.i,
+        q.j,
+        q.k,
+        x,
+        yy,
+        dot(&r, &gamma),
+        x + to_contact[0],
+        yy + to_contact[1],
+    ]
 }
 
 #[cfg(test)]
@@ -734,6 +908,73 @@ mod tests {
     use num_dual::DualSVec64;
 
     type Dual = DualSVec64<DIM>;
+
+    /// The motion in space of the issue's tippe top (t = 8, 4001 samples): the orientation,
+    /// integrated by the kinematics alone, takes the body-frame normal gamma, integrated by the
+    /// sliding field alone, to the downward vertical (1e-9: two integrations at 1e-12 over
+    /// 8 time units), |q| stays 1 (1e-10), the centre's horizontal path is the integral of
+    /// the sampled velocity `Q v` (trapezoid rule, 1e-3 of R: h^2 T |V''| / 12 is about 3e-4),
+    /// and the run ends where the run without the motion does (its height to 1e-8).
+    #[test]
+    fn the_motion_in_space_agrees_with_the_sliding_state() {
+        let body = Body::new(1.0, 1.0, 0.3, 0.37, 0.37, 0.4, 9.81).unwrap();
+        let model = Sliding::new(&body, 0.3).unwrap();
+        let tilt = 0.1_f64;
+        let y0 = model
+            .initial(
+                [tilt.sin(), 0.0, -tilt.cos()],
+                [0.0, 0.0, 20.0],
+                [0.0; 3],
+                Normalise::Reject,
+            )
+            .unwrap();
+        let settings = Settings::builder()
+            .t_end(8.0)
+            .tolerances(1e-12, 1e-12)
+            .samples(4001)
+            .build()
+            .unwrap();
+        let mut seen = Vec::new();
+        let with = run_in_space::<RouthError>(&model, y0, &settings, &mut |now, space| {
+            seen.push((*now, *space));
+            Ok(())
+        })
+        .unwrap();
+        let without = run::<RouthError>(&model, y0, &settings, &mut |_| Ok(())).unwrap();
+        assert!((with.final_state.height - without.final_state.height).abs() <= 1e-8);
+        let mut path = [0.0; 2];
+        for (k, (now, space)) in seen.iter().enumerate() {
+            let q = nalgebra::Quaternion::new(space[0], space[1], space[2], space[3]);
+            assert!((q.norm() - 1.0).abs() <= 1e-10, "{k}: |q| = {}", q.norm());
+            let down = crate::motion::rotate(&q, &now.gamma);
+            assert!(
+                down[0].abs() <= 1e-9 && down[1].abs() <= 1e-9 && (down[2] + 1.0).abs() <= 1e-9,
+                "{k}: {down:?}"
+            );
+            if k > 0 {
+                let (before, space_before) = &seen[k - 1];
+                let qb = nalgebra::Quaternion::new(
+                    space_before[0],
+                    space_before[1],
+                    space_before[2],
+                    space_before[3],
+                );
+                let (va, vb) = (
+                    crate::motion::rotate(&qb, &before.velocity),
+                    crate::motion::rotate(&q, &now.velocity),
+                );
+                let h = now.t - before.t;
+                for i in 0..2 {
+                    path[i] += 0.5 * h * (va[i] + vb[i]);
+                }
+            }
+            assert!(
+                (path[0] - space[4]).abs() <= 1e-3 && (path[1] - space[5]).abs() <= 1e-3,
+                "{k}: {path:?} {space:?}"
+            );
+            assert_eq!(space[6], now.height);
+        }
+    }
 
     /// The derivative of `h` along the field at `x`, by automatic differentiation of `h`.
     fn along(model: &Sliding, h: impl Fn(&[Dual; DIM]) -> Dual, x: &[f64; DIM]) -> f64 {

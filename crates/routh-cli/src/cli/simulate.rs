@@ -6,14 +6,15 @@ use super::integration::{parse_method, Integration};
 use super::{Readable, ReportStream};
 use routh::case::{Case, SlidingStart};
 use routh::contact::rubber::{RubberSummary, COLUMN_NAMES as RUBBER_COLUMNS};
-use routh::contact::sliding::{SlidingSummary, OBSERVATION_NAMES};
+use routh::contact::sliding::SlidingSummary;
 use routh::integrals::INTEGRAL_NAMES;
 use routh::integrate::Method;
 use routh::output::write_atomic;
 use routh::row::{csv_line, Cell};
 use routh::simulate::{Drift, Settings, Summary};
 use routh::table::{
-    rubber_samples, sample_columns, simulate_samples, sliding_samples, STATE_COLUMN_NAMES,
+    rubber_samples, sample_columns, simulate_samples, sliding_columns, sliding_samples,
+    STATE_COLUMN_NAMES,
 };
 use routh::{AppError, AppResult as Result, RouthError};
 use std::path::{Path, PathBuf};
@@ -96,11 +97,11 @@ pub fn run_command(args: Args) -> Result<()> {
     };
     let settings = settings(&case, &args, samples)?;
     let stream = ReportStream::beside([out.as_deref()]);
-    if args.full && (case.sliding.is_some() || case.rubber.is_some()) {
+    if args.full && case.rubber.is_some() {
         return Err(RouthError::Option {
             name: "full",
             value: "true".into(),
-            rule: "is not available for [contact] law = \"sliding\" or \"rubber\" (so far)",
+            rule: "is not available for [contact] law = \"rubber\" (so far)",
         }
         .into());
     }
@@ -117,8 +118,8 @@ pub fn run_command(args: Args) -> Result<()> {
         });
     }
     if let Some(start) = &case.sliding {
-        let summary = execute(out.as_deref(), &OBSERVATION_NAMES, |on_row| {
-            sliding_samples(start, &settings, on_row)
+        let summary = execute(out.as_deref(), &sliding_columns(args.full), |on_row| {
+            sliding_samples(start, &settings, args.full, on_row)
         })?;
         return stream.print(&summary, args.json, |s| {
             sliding_text(&case, start, s, out.as_deref())

@@ -201,9 +201,12 @@ fn bad_contacts_are_refused() {
         &["steady", "--case", "cases/tippe_top.toml"],
         "is integrated by `routh simulate` (every law) and `routh sweep`",
     );
+    let coulomb = tippe_top_with("coulomb-full.toml", |t| {
+        t.replace("friction = \"viscous\"", "friction = \"coulomb\"")
+    });
     assert_exit_2(
-        &["simulate", "--case", "cases/tippe_top.toml", "--full"],
-        "full",
+        &["simulate", "--case", coulomb.to_str().unwrap(), "--full"],
+        "viscous friction only",
     );
 }
 
