@@ -370,6 +370,19 @@ pub struct Overrides {
 }
 
 impl Overrides {
+    /// Every setting of `settings` as an override (method, t_end, tolerances, step limit): a
+    /// case built from another's document runs with those settings ([`crate::chart`],
+    /// [`crate::inversion`]).
+    pub fn of(settings: &Settings) -> Self {
+        Overrides {
+            method: Some(settings.method()),
+            t_end: Some(settings.t_end()),
+            rtol: Some(settings.rtol()),
+            atol: Some(settings.atol()),
+            max_steps: Some(settings.max_steps()),
+        }
+    }
+
     /// The settings of `case` with these overrides, to be completed (projection, samples) and
     /// built: [`SettingsBuilder::build`] checks them, with the same rules and messages for
     /// every command, the sweep and Python.

@@ -277,13 +277,7 @@ pub fn chart(
     let mut document = case.document.clone();
     document.insert("sweep".into(), grid.into());
     let text = toml::to_string(&document).expect("a TOML document serialises");
-    let overrides = Overrides {
-        method: Some(settings.method()),
-        t_end: Some(settings.t_end()),
-        rtol: Some(settings.rtol()),
-        atol: Some(settings.atol()),
-        max_steps: Some(settings.max_steps()),
-    };
+    let overrides = Overrides::of(settings);
     let sweep = Sweep::new(&text, &case.source, overrides, None, None)?;
     let names = sweep.names();
     let position = |key: &str| {

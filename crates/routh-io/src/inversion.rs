@@ -301,13 +301,7 @@ pub fn regions(
     let mut document = case.document.clone();
     document.insert("sweep".into(), grid.into());
     let text = toml::to_string(&document).expect("a TOML document serialises");
-    let overrides = Overrides {
-        method: Some(settings.method()),
-        t_end: Some(settings.t_end()),
-        rtol: Some(settings.rtol()),
-        atol: Some(settings.atol()),
-        max_steps: Some(settings.max_steps()),
-    };
+    let overrides = Overrides::of(settings);
     let sweep = Sweep::new(&text, &case.source, overrides, None, None)?;
     let names = sweep.names();
     let at = |key: &str| names.iter().position(|n| n == key);
@@ -400,6 +394,31 @@ fn cells(p: &RegionPoint) -> Vec<Cell> {
 /// The region's table as CSV into `path`, written whole or not at all.
 pub fn write_csv(path: &Path, region: &Region) -> Result<()> {
     write_csv_file(path, &COLUMNS, region.points.iter().map(cells))
+}
+
+/// The case of [`TIPPE_TOP`] in other units: masses times `mass`, lengths times `length`,
+/// times times `time` (G, the moments, the viscous mu, of dimension time over length, and
+/// t_end follow; the spin is the case's, in the old unit).
+#[cfg(test)]
+pub(crate) fn tippe_top_in_units(mass: f64, length: f64, time: f64) -> String {
+    TIPPE_TOP
+        .replace("m = 1.0", &format!("m = {mass:?}"))
+        .replace("R = 1.0", &format!("R = {length:?}"))
+        .replace("a = 0.3 ", &format!("a = {:?} ", 0.3 * length))
+        .replace(
+            "I1 = 0.37",
+            &format!("I1 = {:?}", 0.37 * mass * length * length),
+        )
+        .replace(
+            "I3 = 0.4",
+            &format!("I3 = {:?}", 0.4 * mass * length * length),
+        )
+        .replace(
+            "G = 9.81",
+            &format!("G = {:?}", 9.81 * length / (time * time)),
+        )
+        .replace("mu = 0.3", &format!("mu = {:?}", 0.3 * time / length))
+        .replace("t_end = 20.0", &format!("t_end = {:?}", 20.0 * time))
 }
 
 #[cfg(test)]
@@ -499,24 +518,7 @@ mod tests {
         assert!(c.agree as f64 >= 0.85 * (36 - c.failed) as f64, "{c:?}");
         assert!(c.inverted >= 5 && c.upright >= 5, "{c:?}");
         let (mass, length, time) = (1e3_f64, 10.0_f64, 1e-2_f64);
-        let scaled = TIPPE_TOP
-            .replace("m = 1.0", &format!("m = {mass:?}"))
-            .replace("R = 1.0", &format!("R = {length:?}"))
-            .replace("a = 0.3 ", &format!("a = {:?} ", 0.3 * length))
-            .replace(
-                "I1 = 0.37",
-                &format!("I1 = {:?}", 0.37 * mass * length * length),
-            )
-            .replace(
-                "I3 = 0.4",
-                &format!("I3 = {:?}", 0.4 * mass * length * length),
-            )
-            .replace(
-                "G = 9.81",
-                &format!("G = {:?}", 9.81 * length / (time * time)),
-            )
-            .replace("mu = 0.3", &format!("mu = {:?}", 0.3 * time / length))
-            .replace("t_end = 20.0", &format!("t_end = {:?}", 20.0 * time));
+        let scaled = tippe_top_in_units(mass, length, time);
         let other = outcomes(&scaled, 20.0 / time);
         for (a, b) in region.points.iter().zip(&other.points) {
             assert_eq!(a.outcome, b.outcome, "{a:?} {b:?}");

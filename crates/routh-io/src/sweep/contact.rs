@@ -137,24 +137,7 @@ mod tests {
     #[test]
     fn the_sliding_sweep_is_the_same_in_other_units() {
         let (mass, length, time) = (1e6_f64, 1e-2_f64, 1e-3_f64);
-        let scaled = TIPPE_TOP
-            .replace("m = 1.0", &format!("m = {mass:?}"))
-            .replace("R = 1.0", &format!("R = {length:?}"))
-            .replace("a = 0.3 ", &format!("a = {:?} ", 0.3 * length))
-            .replace(
-                "I1 = 0.37",
-                &format!("I1 = {:?}", 0.37 * mass * length * length),
-            )
-            .replace(
-                "I3 = 0.4",
-                &format!("I3 = {:?}", 0.4 * mass * length * length),
-            )
-            .replace(
-                "G = 9.81",
-                &format!("G = {:?}", 9.81 * length / (time * time)),
-            )
-            .replace("mu = 0.3", &format!("mu = {:?}", 0.3 * time / length))
-            .replace("t_end = 20.0", &format!("t_end = {:?}", 20.0 * time))
+        let scaled = crate::inversion::tippe_top_in_units(mass, length, time)
             .replace("omega = [0.0, 0.0, 20.0]", "omega = [0.0, 0.0, 0.0]");
         let axis = |unit: f64| {
             format!(
